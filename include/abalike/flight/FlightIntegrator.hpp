@@ -1,0 +1,76 @@
+#pragma once
+
+#include <abalike/flight/FlightModel.hpp>
+#include <abalike/flight/Stepper.hpp>
+
+#include <cstddef>
+#include <memory>
+
+namespace abalike
+{
+
+/// Options for integrating a flight.
+struct IntegratorSettings
+{
+    StepperKind stepper = StepperKind::Rk4;
+    double dtS = 1.0 / 60.0;  ///< output step (and the step of fixed-step methods)
+    double tolerance = 1e-9;  ///< absolute and relative tolerance of dopri5
+    bool guardStiffness = true; ///< sub-step fixed-step methods when |lambda| dt leaves their stability region
+};
+
+/// One step of an integration: the state and its derivative at both ends, enough for cubic Hermite
+/// interpolation (fourth-order accurate, exact for vacuum flight) inside the step.
+struct FlightStep
+{
+    double t0 = 0.0;
+    double t1 = 0.0;
+    FlightState s0{};
+    FlightState s1{};
+    FlightState f0{};
+    FlightState f1{};
+
+    /// State at time t in [t0, t1] from the cubic Hermite interpolant.
+    FlightState interpolate(double t) const;
+};
+
+/// Integrates the flight model one output step at a time. The right-hand side is composed once, at
+/// construction, from the terms the model has (see FlightRhs); the stepper runs it without indirection.
+class FlightIntegrator
+{
+public:
+    /// The model is copied; settings are validated by the caller (see validateFlightModel).
+    FlightIntegrator(const FlightModel& model, const IntegratorSettings& settings);
+    ~FlightIntegrator();
+    FlightIntegrator(FlightIntegrator&&) noexcept;
+    FlightIntegrator& operator=(FlightIntegrator&&) noexcept;
+
+    /// Starts a new flight from state s at time t.
+    void reset(double t, const FlightState& s);
+
+    /// Advances by one output step of settings().dtS and returns it.
+    const FlightStep& step();
+
+    double time() const;
+    const FlightState& state() const;
+    /// d(state)/dt at the current time and state, from the same composed right-hand side.
+    const FlightState& derivative() const;
+    /// The composed right-hand side at any (t, s), not counted in rhsEvaluations(): what the world uses to apply
+    /// the same forces to a bird once Box2D owns it.
+    FlightState rightHandSide(double t, const FlightState& s) const;
+    const FlightModel& model() const;
+    const IntegratorSettings& settings() const;
+
+    /// Right-hand side evaluations since construction.
+    std::size_t rhsEvaluations() const;
+    /// Internal steps taken beyond one per output step (stiffness guard sub-steps, adaptive steps).
+    std::size_t substeps() const;
+    /// Largest |lambda| * h seen by a fixed-step method, h being the step it actually took.
+    double maxStiffnessRatio() const;
+
+    class Impl;
+
+private:
+    std::unique_ptr<Impl> m_impl;
+};
+
+} // namespace abalike

@@ -1,0 +1,119 @@
+#pragma once
+
+#include <abalike/flight/Prediction.hpp>
+#include <abalike/game/Score.hpp>
+#include <abalike/level/LevelDef.hpp>
+#include <abalike/world/GameWorld.hpp>
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace abalike
+{
+
+/// Where a level is in its life.
+enum class Phase
+{
+    Aiming, ///< a bird waits in the slingshot
+    Flying, ///< a shot is under way; the next bird waits until the world settles
+    Won,    ///< no pig left and the world settled
+    Lost,   ///< birds used up, pigs left, world settled
+};
+
+/// What happened to one shot: the prediction made at launch and what the world did.
+struct ShotRecord
+{
+    std::string bird;
+    double angleDeg = 0.0;
+    double speedMps = 0.0;
+    std::optional<ContactPoint> predictedContact;
+    std::optional<ContactPoint> actualContact;
+    std::optional<double> deviationM; ///< distance between predicted and actual first contact
+    std::vector<std::array<double, 3>> predictedPath; ///< (t, x, y)
+    std::vector<std::array<double, 3>> actualPath;    ///< (t, x, y)
+};
+
+/// A launch the rules do not allow (no bird, not aiming, too fast); the message says why.
+class LaunchError : public std::runtime_error
+{
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// One play of one level: the rules around a GameWorld. Headless; the game and the CLI both drive it.
+class GameSession
+{
+public:
+    explicit GameSession(LevelDef level, const Catalog& catalog = Catalog::builtin(), WorldSettings settings = {});
+
+    /// Starts the level again from its definition.
+    void restart();
+    /// One fixed physics step.
+    void step();
+
+    Phase phase() const { return m_phase; }
+    bool finished() const { return m_phase == Phase::Won || m_phase == Phase::Lost; }
+
+    /// The bird in (or next for) the slingshot; nullptr when none is left.
+    const BirdType* currentBird() const;
+    int birdsUsed() const { return m_nextBird; }
+    int birdsRemaining() const;
+    int pigsRemaining() const { return m_world->pigsAlive(); }
+
+    /// Launch speed v0 = F t_release / m for the current bird and a slingshot force F.
+    double launchSpeedForForce(double forceN) const;
+    /// Fastest launch of the current bird (the slingshot's maximum force).
+    double maxLaunchSpeed() const;
+    /// Where a bird leaves the slingshot.
+    std::array<double, 2> launchPoint() const;
+
+    /// The flight model acting on a bird in this level (gravity, drag from air density, wind).
+    FlightModel flightModelFor(const BirdType& bird) const;
+    /// RK4 preview of a launch of the current bird, up to its first contact with level geometry.
+    PredictedFlight preview(double angleDeg, double speedMps) const;
+    /// Launches the current bird. Throws LaunchError when not aiming or faster than the bird can be launched.
+    void launch(double angleDeg, double speedMps);
+
+    const std::vector<ShotRecord>& shots() const { return m_shots; }
+    ScoreBreakdown score() const { return m_score; }
+    int stars() const;
+    double simTime() const { return m_world->time(); }
+
+    const LevelDef& level() const { return m_level; }
+    const GameWorld& world() const { return *m_world; }
+    const Catalog& catalog() const { return m_catalog; }
+
+private:
+    void collectEvents();
+    void updateBird();
+    void updatePhase();
+
+    LevelDef m_level;
+    const Catalog& m_catalog;
+    WorldSettings m_settings;
+    std::unique_ptr<GameWorld> m_world;
+    Phase m_phase = Phase::Aiming;
+    int m_nextBird = 0;
+    double m_shotStartTime = 0.0;
+    double m_birdSlowSinceS = -1.0;
+    std::vector<ShotRecord> m_shots;
+    ScoreBreakdown m_score;
+};
+
+/// A scripted shot: angle in degrees, launch speed in m/s.
+struct ScriptedShot
+{
+    double angleDeg = 0.0;
+    double speedMps = 0.0;
+};
+
+/// Plays the shots in order, headless, letting the world settle between them; returns the finished session.
+/// Throws LaunchError if a shot cannot be fired (more shots than birds, too fast).
+std::unique_ptr<GameSession> simulateShots(const LevelDef& level, const std::vector<ScriptedShot>& shots,
+                                           const Catalog& catalog = Catalog::builtin());
+
+} // namespace abalike

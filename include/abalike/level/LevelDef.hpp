@@ -1,0 +1,83 @@
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace abalike
+{
+
+/// Shapes a block can have.
+enum class BlockShape
+{
+    Box,      ///< width x height rectangle (squares, planks, columns)
+    Circle,   ///< diameter = width
+    Triangle, ///< right triangle with legs width and height
+};
+
+/// A block of building material. Position is the centre of its bounding box (m), angle counter-clockwise.
+struct BlockDef
+{
+    BlockShape shape = BlockShape::Box;
+    std::string material = "wood";
+    double x = 0.0;
+    double y = 0.0;
+    double widthM = 1.0;
+    double heightM = 1.0;
+    double angleDeg = 0.0;
+};
+
+/// A pig; it rests on whatever is below its centre.
+struct PigDef
+{
+    std::string type = "small";
+    double x = 0.0;
+    double y = 0.0;
+};
+
+/// A static box of terrain (hills, platforms), centre and size in metres.
+struct TerrainDef
+{
+    double x = 0.0;
+    double y = 0.0;
+    double widthM = 1.0;
+    double heightM = 1.0;
+    double angleDeg = 0.0;
+};
+
+/// Where birds are launched from and how hard.
+struct SlingshotDef
+{
+    double x = 0.0;
+    double y = 1.5;          ///< height of the pouch, where the bird leaves the slingshot
+    double maxForceN = 1200; ///< largest launch force; v0 = F t_release / m
+};
+
+/// The air and gravity of a level. Absent terms (zero) are not simulated.
+struct EnvironmentDef
+{
+    double gravity = 9.81;     ///< m/s^2 along -y
+    double airDensity = 0.0;   ///< kg/m^3; 0 is vacuum (no drag)
+    double windX = 0.0;        ///< m/s
+    double windY = 0.0;
+};
+
+/// A level, as designers write it in JSON (levels/*.json).
+struct LevelDef
+{
+    std::string id;
+    std::string title;
+    std::string lesson; ///< the physics concept it teaches ("concept" in JSON)
+    std::vector<std::string> hints;
+    double groundY = 0.0;
+    SlingshotDef slingshot;
+    std::vector<std::string> birds; ///< bird type names, in launch order
+    std::vector<BlockDef> blocks;
+    std::vector<PigDef> pigs;
+    std::vector<TerrainDef> terrain;
+    EnvironmentDef environment;
+    std::array<int, 3> starScores{10000, 20000, 30000}; ///< score for one, two and three stars
+    std::string sourcePath; ///< file it was loaded from, for messages
+};
+
+} // namespace abalike

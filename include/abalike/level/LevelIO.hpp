@@ -1,0 +1,48 @@
+#pragma once
+
+#include <abalike/level/LevelDef.hpp>
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace abalike
+{
+
+class Catalog;
+
+/// One problem found in a level file.
+struct LevelIssue
+{
+    std::string file;
+    int line = 0;   ///< 1-based; 0 when unknown
+    int column = 0; ///< 1-based; 0 when unknown
+    std::string pointer; ///< JSON pointer of the offending value, e.g. /blocks/3/material
+    std::string message;
+
+    /// "FILE:LINE:COL: error: /json/pointer: message"
+    std::string format() const;
+};
+
+/// Thrown when a level cannot be loaded; holds every problem found, not just the first.
+class LevelLoadError : public std::runtime_error
+{
+public:
+    explicit LevelLoadError(std::vector<LevelIssue> issues);
+    const std::vector<LevelIssue>& issues() const { return m_issues; }
+
+private:
+    std::vector<LevelIssue> m_issues;
+};
+
+/// Reads and parses a level file. Throws LevelLoadError.
+LevelDef loadLevel(const std::string& path, const Catalog& catalog);
+
+/// Parses level JSON text; fileName is used in messages. Throws LevelLoadError.
+LevelDef parseLevel(std::string_view text, const std::string& fileName, const Catalog& catalog);
+
+/// The levels of the bundled campaign manifest, in play order (paths resolved against the manifest's folder).
+std::vector<std::string> loadCampaign(const std::string& manifestPath);
+
+} // namespace abalike

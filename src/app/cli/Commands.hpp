@@ -1,0 +1,17 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace abalike::app
+{
+
+/// Each subcommand registers its options on the parser and returns what runs it after parsing; the runner
+/// returns the exit code and throws UsageError for bad input.
+using CommandRunner = std::function<int()>;
+
+CommandRunner addPredictCommand(CLI::App& app);
+CommandRunner addSimulateCommand(CLI::App& app);
+CommandRunner addPlayCommand(CLI::App& app);
+
+} // namespace abalike::app

@@ -1,0 +1,145 @@
+#include "cli/Arguments.hpp"
+#include "cli/Commands.hpp"
+#include "cli/UsageError.hpp"
+
+#include <abalike/flight/Prediction.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+namespace abalike::app
+{
+
+namespace
+{
+
+/// A prediction writes one path point per step; past this the output is no longer useful to anyone.
+constexpr double kMaxSteps = 2.0e6;
+
+struct PredictArgs
+{
+    std::string angle, speed, x0 = "0", y0 = "0", gravity = "9.81", mass = "1", dt, untilT, maxT = "60";
+    std::string linearDrag = "0", quadraticDrag = "0", wind, stepper = "rk4", tol = "1e-9";
+    bool json = false;
+    bool noGuard = false;
+};
+
+int runPredict(const PredictArgs& a)
+{
+    FlightModel model;
+    model.gravity = parseFinite(a.gravity, "--gravity");
+    model.massKg = parseFinite(a.mass, "--mass");
+    model.linearDrag = parseFinite(a.linearDrag, "--linear-drag");
+    model.quadraticDrag = parseFinite(a.quadraticDrag, "--quadratic-drag");
+    if (!a.wind.empty())
+        std::tie(model.windX, model.windY) = parsePair(a.wind, "--wind WX,WY");
+    if (const std::string problem = validateFlightModel(model); !problem.empty())
+        throw UsageError(problem);
+
+    IntegratorSettings settings;
+    const auto stepper = parseStepper(a.stepper);
+    if (!stepper)
+        throw UsageError("--stepper: unknown stepper \"" + a.stepper +
+                         "\" (expected euler, semi-implicit-euler, rk4, dopri5 or analytic)");
+    settings.stepper = *stepper;
+    settings.dtS = a.dt.empty() ? 1.0 / 60.0 : parseFinite(a.dt, "--dt");
+    settings.tolerance = parseFinite(a.tol, "--tol");
+    settings.guardStiffness = !a.noGuard;
+    if (settings.dtS <= 0.0)
+        throw UsageError("--dt: must be > 0 s, got " + a.dt);
+    if (settings.tolerance <= 0.0)
+        throw UsageError("--tol: must be > 0, got " + a.tol);
+
+    const double angle = parseFinite(a.angle, "--angle");
+    const double speed = parseFinite(a.speed, "--speed");
+    if (speed < 0.0)
+        throw UsageError("--speed: must be >= 0 m/s, got " + a.speed);
+    const double x0 = parseFinite(a.x0, "--x0");
+    const double y0 = parseFinite(a.y0, "--y0");
+
+    PredictionLimits limits;
+    limits.maxTimeS = parseFinite(a.maxT, "--max-t");
+    if (limits.maxTimeS <= 0.0)
+        throw UsageError("--max-t: must be > 0 s, got " + a.maxT);
+    if (!a.untilT.empty())
+    {
+        limits.untilTimeS = parseFinite(a.untilT, "--until-t");
+        if (*limits.untilTimeS <= 0.0)
+            throw UsageError("--until-t: must be > 0 s, got " + a.untilT);
+    }
+    limits.stopOnLanding = true;
+    const double endTime = limits.untilTimeS ? *limits.untilTimeS : limits.maxTimeS;
+    if (endTime / settings.dtS > kMaxSteps)
+        throw UsageError("--dt " + std::to_string(settings.dtS) + " over " + std::to_string(endTime) +
+                         " s is more than 2 million steps; use a larger --dt or a shorter flight");
+
+    PredictedFlight flight;
+    try
+    {
+        flight = predictFlight(model, settings, launchState(x0, y0, speed, angle), limits);
+    }
+    catch (const std::invalid_argument& e)
+    {
+        throw UsageError(e.what());
+    }
+    const PathPoint& last = flight.path.back();
+    const bool landed = flight.end == FlightEnd::Landed;
+
+    if (!a.json)
+    {
+        std::cout << "stepper " << stepperName(settings.stepper) << ", dt " << settings.dtS << " s, " << flight.steps
+                  << " steps, " << flight.rhsEvaluations << " evaluations\n"
+                  << (landed ? "landed" : "stopped") << " after " << last.t << " s at x = " << last.s[0]
+                  << " m (range " << last.s[0] - x0 << " m), highest point " << flight.maxHeightM << " m\n";
+        return 0;
+    }
+
+    nlohmann::ordered_json out;
+    out["stepper"] = stepperName(settings.stepper);
+    out["dt"] = settings.dtS;
+    out["steps"] = flight.steps;
+    out["substeps"] = flight.substeps;
+    out["rhs_evaluations"] = flight.rhsEvaluations;
+    out["terms"] = termNames(activeTerms(model));
+    out["landed"] = landed;
+    out["range_m"] = last.s[0] - x0;
+    out["flight_time_s"] = last.t;
+    out["max_height_m"] = flight.maxHeightM;
+    out["max_stiffness_ratio"] = flight.maxStiffnessRatio;
+    out["final"] = {{"t", last.t}, {"x", last.s[0]}, {"y", last.s[1]}, {"vx", last.s[2]}, {"vy", last.s[3]}};
+    nlohmann::ordered_json path = nlohmann::ordered_json::array();
+    for (const PathPoint& p : flight.path)
+        path.push_back({p.t, p.s[0], p.s[1], p.s[2], p.s[3]});
+    out["path"] = std::move(path);
+    std::cout << out.dump() << '\n';
+    return 0;
+}
+
+} // namespace
+
+CommandRunner addPredictCommand(CLI::App& app)
+{
+    auto args = std::make_shared<PredictArgs>();
+    CLI::App* cmd = app.add_subcommand("predict", "Integrate a flight (no level) and print where it lands");
+    cmd->add_option("--angle", args->angle, "launch angle in degrees above horizontal")->required();
+    cmd->add_option("--speed", args->speed, "launch speed in m/s")->required();
+    cmd->add_option("--x0", args->x0, "launch x in m (default 0)");
+    cmd->add_option("--y0", args->y0, "launch y in m (default 0)");
+    cmd->add_option("--gravity", args->gravity, "magnitude of g along -y in m/s^2 (default 9.81)");
+    cmd->add_option("--mass", args->mass, "bird mass in kg (default 1)");
+    cmd->add_option("--linear-drag", args->linearDrag, "b in F = -b (v - w), kg/s (default 0)");
+    cmd->add_option("--quadratic-drag", args->quadraticDrag, "c in F = -c |v - w| (v - w), kg/m (default 0)");
+    cmd->add_option("--wind", args->wind, "constant wind WX,WY in m/s (acts through drag)");
+    cmd->add_option("--stepper", args->stepper, "euler, semi-implicit-euler, rk4 (default), dopri5, analytic");
+    cmd->add_option("--dt", args->dt, "step in s (default 1/60)");
+    cmd->add_option("--tol", args->tol, "dopri5 tolerance (default 1e-9)");
+    cmd->add_option("--until-t", args->untilT, "stop at this time instead of at landing");
+    cmd->add_option("--max-t", args->maxT, "stop at this time at the latest (default 60 s)");
+    cmd->add_flag("--no-guard", args->noGuard, "do not sub-step stiff drag (shows plain fixed-step behaviour)");
+    cmd->add_flag("--json", args->json, "print one JSON object");
+    return [args] { return runPredict(*args); };
+}
+
+} // namespace abalike::app

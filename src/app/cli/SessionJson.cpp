@@ -1,0 +1,60 @@
+#include "cli/SessionJson.hpp"
+
+namespace abalike::app
+{
+
+namespace
+{
+
+using Json = nlohmann::ordered_json;
+
+Json contactJson(const std::optional<ContactPoint>& c)
+{
+    if (!c)
+        return nullptr;
+    return Json{{"t", c->t}, {"x", c->x}, {"y", c->y}};
+}
+
+Json pathJson(const std::vector<std::array<double, 3>>& path)
+{
+    Json out = Json::array();
+    for (const auto& p : path)
+        out.push_back({p[0], p[1], p[2]});
+    return out;
+}
+
+} // namespace
+
+nlohmann::ordered_json sessionToJson(const GameSession& session)
+{
+    const ScoreBreakdown score = session.score();
+    Json out;
+    out["level"] = session.level().id;
+    out["won"] = session.phase() == Phase::Won;
+    out["score"] = score.total();
+    out["stars"] = session.stars();
+    out["pigs_remaining"] = session.pigsRemaining();
+    out["birds_used"] = session.birdsUsed();
+    out["sim_time_s"] = session.simTime();
+    out["score_breakdown"] = {{"block_points", score.blockPoints},       {"blocks_destroyed", score.blocksDestroyed},
+                              {"pig_points", score.pigPoints},           {"pigs_defeated", score.pigsDefeated},
+                              {"unused_bird_bonus", score.unusedBirdBonus}, {"accuracy_bonus", score.accuracyBonus}};
+    Json shots = Json::array();
+    for (const ShotRecord& shot : session.shots())
+    {
+        Json s;
+        s["bird"] = shot.bird;
+        s["angle_deg"] = shot.angleDeg;
+        s["speed"] = shot.speedMps;
+        s["predicted_contact"] = contactJson(shot.predictedContact);
+        s["actual_contact"] = contactJson(shot.actualContact);
+        s["deviation_m"] = shot.deviationM ? Json(*shot.deviationM) : Json(nullptr);
+        s["predicted_path"] = pathJson(shot.predictedPath);
+        s["actual_path"] = pathJson(shot.actualPath);
+        shots.push_back(std::move(s));
+    }
+    out["shots"] = std::move(shots);
+    return out;
+}
+
+} // namespace abalike::app

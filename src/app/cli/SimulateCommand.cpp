@@ -1,0 +1,79 @@
+#include "cli/Arguments.hpp"
+#include "cli/Commands.hpp"
+#include "cli/SessionJson.hpp"
+#include "cli/UsageError.hpp"
+
+#include <abalike/level/LevelIO.hpp>
+
+#include <iostream>
+#include <memory>
+
+namespace abalike::app
+{
+
+namespace
+{
+
+struct SimulateArgs
+{
+    std::string level;
+    std::vector<std::string> shots;
+    bool json = false;
+};
+
+int runSimulate(const SimulateArgs& a)
+{
+    std::vector<ScriptedShot> shots;
+    for (const std::string& text : a.shots)
+        shots.push_back(parseShot(text));
+    const LevelDef level = loadLevel(a.level, Catalog::builtin());
+    std::unique_ptr<GameSession> session;
+    try
+    {
+        session = simulateShots(level, shots);
+    }
+    catch (const LaunchError& e)
+    {
+        throw UsageError(a.level + ": " + e.what());
+    }
+    if (a.json)
+    {
+        std::cout << sessionToJson(*session).dump() << '\n';
+        return 0;
+    }
+    const ScoreBreakdown score = session->score();
+    std::cout << level.id << " \"" << level.title << "\": "
+              << (session->phase() == Phase::Won    ? "won"
+                  : session->phase() == Phase::Lost ? "lost"
+                                                    : "not finished")
+              << ", score " << score.total() << ", " << session->stars() << " star(s), " << session->pigsRemaining()
+              << " pig(s) left, " << session->birdsUsed() << " bird(s) used\n";
+    for (std::size_t i = 0; i < session->shots().size(); ++i)
+    {
+        const ShotRecord& shot = session->shots()[i];
+        std::cout << "  shot " << i + 1 << " (" << shot.bird << ", " << shot.angleDeg << " deg, " << shot.speedMps
+                  << " m/s): ";
+        if (shot.deviationM)
+            std::cout << "first contact at (" << shot.actualContact->x << ", " << shot.actualContact->y
+                      << "), predicted-actual " << *shot.deviationM * 1000.0 << " mm\n";
+        else
+            std::cout << "no contact\n";
+    }
+    return 0;
+}
+
+} // namespace
+
+CommandRunner addSimulateCommand(CLI::App& app)
+{
+    auto args = std::make_shared<SimulateArgs>();
+    CLI::App* cmd = app.add_subcommand("simulate", "Play shots on a level headless and report the outcome");
+    cmd->add_option("level", args->level, "level JSON file")->required();
+    cmd->add_option("--shot", args->shots, "ANGLE,SPEED (degrees, m/s); repeat for more shots")
+        ->required()
+        ->allow_extra_args(false);
+    cmd->add_flag("--json", args->json, "print one JSON object");
+    return [args] { return runSimulate(*args); };
+}
+
+} // namespace abalike::app

@@ -1,0 +1,63 @@
+#include "cli/Commands.hpp"
+#include "cli/UsageError.hpp"
+
+#include <abalike/level/LevelIO.hpp>
+
+#include <iostream>
+#include <map>
+
+int main(int argc, char** argv)
+{
+    using namespace abalike::app;
+    CLI::App app{"Angry Birds Alike: a slingshot physics game and physics teaching tool", "abalike"};
+    app.require_subcommand(1);
+    std::map<std::string, CommandRunner> commands;
+    commands["predict"] = addPredictCommand(app);
+    commands["simulate"] = addSimulateCommand(app);
+    commands["play"] = addPlayCommand(app);
+
+    try
+    {
+        app.parse(argc, argv);
+    }
+    catch (const CLI::CallForHelp&)
+    {
+        std::cout << app.help();
+        return 0;
+    }
+    catch (const CLI::CallForAllHelp&)
+    {
+        std::cout << app.help("", CLI::AppFormatMode::All);
+        return 0;
+    }
+    catch (const CLI::ParseError& e)
+    {
+        std::cerr << "abalike: error: " << e.what() << " (see abalike --help)\n";
+        return kUsageExitCode;
+    }
+
+    try
+    {
+        for (const auto& [name, run] : commands)
+            if (app.got_subcommand(name))
+                return run();
+    }
+    catch (const UsageError& e)
+    {
+        std::cerr << "abalike: error: " << e.what() << '\n';
+        return kUsageExitCode;
+    }
+    catch (const abalike::LevelLoadError& e)
+    {
+        // Every problem found, one per line, in the FILE:LINE:COL form editors jump to.
+        for (const auto& issue : e.issues())
+            std::cerr << issue.format() << '\n';
+        return kUsageExitCode;
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "abalike: error: " << e.what() << '\n';
+        return 1;
+    }
+    return 0;
+}

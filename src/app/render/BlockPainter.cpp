@@ -1,0 +1,164 @@
+#include "render/BlockPainter.hpp"
+
+#include "render/ConvexPolygon.hpp"
+#include "render/DetailRandom.hpp"
+#include "render/Palette.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace abalike::app
+{
+
+namespace
+{
+constexpr float kCrackedBelow = 0.66f;
+constexpr float kBrokenBelow = 0.33f;
+
+/// A random point inside a convex polygon: a convex combination of its vertices.
+sf::Vector2f interiorPoint(std::span<const sf::Vector2f> polygon, DetailRandom& random)
+{
+    sf::Vector2f sum;
+    float total = 0.0f;
+    for (const sf::Vector2f& p : polygon)
+    {
+        const float w = random.unit() + 0.05f;
+        sum += p * w;
+        total += w;
+    }
+    return sum / total;
+}
+
+sf::Vector2f centroid(std::span<const sf::Vector2f> polygon)
+{
+    sf::Vector2f sum;
+    for (const sf::Vector2f& p : polygon)
+        sum += p;
+    return sum / static_cast<float>(polygon.size());
+}
+
+/// Lines along the long side of the block, broken here and there like grain.
+void addGrain(Mesh& mesh, std::span<const sf::Vector2f> inner, const MaterialColours& colours, const BlockLook& look,
+              DetailRandom& random)
+{
+    const sf::FloatRect box = convex::bounds(inner);
+    const bool alongX = box.width >= box.height;
+    const float across = alongX ? box.height : box.width;
+    const int lines = std::clamp(static_cast<int>(across / 0.09f), 1, 7);
+    const float width = std::max(0.018f, 1.0f * look.pixelM);
+    for (int i = 0; i < lines; ++i)
+    {
+        const float f = (static_cast<float>(i) + 0.5f + random.range(-0.2f, 0.2f)) / static_cast<float>(lines);
+        sf::Vector2f a = alongX ? sf::Vector2f(box.left, box.top + f * box.height)
+                                : sf::Vector2f(box.left + f * box.width, box.top);
+        sf::Vector2f b = alongX ? sf::Vector2f(box.left + box.width, a.y) : sf::Vector2f(a.x, box.top + box.height);
+        if (!convex::clipSegment(inner, a, b))
+            continue;
+        // One gap somewhere along the line.
+        const float gapStart = random.range(0.15f, 0.75f);
+        const float gapEnd = gapStart + random.range(0.05f, 0.2f);
+        mesh.addLine(a, a + (b - a) * gapStart, width, colours.detail);
+        mesh.addLine(a + (b - a) * std::min(gapEnd, 1.0f), b, width, colours.detail);
+    }
+}
+
+/// A bright streak near the upper long edge and a short one beside it.
+void addGlint(Mesh& mesh, std::span<const sf::Vector2f> inner, const MaterialColours& colours, const BlockLook& look)
+{
+    const sf::FloatRect box = convex::bounds(inner);
+    const bool alongX = box.width >= box.height;
+    const float width = std::max(0.04f, 2.0f * look.pixelM);
+    const auto streak = [&](float across, float from, float to)
+    {
+        sf::Vector2f a = alongX ? sf::Vector2f(box.left + from * box.width, box.top + across * box.height)
+                                : sf::Vector2f(box.left + across * box.width, box.top + from * box.height);
+        sf::Vector2f b = alongX ? sf::Vector2f(box.left + to * box.width, a.y)
+                                : sf::Vector2f(a.x, box.top + to * box.height);
+        if (convex::clipSegment(inner, a, b))
+            mesh.addLine(a, b, width, colours.highlight);
+    };
+    streak(0.78f, 0.12f, 0.55f);
+    streak(0.78f, 0.62f, 0.7f);
+    streak(0.55f, 0.12f, 0.3f);
+}
+
+/// Speckles of two shades, placed by rejection inside the polygon.
+void addSpeckles(Mesh& mesh, std::span<const sf::Vector2f> inner, const MaterialColours& colours,
+                 const BlockLook& look, DetailRandom& random)
+{
+    const float area = convex::signedArea(inner);
+    const int count = std::clamp(static_cast<int>(area / 0.025f), 3, 80);
+    const sf::FloatRect box = convex::bounds(inner);
+    for (int i = 0; i < count; ++i)
+    {
+        const sf::Vector2f p(box.left + random.unit() * box.width, box.top + random.unit() * box.height);
+        if (!convex::contains(inner, p))
+            continue;
+        const float radius = std::max(random.range(0.018f, 0.045f), 0.8f * look.pixelM);
+        mesh.addCircle(p, radius, (i % 3 == 0) ? colours.highlight : colours.detail, 8);
+    }
+}
+
+/// Cracks running from the edge into the block; all points stay inside because they are convex combinations.
+void addCracks(Mesh& mesh, std::span<const sf::Vector2f> inner, int count, const BlockLook& look,
+               DetailRandom& random)
+{
+    const float width = std::max(0.025f, 1.3f * look.pixelM);
+    const std::size_t n = inner.size();
+    for (int i = 0; i < count; ++i)
+    {
+        const std::size_t edge = static_cast<std::size_t>(random.below(static_cast<int>(n)));
+        const sf::Vector2f start = inner[edge] + (inner[(edge + 1) % n] - inner[edge]) * random.range(0.2f, 0.8f);
+        const sf::Vector2f end = interiorPoint(inner, random);
+        const sf::Vector2f corner = inner[static_cast<std::size_t>(random.below(static_cast<int>(n)))];
+        const sf::Vector2f bend = start * 0.45f + end * 0.4f + corner * 0.15f;
+        const sf::Vector2f crack[] = {start, bend, end};
+        mesh.addPolyline(crack, width, palette::kCrack);
+        // A short branch off the bend.
+        const sf::Vector2f branch = bend * 0.6f + interiorPoint(inner, random) * 0.4f;
+        mesh.addLine(bend, branch, 0.7f * width, palette::kCrack);
+    }
+}
+} // namespace
+
+void BlockPainter::paintPolygon(Mesh& mesh, std::span<const sf::Vector2f> polygon, const BlockLook& look)
+{
+    MaterialColours colours = materialColours(look.material);
+    if (look.healthFraction < kBrokenBelow)
+    {
+        colours.fill = darken(colours.fill, 0.72f);
+        colours.detail = darken(colours.detail, 0.72f);
+        colours.highlight = darken(colours.highlight, 0.8f);
+    }
+    const float outline = std::max(0.035f, 1.5f * look.pixelM);
+    std::vector<sf::Vector2f> inner = convex::inset(polygon, outline);
+    if (inner.empty())
+    {
+        mesh.addConvex(polygon, colours.outline);
+        return;
+    }
+    mesh.addConvex(polygon, colours.outline);
+    mesh.addConvex(inner, colours.fill);
+
+    DetailRandom random(look.seed);
+    if (look.material == "wood")
+        addGrain(mesh, inner, colours, look, random);
+    else if (look.material == "ice")
+        addGlint(mesh, inner, colours, look);
+    else if (look.material == "stone")
+        addSpeckles(mesh, inner, colours, look, random);
+
+    if (look.healthFraction < kBrokenBelow)
+        addCracks(mesh, inner, 5, look, random);
+    else if (look.healthFraction < kCrackedBelow)
+        addCracks(mesh, inner, 2, look, random);
+}
+
+void BlockPainter::paintDisc(Mesh& mesh, sf::Vector2f centre, float radius, const BlockLook& look)
+{
+    const std::vector<sf::Vector2f> polygon = convex::circle(centre, radius, 28);
+    paintPolygon(mesh, polygon, look);
+}
+
+} // namespace abalike::app

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <abalike/level/LevelDef.hpp>
+#include <abalike/world/Catalog.hpp>
+
+#include <SFML/Graphics/Rect.hpp>
+#include <SFML/Graphics/Transform.hpp>
+#include <SFML/System/Vector2.hpp>
+
+namespace abalike::app
+{
+
+/// Maps world metres (y up) to window pixels (y down) with one uniform scale.
+class Camera
+{
+public:
+    /// Frames a level in a window: from 4 m left of the slingshot to 4 m beyond the furthest block or pig,
+    /// the ground about 12% above the bottom edge, zoomed out further if the tallest structure would not fit.
+    static Camera fitLevel(const LevelDef& level, const Catalog& catalog, sf::Vector2u windowSize);
+
+    sf::Vector2f toScreen(sf::Vector2f world) const { return m_transform.transformPoint(world); }
+    sf::Vector2f toWorld(sf::Vector2f screen) const { return m_inverse.transformPoint(screen); }
+    /// World metres to pixels, for drawing meshes built in world coordinates.
+    const sf::Transform& transform() const { return m_transform; }
+
+    float pixelsPerMetre() const { return m_pixelsPerMetre; }
+    float metresPerPixel() const { return 1.0f / m_pixelsPerMetre; }
+    /// The part of the world the window shows (left, bottom, width, height in metres).
+    sf::FloatRect visibleWorld() const { return m_visible; }
+    sf::Vector2u windowSize() const { return m_windowSize; }
+
+private:
+    Camera(sf::Vector2f worldAtScreenOrigin, float pixelsPerMetre, sf::Vector2u windowSize);
+
+    sf::Transform m_transform;
+    sf::Transform m_inverse;
+    float m_pixelsPerMetre = 1.0f;
+    sf::FloatRect m_visible;
+    sf::Vector2u m_windowSize;
+};
+
+} // namespace abalike::app

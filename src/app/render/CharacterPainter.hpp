@@ -1,0 +1,21 @@
+#pragma once
+
+#include "render/Mesh.hpp"
+
+#include <string_view>
+
+namespace abalike::app
+{
+
+/// Draws the faces of the game: birds and pigs, centred at the origin of the mesh's local frame (y up,
+/// facing +x), so they roll with their bodies.
+class CharacterPainter
+{
+public:
+    /// A bird of the given type (red, blue, yellow, black, white) with eyes, angry brows, beak and tail.
+    static void paintBird(Mesh& mesh, std::string_view type, float radius, float pixelM);
+    /// A pig; a helmet pig wears a grey cap; bruises show below 66% and 33% health.
+    static void paintPig(Mesh& mesh, float radius, bool helmet, float healthFraction, float pixelM);
+};
+
+} // namespace abalike::app

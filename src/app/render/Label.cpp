@@ -1,0 +1,45 @@
+#include "render/Label.hpp"
+
+#include <SFML/Graphics/Text.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace abalike::app
+{
+
+sf::String utf8(std::string_view text)
+{
+    return sf::String::fromUtf8(text.begin(), text.end());
+}
+
+sf::Vector2f measureText(const sf::Font& font, const sf::String& text, unsigned size)
+{
+    const sf::Text label(text, font, size);
+    const sf::FloatRect bounds = label.getLocalBounds();
+    return {bounds.left + bounds.width, font.getLineSpacing(size)};
+}
+
+sf::FloatRect drawLabel(sf::RenderTarget& target, const sf::Font& font, const sf::String& text, sf::Vector2f position,
+                        unsigned size, sf::Color colour, Align align)
+{
+    sf::Text label(text, font, size);
+    const float width = measureText(font, text, size).x;
+    if (align == Align::Centre)
+        position.x -= 0.5f * width;
+    else if (align == Align::Right)
+        position.x -= width;
+    // Whole pixels keep glyphs sharp.
+    position = {std::round(position.x), std::round(position.y)};
+
+    const float shadowOffset = std::max(1.0f, static_cast<float>(size) / 14.0f);
+    label.setFillColor(sf::Color(0, 0, 0, static_cast<sf::Uint8>(colour.a * 0.55f)));
+    label.setPosition(position + sf::Vector2f(shadowOffset, shadowOffset));
+    target.draw(label);
+    label.setFillColor(colour);
+    label.setPosition(position);
+    target.draw(label);
+    return {position, {width, font.getLineSpacing(size)}};
+}
+
+} // namespace abalike::app

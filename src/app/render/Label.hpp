@@ -1,0 +1,31 @@
+#pragma once
+
+#include <SFML/Graphics/Font.hpp>
+#include <SFML/Graphics/RenderTarget.hpp>
+#include <SFML/System/String.hpp>
+
+#include <string_view>
+
+namespace abalike::app
+{
+
+/// Which point of a label its position names.
+enum class Align
+{
+    Left,
+    Centre,
+    Right,
+};
+
+/// UTF-8 text (degree signs, arrows) as an SFML string.
+sf::String utf8(std::string_view text);
+
+/// Size of a line of text without drawing it.
+sf::Vector2f measureText(const sf::Font& font, const sf::String& text, unsigned size);
+
+/// Draws one line of text with a soft shadow; `position` is the top of the line at the aligned point.
+/// Returns the bounds it covers.
+sf::FloatRect drawLabel(sf::RenderTarget& target, const sf::Font& font, const sf::String& text, sf::Vector2f position,
+                        unsigned size, sf::Color colour, Align align = Align::Left);
+
+} // namespace abalike::app

@@ -1,0 +1,138 @@
+#include "render/Mesh.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace abalike::app
+{
+
+namespace
+{
+constexpr float kTwoPi = 2.0f * std::numbers::pi_v<float>;
+
+sf::Vector2f unitNormal(sf::Vector2f a, sf::Vector2f b)
+{
+    const sf::Vector2f d = b - a;
+    const float length = std::sqrt(d.x * d.x + d.y * d.y);
+    if (length <= 0.0f)
+        return {0.0f, 0.0f};
+    return {-d.y / length, d.x / length};
+}
+} // namespace
+
+Mesh::Mesh() : m_vertices(sf::Triangles)
+{
+}
+
+void Mesh::clear()
+{
+    m_vertices.clear();
+    m_local = sf::Transform::Identity;
+}
+
+void Mesh::addVertex(sf::Vector2f point, sf::Color colour)
+{
+    m_vertices.append(sf::Vertex(m_local.transformPoint(point), colour));
+}
+
+void Mesh::addTriangle(sf::Vector2f a, sf::Vector2f b, sf::Vector2f c, sf::Color colour)
+{
+    addVertex(a, colour);
+    addVertex(b, colour);
+    addVertex(c, colour);
+}
+
+void Mesh::addConvex(std::span<const sf::Vector2f> points, sf::Color colour)
+{
+    for (std::size_t i = 1; i + 1 < points.size(); ++i)
+        addTriangle(points[0], points[i], points[i + 1], colour);
+}
+
+void Mesh::addGradientRect(sf::Vector2f min, sf::Vector2f max, sf::Color atMinY, sf::Color atMaxY)
+{
+    addVertex(min, atMinY);
+    addVertex({max.x, min.y}, atMinY);
+    addVertex(max, atMaxY);
+    addVertex(min, atMinY);
+    addVertex(max, atMaxY);
+    addVertex({min.x, max.y}, atMaxY);
+}
+
+void Mesh::addCircle(sf::Vector2f centre, float radius, sf::Color colour, int segments)
+{
+    addEllipse(centre, radius, radius, colour, segments);
+}
+
+void Mesh::addEllipse(sf::Vector2f centre, float radiusX, float radiusY, sf::Color colour, int segments)
+{
+    sf::Vector2f previous = centre + sf::Vector2f(radiusX, 0.0f);
+    for (int i = 1; i <= segments; ++i)
+    {
+        const float angle = kTwoPi * static_cast<float>(i) / static_cast<float>(segments);
+        const sf::Vector2f next = centre + sf::Vector2f(radiusX * std::cos(angle), radiusY * std::sin(angle));
+        addTriangle(centre, previous, next, colour);
+        previous = next;
+    }
+}
+
+void Mesh::addRing(sf::Vector2f centre, float radius, float width, sf::Color colour, int segments)
+{
+    const float inner = radius - 0.5f * width;
+    const float outer = radius + 0.5f * width;
+    for (int i = 0; i < segments; ++i)
+    {
+        const float a0 = kTwoPi * static_cast<float>(i) / static_cast<float>(segments);
+        const float a1 = kTwoPi * static_cast<float>(i + 1) / static_cast<float>(segments);
+        const sf::Vector2f d0(std::cos(a0), std::sin(a0));
+        const sf::Vector2f d1(std::cos(a1), std::sin(a1));
+        addTriangle(centre + d0 * inner, centre + d0 * outer, centre + d1 * outer, colour);
+        addTriangle(centre + d0 * inner, centre + d1 * outer, centre + d1 * inner, colour);
+    }
+}
+
+void Mesh::addLine(sf::Vector2f a, sf::Vector2f b, float width, sf::Color colour)
+{
+    const sf::Vector2f n = unitNormal(a, b) * (0.5f * width);
+    addTriangle(a + n, b + n, b - n, colour);
+    addTriangle(a + n, b - n, a - n, colour);
+}
+
+void Mesh::addRoundLine(sf::Vector2f a, sf::Vector2f b, float width, sf::Color colour)
+{
+    addLine(a, b, width, colour);
+    addCircle(a, 0.5f * width, colour, 12);
+    addCircle(b, 0.5f * width, colour, 12);
+}
+
+void Mesh::addPolyline(std::span<const sf::Vector2f> points, float width, sf::Color colour)
+{
+    for (std::size_t i = 1; i < points.size(); ++i)
+        addLine(points[i - 1], points[i], width, colour);
+    // Small joints fill the notches between segments where the line bends.
+    for (std::size_t i = 1; i + 1 < points.size(); ++i)
+        addCircle(points[i], 0.5f * width, colour, 8);
+}
+
+void Mesh::addStar(sf::Vector2f centre, float outerRadius, float innerRadius, sf::Color colour)
+{
+    constexpr int kPoints = 5;
+    for (int i = 0; i < 2 * kPoints; ++i)
+    {
+        // Start at the top point (y grows downwards on screen, so "up" is -y there; callers flip as needed).
+        const float a0 = -std::numbers::pi_v<float> / 2.0f + kTwoPi * static_cast<float>(i) / (2.0f * kPoints);
+        const float a1 = -std::numbers::pi_v<float> / 2.0f + kTwoPi * static_cast<float>(i + 1) / (2.0f * kPoints);
+        const float r0 = (i % 2 == 0) ? outerRadius : innerRadius;
+        const float r1 = (i % 2 == 0) ? innerRadius : outerRadius;
+        addTriangle(centre, centre + sf::Vector2f(r0 * std::cos(a0), r0 * std::sin(a0)),
+                    centre + sf::Vector2f(r1 * std::cos(a1), r1 * std::sin(a1)), colour);
+    }
+}
+
+void Mesh::draw(sf::RenderTarget& target, const sf::Transform& transform) const
+{
+    sf::RenderStates states;
+    states.transform = transform;
+    target.draw(m_vertices, states);
+}
+
+} // namespace abalike::app

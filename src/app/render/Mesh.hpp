@@ -1,0 +1,52 @@
+#pragma once
+
+#include <SFML/Graphics/Color.hpp>
+#include <SFML/Graphics/RenderTarget.hpp>
+#include <SFML/Graphics/Transform.hpp>
+#include <SFML/Graphics/VertexArray.hpp>
+
+#include <span>
+
+namespace abalike::app
+{
+
+/// A batch of coloured triangles built from simple shapes and drawn in one call. Points are passed through
+/// the current local transform as they are added, so shapes can be described in a body's own frame.
+class Mesh
+{
+public:
+    Mesh();
+
+    void clear();
+    /// Transform applied to every point added from now on (identity by default).
+    void setLocalTransform(const sf::Transform& transform) { m_local = transform; }
+    void resetLocalTransform() { m_local = sf::Transform::Identity; }
+
+    void addTriangle(sf::Vector2f a, sf::Vector2f b, sf::Vector2f c, sf::Color colour);
+    /// A convex polygon, as a triangle fan.
+    void addConvex(std::span<const sf::Vector2f> points, sf::Color colour);
+    /// An axis-aligned rectangle (in local coordinates) shaded from atMinY along y to atMaxY.
+    void addGradientRect(sf::Vector2f min, sf::Vector2f max, sf::Color atMinY, sf::Color atMaxY);
+    void addCircle(sf::Vector2f centre, float radius, sf::Color colour, int segments = 24);
+    void addEllipse(sf::Vector2f centre, float radiusX, float radiusY, sf::Color colour, int segments = 24);
+    /// A circle outline of the given width, centred on the radius.
+    void addRing(sf::Vector2f centre, float radius, float width, sf::Color colour, int segments = 24);
+    /// A straight stroke with square ends.
+    void addLine(sf::Vector2f a, sf::Vector2f b, float width, sf::Color colour);
+    /// A stroke with round ends, for limbs and prongs.
+    void addRoundLine(sf::Vector2f a, sf::Vector2f b, float width, sf::Color colour);
+    /// Connected strokes through the points.
+    void addPolyline(std::span<const sf::Vector2f> points, float width, sf::Color colour);
+    /// A five-pointed star.
+    void addStar(sf::Vector2f centre, float outerRadius, float innerRadius, sf::Color colour);
+
+    void draw(sf::RenderTarget& target, const sf::Transform& transform = sf::Transform::Identity) const;
+
+private:
+    void addVertex(sf::Vector2f point, sf::Color colour);
+
+    sf::VertexArray m_vertices;
+    sf::Transform m_local;
+};
+
+} // namespace abalike::app

@@ -1,0 +1,80 @@
+#pragma once
+
+#include <SFML/Graphics/Color.hpp>
+
+#include <string_view>
+
+namespace abalike::app
+{
+
+/// Colours of a building material.
+struct MaterialColours
+{
+    sf::Color fill;
+    sf::Color outline;
+    sf::Color detail;    ///< wood grain, stone speckles
+    sf::Color highlight; ///< ice glint, stone chips
+};
+
+/// Colours of a bird type.
+struct BirdColours
+{
+    sf::Color body;
+    sf::Color outline;
+    sf::Color belly;
+    sf::Color brow;
+};
+
+/// Named colours of the scene; everything is drawn from these, no image files.
+namespace palette
+{
+inline const sf::Color kSkyTop(92, 160, 228);
+inline const sf::Color kSkyBottom(196, 228, 248);
+inline const sf::Color kCloud(255, 255, 255, 215);
+inline const sf::Color kGrass(96, 178, 64);
+inline const sf::Color kGrassDark(64, 140, 44);
+inline const sf::Color kEarth(122, 84, 52);
+inline const sf::Color kEarthDark(98, 66, 40);
+inline const sf::Color kTerrain(88, 62, 42);
+inline const sf::Color kTerrainEdge(62, 42, 28);
+inline const sf::Color kSlingshotWood(112, 70, 34);
+inline const sf::Color kSlingshotDark(78, 46, 20);
+inline const sf::Color kBand(58, 28, 18);
+inline const sf::Color kCrack(45, 30, 20, 220);
+
+inline const sf::Color kPig(124, 204, 64);
+inline const sf::Color kPigOutline(58, 120, 30);
+inline const sf::Color kPigSnout(168, 228, 110);
+inline const sf::Color kPigNostril(48, 96, 24);
+inline const sf::Color kBruise(110, 70, 120, 150);
+inline const sf::Color kHelmet(150, 152, 162);
+inline const sf::Color kHelmetDark(96, 98, 108);
+inline const sf::Color kEyeWhite(255, 255, 255);
+inline const sf::Color kPupil(20, 20, 24);
+inline const sf::Color kBeak(250, 160, 30);
+inline const sf::Color kBeakDark(214, 120, 20);
+
+inline const sf::Color kPreviewDot(255, 255, 255);
+inline const sf::Color kPreviewOutline(30, 34, 48);
+inline const sf::Color kActualPath(255, 140, 0);
+inline const sf::Color kActualContact(220, 40, 30);
+inline const sf::Color kPanel(20, 28, 44, 200);
+inline const sf::Color kText(255, 255, 255);
+inline const sf::Color kTextDim(200, 210, 225);
+inline const sf::Color kStar(255, 206, 40);
+inline const sf::Color kStarEmpty(70, 78, 96);
+} // namespace palette
+
+/// Colours of a material by name; an unknown material gets a neutral sandstone.
+MaterialColours materialColours(std::string_view material);
+
+/// Colours of a bird by type name (red, blue, yellow, black, white); an unknown bird is drawn red.
+BirdColours birdColours(std::string_view bird);
+
+/// The colour scaled towards black by `factor` (1 keeps it, 0 is black); alpha kept.
+sf::Color darken(sf::Color colour, float factor);
+
+/// The colour with its alpha multiplied by `factor` (0..1).
+sf::Color faded(sf::Color colour, float factor);
+
+} // namespace abalike::app

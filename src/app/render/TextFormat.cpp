@@ -1,0 +1,39 @@
+#include "render/TextFormat.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace abalike::app
+{
+
+std::string formatFixed(double value, int decimals)
+{
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+    return buffer;
+}
+
+std::string formatPoints(int points)
+{
+    std::string digits = std::to_string(std::abs(points));
+    for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3)
+        digits.insert(static_cast<std::size_t>(i), ",");
+    return points < 0 ? "-" + digits : digits;
+}
+
+std::string formatDistance(double metres)
+{
+    const double d = std::abs(metres);
+    if (d < 1e-6)
+        return "< 0.001 mm";
+    if (d < 1e-4)
+        return formatFixed(d * 1e3, 3) + " mm";
+    if (d < 1e-2)
+        return formatFixed(d * 1e3, 1) + " mm";
+    if (d < 1.0)
+        return formatFixed(d * 1e2, 1) + " cm";
+    return formatFixed(d, 2) + " m";
+}
+
+} // namespace abalike::app

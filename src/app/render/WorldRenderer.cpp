@@ -1,0 +1,213 @@
+#include "render/WorldRenderer.hpp"
+
+#include "render/Backdrop.hpp"
+#include "render/BlockPainter.hpp"
+#include "render/CharacterPainter.hpp"
+#include "render/ConvexPolygon.hpp"
+#include "render/Palette.hpp"
+#include "render/SlingshotPainter.hpp"
+
+#include <box2d/box2d.h>
+
+#include <algorithm>
+#include <numbers>
+#include <vector>
+
+namespace abalike::app
+{
+
+namespace
+{
+constexpr float kRadToDeg = 180.0f / std::numbers::pi_v<float>;
+constexpr float kWaitingGapM = 0.15f;
+
+sf::Transform bodyTransform(const b2Body& body)
+{
+    sf::Transform transform;
+    transform.translate(body.GetPosition().x, body.GetPosition().y).rotate(body.GetAngle() * kRadToDeg);
+    return transform;
+}
+
+sf::Transform placeAt(sf::Vector2f position)
+{
+    sf::Transform transform;
+    transform.translate(position);
+    return transform;
+}
+
+float healthFraction(const Entity& entity)
+{
+    if (entity.maxHealth <= 0.0)
+        return 1.0f;
+    return static_cast<float>(std::clamp(entity.health / entity.maxHealth, 0.0, 1.0));
+}
+
+float birdRadius(const Catalog& catalog, const std::string& type)
+{
+    const BirdType* bird = catalog.findBird(type);
+    return bird != nullptr ? static_cast<float>(bird->radiusM) : 0.25f;
+}
+
+std::vector<sf::Vector2f> polygonPoints(const b2PolygonShape& shape)
+{
+    std::vector<sf::Vector2f> points;
+    points.reserve(static_cast<std::size_t>(shape.m_count));
+    for (int i = 0; i < shape.m_count; ++i)
+        points.emplace_back(shape.m_vertices[i].x, shape.m_vertices[i].y);
+    return points;
+}
+} // namespace
+
+void WorldRenderer::draw(sf::RenderTarget& target, const Camera& camera, const GameSession& session,
+                         sf::Vector2f pullOffset)
+{
+    const LevelDef& level = session.level();
+    const float pixelM = camera.metresPerPixel();
+    const auto groundY = static_cast<float>(level.groundY);
+    const std::vector<Entity>& entities = session.world().entities();
+    m_mesh.clear();
+
+    Backdrop::paintSky(m_mesh, camera, groundY);
+    Backdrop::paintGround(m_mesh, camera, groundY);
+    for (const Entity& entity : entities)
+    {
+        if (entity.alive && entity.body != nullptr && entity.kind == EntityKind::Terrain)
+            addTerrain(entity, pixelM);
+    }
+
+    // The slingshot and the bird it holds.
+    const std::array<double, 2> pouch = session.launchPoint();
+    SlingshotPose pose;
+    pose.base = {static_cast<float>(level.slingshot.x), groundY};
+    pose.pouch = {static_cast<float>(pouch[0]), static_cast<float>(pouch[1])};
+    const BirdType* loaded = session.phase() == Phase::Aiming ? session.currentBird() : nullptr;
+    if (loaded != nullptr)
+    {
+        pose.birdRadius = static_cast<float>(loaded->radiusM);
+        sf::Vector2f seat = pose.pouch + pullOffset;
+        seat.y = std::max(seat.y, groundY + pose.birdRadius);
+        pose.loadedBird = seat;
+    }
+    SlingshotPainter::paintBack(m_mesh, pose, pixelM);
+    addWaitingBirds(session, pixelM);
+    if (loaded != nullptr)
+    {
+        m_mesh.setLocalTransform(placeAt(*pose.loadedBird));
+        CharacterPainter::paintBird(m_mesh, loaded->name, pose.birdRadius, pixelM);
+        m_mesh.resetLocalTransform();
+    }
+    SlingshotPainter::paintFront(m_mesh, pose, pixelM);
+
+    for (std::size_t i = 0; i < entities.size(); ++i)
+    {
+        const Entity& entity = entities[i];
+        if (!entity.alive || entity.body == nullptr)
+            continue;
+        if (entity.kind == EntityKind::Block)
+            addBlock(entity, i, pixelM);
+        else if (entity.kind == EntityKind::Pig)
+            addPig(entity, session.catalog(), pixelM);
+    }
+    for (const Entity& entity : entities)
+    {
+        if (entity.alive && entity.body != nullptr && entity.kind == EntityKind::Bird)
+        {
+            addBird(entity, pixelM);
+            addOffscreenMarker(entity, camera);
+        }
+    }
+    m_mesh.draw(target, camera.transform());
+}
+
+void WorldRenderer::addTerrain(const Entity& entity, float pixelM)
+{
+    m_mesh.setLocalTransform(bodyTransform(*entity.body));
+    for (const b2Fixture* fixture = entity.body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
+    {
+        if (fixture->GetType() != b2Shape::e_polygon)
+            continue;
+        const std::vector<sf::Vector2f> points =
+            polygonPoints(*static_cast<const b2PolygonShape*>(fixture->GetShape()));
+        const std::vector<sf::Vector2f> inner = convex::inset(points, std::max(0.05f, 2.0f * pixelM));
+        m_mesh.addConvex(points, palette::kTerrainEdge);
+        m_mesh.addConvex(inner.empty() ? points : inner, palette::kTerrain);
+    }
+    m_mesh.resetLocalTransform();
+}
+
+void WorldRenderer::addBlock(const Entity& entity, std::size_t index, float pixelM)
+{
+    BlockLook look;
+    look.material = entity.typeName;
+    look.healthFraction = healthFraction(entity);
+    look.pixelM = pixelM;
+    m_mesh.setLocalTransform(bodyTransform(*entity.body));
+    std::uint64_t fixtureNumber = 0;
+    for (const b2Fixture* fixture = entity.body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
+    {
+        look.seed = index * 131u + fixtureNumber++;
+        if (fixture->GetType() == b2Shape::e_polygon)
+        {
+            const auto& shape = *static_cast<const b2PolygonShape*>(fixture->GetShape());
+            BlockPainter::paintPolygon(m_mesh, polygonPoints(shape), look);
+        }
+        else if (fixture->GetType() == b2Shape::e_circle)
+        {
+            const auto& shape = *static_cast<const b2CircleShape*>(fixture->GetShape());
+            BlockPainter::paintDisc(m_mesh, {shape.m_p.x, shape.m_p.y}, shape.m_radius, look);
+        }
+    }
+    m_mesh.resetLocalTransform();
+}
+
+void WorldRenderer::addPig(const Entity& entity, const Catalog& catalog, float pixelM)
+{
+    const PigType* type = catalog.findPig(entity.typeName);
+    m_mesh.setLocalTransform(bodyTransform(*entity.body));
+    CharacterPainter::paintPig(m_mesh, static_cast<float>(0.5 * entity.widthM), type != nullptr && type->helmet,
+                               healthFraction(entity), pixelM);
+    m_mesh.resetLocalTransform();
+}
+
+void WorldRenderer::addBird(const Entity& entity, float pixelM)
+{
+    m_mesh.setLocalTransform(bodyTransform(*entity.body));
+    CharacterPainter::paintBird(m_mesh, entity.typeName, static_cast<float>(0.5 * entity.widthM), pixelM);
+    m_mesh.resetLocalTransform();
+}
+
+void WorldRenderer::addWaitingBirds(const GameSession& session, float pixelM)
+{
+    // Birds not yet launched line up on the ground left of the slingshot; while aiming, the first of them is
+    // the one in the pouch.
+    const LevelDef& level = session.level();
+    const int first = session.birdsUsed() + (session.phase() == Phase::Aiming ? 1 : 0);
+    float x = static_cast<float>(level.slingshot.x) - 0.9f;
+    for (int i = first; i < static_cast<int>(level.birds.size()); ++i)
+    {
+        const std::string& type = level.birds[static_cast<std::size_t>(i)];
+        const float radius = birdRadius(session.catalog(), type);
+        x -= radius;
+        m_mesh.setLocalTransform(placeAt({x, static_cast<float>(level.groundY) + radius}));
+        CharacterPainter::paintBird(m_mesh, type, radius, pixelM);
+        x -= radius + kWaitingGapM + 0.35f * radius; // room for the tail feathers
+    }
+    m_mesh.resetLocalTransform();
+}
+
+void WorldRenderer::addOffscreenMarker(const Entity& bird, const Camera& camera)
+{
+    // Above the top of the view, show an arrow at the edge so the player can follow the bird.
+    const sf::FloatRect view = camera.visibleWorld();
+    const float top = view.top + view.height;
+    const b2Vec2 position = bird.body->GetPosition();
+    if (position.y - 0.5f * static_cast<float>(bird.widthM) <= top)
+        return;
+    const float size = 10.0f * camera.metresPerPixel();
+    const float x = std::clamp(position.x, view.left + size, view.left + view.width - size);
+    const float y = top - 0.4f * size;
+    m_mesh.addTriangle({x - size, y - 1.5f * size}, {x, y}, {x + size, y - 1.5f * size},
+                       birdColours(bird.typeName).body);
+}
+
+} // namespace abalike::app

@@ -1,0 +1,32 @@
+#pragma once
+
+#include "render/Camera.hpp"
+#include "render/Mesh.hpp"
+
+#include <abalike/game/GameSession.hpp>
+
+#include <SFML/Graphics/RenderTarget.hpp>
+
+namespace abalike::app
+{
+
+/// Draws the level as the world has it now: sky, ground, terrain, blocks, pigs, birds and the slingshot.
+/// Reads positions from the Box2D bodies and draws every fixture in its true geometry.
+class WorldRenderer
+{
+public:
+    /// pullOffset: where the loaded bird sits relative to the pouch while aiming (world metres).
+    void draw(sf::RenderTarget& target, const Camera& camera, const GameSession& session, sf::Vector2f pullOffset);
+
+private:
+    void addTerrain(const Entity& entity, float pixelM);
+    void addBlock(const Entity& entity, std::size_t index, float pixelM);
+    void addPig(const Entity& entity, const Catalog& catalog, float pixelM);
+    void addBird(const Entity& entity, float pixelM);
+    void addWaitingBirds(const GameSession& session, float pixelM);
+    void addOffscreenMarker(const Entity& bird, const Camera& camera);
+
+    Mesh m_mesh;
+};
+
+} // namespace abalike::app

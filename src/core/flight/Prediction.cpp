@@ -1,0 +1,117 @@
+#include <abalike/flight/Prediction.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace abalike
+{
+
+namespace
+{
+
+/// Time in [step.t0, step.t1] where component i of the interpolated state crosses `level`, by bisection on the
+/// Hermite interpolant. The caller guarantees a sign change between the step's ends.
+double locateCrossing(const FlightStep& step, std::size_t i, double level)
+{
+    double lo = step.t0;
+    double hi = step.t1;
+    const bool risingAtLo = step.s0[i] - level < 0.0;
+    for (int iteration = 0; iteration < 200 && hi - lo > 0.0; ++iteration)
+    {
+        const double mid = 0.5 * (lo + hi);
+        if (mid <= lo || mid >= hi)
+            break;
+        const bool belowAtMid = step.interpolate(mid)[i] - level < 0.0;
+        if (belowAtMid == risingAtLo)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+void trackApex(const FlightStep& step, double& maxHeight)
+{
+    maxHeight = std::max(maxHeight, step.s1[1]);
+    if (step.s0[3] > 0.0 && step.s1[3] <= 0.0)
+    {
+        const double tApex = locateCrossing(step, 3, 0.0);
+        maxHeight = std::max(maxHeight, step.interpolate(tApex)[1]);
+    }
+}
+
+} // namespace
+
+PredictedFlight predictFlight(const FlightModel& model, const IntegratorSettings& settings, const FlightState& s0,
+                              const PredictionLimits& limits)
+{
+    FlightIntegrator integrator(model, settings);
+    integrator.reset(0.0, s0);
+
+    PredictedFlight flight;
+    flight.path.push_back({0.0, s0});
+    flight.maxHeightM = s0[1];
+    const double y0 = s0[1];
+    const double endTime = limits.untilTimeS ? *limits.untilTimeS : limits.maxTimeS;
+    // A step count limit as well as a time limit, so a rounding step never leaves the loop spinning.
+    const auto maxSteps = static_cast<std::size_t>(std::ceil(endTime / settings.dtS)) + 1;
+
+    while (flight.steps < maxSteps)
+    {
+        if (flight.path.back().t >= endTime)
+        {
+            flight.end = FlightEnd::TimeUp;
+            break;
+        }
+        const FlightStep& step = integrator.step();
+        ++flight.steps;
+
+        if (limits.contact)
+        {
+            if (const auto fraction = limits.contact(step.s0, step.s1))
+            {
+                // The world moves the bird along the chord of each step, so contact is on the chord.
+                const double a = std::clamp(*fraction, 0.0, 1.0);
+                const double t = step.t0 + a * (step.t1 - step.t0);
+                FlightState s = step.interpolate(t);
+                s[0] = step.s0[0] + a * (step.s1[0] - step.s0[0]);
+                s[1] = step.s0[1] + a * (step.s1[1] - step.s0[1]);
+                flight.path.push_back({t, s});
+                flight.contact = ContactPoint{t, s[0], s[1]};
+                flight.maxHeightM = std::max(flight.maxHeightM, s[1]);
+                flight.end = FlightEnd::Contact;
+                break;
+            }
+        }
+        if (step.t1 >= endTime)
+        {
+            const FlightState s = step.t1 == endTime ? step.s1 : step.interpolate(endTime);
+            FlightStep clipped = step;
+            clipped.t1 = endTime;
+            clipped.s1 = s;
+            trackApex(clipped, flight.maxHeightM);
+            flight.path.push_back({endTime, s});
+            flight.end = FlightEnd::TimeUp;
+            break;
+        }
+        if (limits.stopOnLanding && !limits.untilTimeS && step.s0[1] - y0 > 0.0 && step.s1[1] - y0 <= 0.0)
+        {
+            const double t = locateCrossing(step, 1, y0);
+            FlightState s = step.interpolate(t);
+            s[1] = y0; // the crossing is where y == y0, by definition
+            trackApex(step, flight.maxHeightM);
+            flight.path.push_back({t, s});
+            flight.end = FlightEnd::Landed;
+            break;
+        }
+        trackApex(step, flight.maxHeightM);
+        flight.path.push_back({step.t1, step.s1});
+    }
+
+    flight.rhsEvaluations = integrator.rhsEvaluations(); // counted from reset(), including the launch derivative
+    flight.substeps = integrator.substeps();
+    flight.maxStiffnessRatio = integrator.maxStiffnessRatio();
+    return flight;
+}
+
+} // namespace abalike

@@ -1,0 +1,248 @@
+#include <abalike/game/GameSession.hpp>
+
+#include <box2d/box2d.h>
+#include <cmath>
+#include <sstream>
+
+namespace abalike
+{
+
+namespace
+{
+/// A bird slower than this for kBirdRestS after its first contact is taken off the field.
+constexpr double kBirdRestSpeedMps = 0.3;
+constexpr double kBirdRestS = 1.0;
+/// Longest a bird stays in play after launch.
+constexpr double kBirdLifetimeS = 12.0;
+/// Longest a shot lasts before the next bird is ready, even if something still moves.
+constexpr double kShotTimeCapS = 20.0;
+/// Box2D moves a body at most b2_maxTranslation per step; launches are capped a little below that speed.
+constexpr double kMaxTranslationShare = 0.95;
+} // namespace
+
+GameSession::GameSession(LevelDef level, const Catalog& catalog, WorldSettings settings)
+    : m_level(std::move(level)), m_catalog(catalog), m_settings(settings)
+{
+    for (const std::string& name : m_level.birds)
+        if (m_catalog.findBird(name) == nullptr)
+            throw std::invalid_argument("unknown bird \"" + name + "\"");
+    restart();
+}
+
+void GameSession::restart()
+{
+    m_world = std::make_unique<GameWorld>(m_level, m_catalog, m_settings);
+    m_phase = Phase::Aiming;
+    m_nextBird = 0;
+    m_shotStartTime = 0.0;
+    m_birdSlowSinceS = -1.0;
+    m_shots.clear();
+    m_score = {};
+}
+
+const BirdType* GameSession::currentBird() const
+{
+    if (m_nextBird >= static_cast<int>(m_level.birds.size()))
+        return nullptr;
+    return m_catalog.findBird(m_level.birds[static_cast<std::size_t>(m_nextBird)]);
+}
+
+int GameSession::birdsRemaining() const
+{
+    return static_cast<int>(m_level.birds.size()) - m_nextBird;
+}
+
+double GameSession::launchSpeedForForce(double forceN) const
+{
+    const BirdType* bird = currentBird();
+    if (bird == nullptr)
+        return 0.0;
+    return forceN * m_catalog.slingshotReleaseTimeS() / bird->massKg;
+}
+
+double GameSession::maxLaunchSpeed() const
+{
+    const double bySlingshot = launchSpeedForForce(m_level.slingshot.maxForceN);
+    const double byBox2d = kMaxTranslationShare * b2_maxTranslation / m_settings.dtS;
+    return std::min(bySlingshot, byBox2d);
+}
+
+std::array<double, 2> GameSession::launchPoint() const
+{
+    return {m_level.slingshot.x, m_level.slingshot.y};
+}
+
+FlightModel GameSession::flightModelFor(const BirdType& bird) const
+{
+    FlightModel model;
+    model.gravity = m_level.environment.gravity;
+    model.massKg = bird.massKg;
+    model.quadraticDrag = quadraticDragCoefficient(m_level.environment.airDensity, bird.dragCoefficient, bird.radiusM);
+    model.windX = m_level.environment.windX;
+    model.windY = m_level.environment.windY;
+    return model;
+}
+
+PredictedFlight GameSession::preview(double angleDeg, double speedMps) const
+{
+    const BirdType* bird = currentBird();
+    if (bird == nullptr)
+        return {};
+    IntegratorSettings settings;
+    settings.dtS = m_settings.dtS;
+    PredictionLimits limits;
+    limits.maxTimeS = 15.0;
+    const double radius = bird->radiusM;
+    limits.contact = [this, radius](const FlightState& a, const FlightState& b) {
+        return m_world->castCircle(radius, a, b);
+    };
+    const auto p = launchPoint();
+    return predictFlight(flightModelFor(*bird), settings, launchState(p[0], p[1], speedMps, angleDeg), limits);
+}
+
+void GameSession::launch(double angleDeg, double speedMps)
+{
+    const BirdType* bird = currentBird();
+    std::ostringstream why;
+    if (finished())
+        why << "the level is over";
+    else if (bird == nullptr)
+        why << "no bird left to launch (the level has " << m_level.birds.size() << ")";
+    else if (m_phase != Phase::Aiming)
+        why << "a shot is still under way";
+    else if (!std::isfinite(angleDeg) || !std::isfinite(speedMps))
+        why << "angle and speed must be finite numbers";
+    else if (angleDeg < -90.0 || angleDeg > 90.0)
+        why << "angle " << angleDeg << " deg is outside -90 to 90";
+    else if (speedMps < 0.0)
+        why << "speed must be >= 0 m/s, got " << speedMps;
+    else if (speedMps > maxLaunchSpeed() * (1.0 + 1e-12))
+        why << "bird " << m_nextBird + 1 << " (" << bird->name << ", " << bird->massKg << " kg) can be launched at most "
+            << maxLaunchSpeed() << " m/s (slingshot " << m_level.slingshot.maxForceN << " N), asked " << speedMps
+            << " m/s";
+    if (!why.str().empty())
+        throw LaunchError(why.str());
+
+    ShotRecord shot;
+    shot.bird = bird->name;
+    shot.angleDeg = angleDeg;
+    shot.speedMps = speedMps;
+    const PredictedFlight predicted = preview(angleDeg, speedMps);
+    shot.predictedContact = predicted.contact;
+    for (const PathPoint& point : predicted.path)
+        shot.predictedPath.push_back({point.t, point.s[0], point.s[1]});
+    const auto p = launchPoint();
+    m_world->launchBird(*bird, flightModelFor(*bird), launchState(p[0], p[1], speedMps, angleDeg));
+    shot.actualPath = m_world->birdPath();
+    m_shots.push_back(std::move(shot));
+    ++m_nextBird;
+    m_phase = Phase::Flying;
+    m_shotStartTime = m_world->time();
+    m_birdSlowSinceS = -1.0;
+}
+
+void GameSession::step()
+{
+    if (finished())
+        return;
+    m_world->step();
+    collectEvents();
+    updateBird();
+    updatePhase();
+}
+
+void GameSession::collectEvents()
+{
+    for (const DestroyedEvent& event : m_world->takeDestroyedEvents())
+    {
+        if (event.kind == EntityKind::Block && event.points > 0)
+        {
+            m_score.blockPoints += event.points;
+            ++m_score.blocksDestroyed;
+        }
+        else if (event.kind == EntityKind::Pig)
+        {
+            m_score.pigPoints += event.points;
+            ++m_score.pigsDefeated;
+        }
+    }
+}
+
+void GameSession::updateBird()
+{
+    const Entity* bird = m_world->bird();
+    if (bird == nullptr || m_shots.empty())
+        return;
+    ShotRecord& shot = m_shots.back();
+    // Keep the record's actual path in step with the world's, one point per step.
+    const auto& path = m_world->birdPath();
+    for (std::size_t i = shot.actualPath.size(); i < path.size(); ++i)
+        shot.actualPath.push_back(path[i]);
+    if (!shot.actualContact && m_world->birdContact())
+    {
+        shot.actualContact = m_world->birdContact();
+        if (shot.predictedContact)
+            shot.deviationM = std::hypot(shot.actualContact->x - shot.predictedContact->x,
+                                         shot.actualContact->y - shot.predictedContact->y);
+    }
+
+    const double sinceLaunch = m_world->time() - m_shotStartTime;
+    const b2Vec2 v = bird->body->GetLinearVelocity();
+    const bool slow = std::hypot(v.x, v.y) < kBirdRestSpeedMps && !m_world->birdInFreeFlight();
+    if (!slow)
+        m_birdSlowSinceS = -1.0;
+    else if (m_birdSlowSinceS < 0.0)
+        m_birdSlowSinceS = sinceLaunch;
+    if ((slow && sinceLaunch - m_birdSlowSinceS >= kBirdRestS) || sinceLaunch >= kBirdLifetimeS)
+        m_world->removeBird();
+}
+
+void GameSession::updatePhase()
+{
+    if (m_phase != Phase::Flying)
+        return;
+    const bool timeUp = m_world->time() - m_shotStartTime >= kShotTimeCapS;
+    if (!(m_world->bird() == nullptr && m_world->isSettled()) && !timeUp)
+        return;
+    m_world->removeBird();
+    if (m_world->pigsAlive() == 0)
+    {
+        m_score.unusedBirdBonus = birdsRemaining() * m_catalog.pointsPerUnusedBird();
+        m_phase = Phase::Won;
+    }
+    else if (birdsRemaining() == 0)
+        m_phase = Phase::Lost;
+    else
+        m_phase = Phase::Aiming;
+}
+
+int GameSession::stars() const
+{
+    return starsFor(m_score.total(), m_phase == Phase::Won, m_level.starScores);
+}
+
+std::unique_ptr<GameSession> simulateShots(const LevelDef& level, const std::vector<ScriptedShot>& shots,
+                                           const Catalog& catalog)
+{
+    auto session = std::make_unique<GameSession>(level, catalog);
+    for (std::size_t i = 0; i < shots.size(); ++i)
+    {
+        while (session->phase() == Phase::Flying)
+            session->step();
+        if (session->finished())
+            break; // the level ended before this shot; nothing left to shoot at
+        try
+        {
+            session->launch(shots[i].angleDeg, shots[i].speedMps);
+        }
+        catch (const LaunchError& e)
+        {
+            throw LaunchError("shot " + std::to_string(i + 1) + ": " + e.what());
+        }
+    }
+    while (session->phase() == Phase::Flying)
+        session->step();
+    return session;
+}
+
+} // namespace abalike

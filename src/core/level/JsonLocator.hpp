@@ -1,0 +1,37 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
+
+namespace abalike
+{
+
+/// Line and column (1-based) of every value in a JSON text, by JSON pointer, so errors found after parsing
+/// can point at the place in the file. nlohmann::json keeps no positions; this scans the text once.
+class JsonLocator
+{
+public:
+    /// The text must already have parsed as JSON.
+    explicit JsonLocator(std::string_view text);
+
+    /// Line and column of the value at pointer, or of its closest located parent; {0, 0} if none.
+    std::pair<int, int> locate(const std::string& pointer) const;
+
+    /// Line and column of a byte offset (1-based; columns count bytes).
+    static std::pair<int, int> lineColumn(std::string_view text, std::size_t offset);
+
+private:
+    void scanValue(const std::string& pointer);
+    void skipSpace();
+    std::string scanString();
+
+    std::string_view m_text;
+    std::size_t m_pos = 0;
+    int m_depth = 0;
+    std::unordered_map<std::string, std::size_t> m_offsets;
+};
+
+} // namespace abalike

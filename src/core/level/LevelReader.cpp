@@ -1,0 +1,159 @@
+#include "level/LevelReader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace abalike
+{
+
+std::string describeJsonType(const nlohmann::json& value)
+{
+    switch (value.type())
+    {
+    case nlohmann::json::value_t::null:
+        return "null";
+    case nlohmann::json::value_t::object:
+        return "an object";
+    case nlohmann::json::value_t::array:
+        return "an array";
+    case nlohmann::json::value_t::string:
+        return "the string " + value.dump();
+    case nlohmann::json::value_t::boolean:
+        return value.get<bool>() ? "true" : "false";
+    default:
+        return "the number " + value.dump();
+    }
+}
+
+std::optional<std::string> closestMatch(const std::string& word, const std::vector<std::string>& candidates)
+{
+    std::optional<std::string> best;
+    std::size_t bestDistance = std::max<std::size_t>(2, word.size() / 3) + 1;
+    for (const std::string& candidate : candidates)
+    {
+        // Levenshtein distance, one row at a time.
+        std::vector<std::size_t> row(candidate.size() + 1);
+        for (std::size_t j = 0; j <= candidate.size(); ++j)
+            row[j] = j;
+        for (std::size_t i = 1; i <= word.size(); ++i)
+        {
+            std::size_t diagonal = row[0];
+            row[0] = i;
+            for (std::size_t j = 1; j <= candidate.size(); ++j)
+            {
+                const std::size_t up = row[j];
+                const std::size_t cost = word[i - 1] == candidate[j - 1] ? 0 : 1;
+                row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + cost});
+                diagonal = up;
+            }
+        }
+        if (row[candidate.size()] < bestDistance)
+        {
+            bestDistance = row[candidate.size()];
+            best = candidate;
+        }
+    }
+    return best;
+}
+
+void LevelReader::error(const std::string& pointer, const std::string& message)
+{
+    const auto [line, column] = m_locator.locate(pointer);
+    m_issues.push_back({m_file, line, column, pointer, message});
+}
+
+void LevelReader::keyError(const std::string& pointer, const std::string& message)
+{
+    auto [line, column] = m_locator.locate(pointer + "#key");
+    if (line == 0)
+        std::tie(line, column) = m_locator.locate(pointer);
+    m_issues.push_back({m_file, line, column, pointer, message});
+}
+
+bool LevelReader::object(const json& value, const std::string& pointer, std::initializer_list<const char*> allowed)
+{
+    if (!value.is_object())
+    {
+        error(pointer, "expected an object, got " + describeJsonType(value));
+        return false;
+    }
+    const std::vector<std::string> names(allowed.begin(), allowed.end());
+    for (const auto& [key, child] : value.items())
+    {
+        if (std::find(names.begin(), names.end(), key) != names.end())
+            continue;
+        std::string message = "unknown key \"" + key + "\"";
+        if (const auto suggestion = closestMatch(key, names))
+            message += " (did you mean \"" + *suggestion + "\"?)";
+        else
+        {
+            message += " (expected one of:";
+            for (const auto& n : names)
+                message += " " + n;
+            message += ")";
+        }
+        keyError(pointer + "/" + key, message);
+    }
+    return true;
+}
+
+bool LevelReader::array(const json& value, const std::string& pointer)
+{
+    if (value.is_array())
+        return true;
+    error(pointer, "expected an array, got " + describeJsonType(value));
+    return false;
+}
+
+double LevelReader::number(const json& object, const std::string& pointer, const char* key, double fallback,
+                           bool required, double min, double max)
+{
+    const std::string here = pointer + "/" + key;
+    const auto it = object.find(key);
+    if (it == object.end())
+    {
+        if (required)
+            error(pointer, std::string("missing required key \"") + key + "\" (expected a number)");
+        return fallback;
+    }
+    if (!it->is_number())
+    {
+        error(here, "expected a number, got " + describeJsonType(*it));
+        return fallback;
+    }
+    const double value = it->get<double>();
+    if (!std::isfinite(value))
+    {
+        error(here, "expected a finite number, got " + it->dump());
+        return fallback;
+    }
+    if (value < min || value > max)
+    {
+        std::ostringstream message;
+        message << "out of range (expected " << min << " to " << max << ", got " << value << ")";
+        error(here, message.str());
+        return fallback;
+    }
+    return value;
+}
+
+std::string LevelReader::string(const json& object, const std::string& pointer, const char* key,
+                                const std::string& fallback, bool required)
+{
+    const auto it = object.find(key);
+    if (it == object.end())
+    {
+        if (required)
+            error(pointer, std::string("missing required key \"") + key + "\" (expected a string)");
+        return fallback;
+    }
+    if (!it->is_string())
+    {
+        error(pointer + "/" + key, "expected a string, got " + describeJsonType(*it));
+        return fallback;
+    }
+    return it->get<std::string>();
+}
+
+} // namespace abalike

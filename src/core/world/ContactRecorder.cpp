@@ -1,0 +1,52 @@
+#include "world/ContactRecorder.hpp"
+
+#include <algorithm>
+
+namespace abalike
+{
+
+void GameWorld::ContactRecorder::BeginContact(b2Contact* contact)
+{
+    if (m_bird == nullptr || m_birdTouch)
+        return;
+    const b2Body* a = contact->GetFixtureA()->GetBody();
+    const b2Body* b = contact->GetFixtureB()->GetBody();
+    // During a time-of-impact sub-step Box2D has already moved the bird to the moment of impact.
+    if (a == m_bird || b == m_bird)
+        m_birdTouch = m_bird->GetPosition();
+}
+
+void GameWorld::ContactRecorder::PreSolve(b2Contact* contact, const b2Manifold* /*oldManifold*/)
+{
+    // Closing speed along the normal before the solver acts: what tells an impact from resting contact.
+    b2WorldManifold manifold;
+    contact->GetWorldManifold(&manifold);
+    const b2Body* a = contact->GetFixtureA()->GetBody();
+    const b2Body* b = contact->GetFixtureB()->GetBody();
+    float closing = 0.0f;
+    for (int i = 0; i < contact->GetManifold()->pointCount; ++i)
+    {
+        const b2Vec2 va = a->GetLinearVelocityFromWorldPoint(manifold.points[i]);
+        const b2Vec2 vb = b->GetLinearVelocityFromWorldPoint(manifold.points[i]);
+        closing = std::max(closing, -b2Dot(vb - va, manifold.normal));
+    }
+    m_closingSpeed[contact] = closing;
+}
+
+void GameWorld::ContactRecorder::PostSolve(b2Contact* contact, const b2ContactImpulse* impulse)
+{
+    const auto it = m_closingSpeed.find(contact);
+    if (it == m_closingSpeed.end() || it->second < m_threshold)
+        return; // resting contact never hurts
+    double total = 0.0;
+    for (int i = 0; i < impulse->count; ++i)
+        total += impulse->normalImpulses[i];
+    for (b2Body* body : {contact->GetFixtureA()->GetBody(), contact->GetFixtureB()->GetBody()})
+    {
+        const int index = entityIndexOf(body);
+        if (index >= 0)
+            m_impulses[index] += total;
+    }
+}
+
+} // namespace abalike

@@ -1,0 +1,55 @@
+#pragma once
+
+#include <abalike/world/GameWorld.hpp>
+
+#include <box2d/box2d.h>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+namespace abalike
+{
+
+/// Entity index stored in a body's user data (0 means "not an entity").
+inline int entityIndexOf(b2Body* body)
+{
+    return static_cast<int>(body->GetUserData().pointer) - 1; // GetUserData() is non-const in Box2D 2.4
+}
+
+/// Records what happens during a Box2D step; GameWorld acts on it after the step, because bodies cannot be
+/// destroyed inside callbacks.
+class GameWorld::ContactRecorder final : public b2ContactListener
+{
+public:
+    explicit ContactRecorder(float damageSpeedThreshold) : m_threshold(damageSpeedThreshold) {}
+
+    /// The bird whose first touch should be recorded (null for none).
+    void watchBird(const b2Body* bird)
+    {
+        m_bird = bird;
+        m_birdTouch.reset();
+    }
+    /// Where the watched bird was when it first touched something.
+    const std::optional<b2Vec2>& birdTouch() const { return m_birdTouch; }
+
+    /// Impact impulses (N s) per entity index during the last step.
+    const std::unordered_map<int, double>& impulses() const { return m_impulses; }
+    void clearStep()
+    {
+        m_impulses.clear();
+        m_closingSpeed.clear();
+    }
+
+    void BeginContact(b2Contact* contact) override;
+    void PreSolve(b2Contact* contact, const b2Manifold* oldManifold) override;
+    void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override;
+
+private:
+    float m_threshold;
+    const b2Body* m_bird = nullptr;
+    std::optional<b2Vec2> m_birdTouch;
+    std::unordered_map<const b2Contact*, float> m_closingSpeed;
+    std::unordered_map<int, double> m_impulses;
+};
+
+} // namespace abalike
