@@ -15,6 +15,7 @@ int main(int argc, char** argv)
     commands["predict"] = addPredictCommand(app);
     commands["simulate"] = addSimulateCommand(app);
     commands["play"] = addPlayCommand(app);
+    commands["bench"] = addBenchCommand(app);
 
     try
     {

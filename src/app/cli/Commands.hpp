@@ -13,5 +13,6 @@ using CommandRunner = std::function<int()>;
 CommandRunner addPredictCommand(CLI::App& app);
 CommandRunner addSimulateCommand(CLI::App& app);
 CommandRunner addPlayCommand(CLI::App& app);
+CommandRunner addBenchCommand(CLI::App& app);
 
 } // namespace abalike::app

@@ -1,4 +1,5 @@
 #include "world/ContactRecorder.hpp"
+#include "world/Skin.hpp"
 
 #include <abalike/world/GameWorld.hpp>
 
@@ -28,12 +29,29 @@ b2BodyUserData userDataFor(int entityIndex)
     return data;
 }
 
-void addBoxFixture(b2Body* body, double w, double h, const b2FixtureDef& base)
+void addPolygonFixture(b2Body* body, const std::vector<b2Vec2>& outline, const b2FixtureDef& base)
 {
+    const std::vector<b2Vec2> core = insetPolygon(outline);
     b2PolygonShape shape;
-    shape.SetAsBox(static_cast<float>(w / 2), static_cast<float>(h / 2));
+    shape.Set(core.data(), static_cast<int>(core.size()));
     b2FixtureDef def = base;
     def.shape = &shape;
+    body->CreateFixture(&def);
+}
+
+void addBoxFixture(b2Body* body, double w, double h, const b2FixtureDef& base)
+{
+    const auto hw = static_cast<float>(w / 2);
+    const auto hh = static_cast<float>(h / 2);
+    addPolygonFixture(body, {{-hw, -hh}, {hw, -hh}, {hw, hh}, {-hw, hh}}, base);
+}
+
+void addCircleFixture(b2Body* body, double radius, const b2FixtureDef& base)
+{
+    b2CircleShape circle;
+    circle.m_radius = physicsCircleRadius(radius);
+    b2FixtureDef def = base;
+    def.shape = &circle;
     body->CreateFixture(&def);
 }
 
@@ -89,7 +107,7 @@ void GameWorld::buildLevel()
         std::vector<b2Vec2> points;
         for (int i = segments; i >= 0; --i)
             points.emplace_back(static_cast<float>(left + (right - left) * i / segments),
-                                static_cast<float>(m_level.groundY));
+                                static_cast<float>(m_level.groundY) - kPolygonInset);
         b2ChainShape chain;
         chain.CreateChain(points.data(), static_cast<int>(points.size()), points.front() + b2Vec2(1.0f, 0.0f),
                           points.back() - b2Vec2(1.0f, 0.0f));
@@ -160,21 +178,12 @@ void GameWorld::buildLevel()
         case BlockShape::Box:
             addBoxFixture(body, b.widthM, b.heightM, fixture);
             break;
-        case BlockShape::Circle: {
-            b2CircleShape circle;
-            circle.m_radius = hw;
-            fixture.shape = &circle;
-            body->CreateFixture(&fixture);
+        case BlockShape::Circle:
+            addCircleFixture(body, b.widthM / 2, fixture);
             break;
-        }
-        case BlockShape::Triangle: {
-            const b2Vec2 vertices[3] = {{-hw, -hh}, {hw, -hh}, {-hw, hh}};
-            b2PolygonShape triangle;
-            triangle.Set(vertices, 3);
-            fixture.shape = &triangle;
-            body->CreateFixture(&fixture);
+        case BlockShape::Triangle:
+            addPolygonFixture(body, {{-hw, -hh}, {hw, -hh}, {-hw, hh}}, fixture);
             break;
-        }
         }
         m_entities[static_cast<std::size_t>(index)].body = body;
     }
@@ -200,14 +209,11 @@ void GameWorld::buildLevel()
         def.angularDamping = 1.0f; // pigs roll to a stop instead of forever
         def.userData = userDataFor(index);
         b2Body* body = m_world->CreateBody(&def);
-        b2CircleShape circle;
-        circle.m_radius = static_cast<float>(type->radiusM);
         b2FixtureDef fixture;
-        fixture.shape = &circle;
         fixture.density = static_cast<float>(type->densityKgPerM2);
         fixture.friction = 0.6f;
         fixture.restitution = 0.2f;
-        body->CreateFixture(&fixture);
+        addCircleFixture(body, type->radiusM, fixture);
         m_entities[static_cast<std::size_t>(index)].body = body;
     }
 }
@@ -231,14 +237,12 @@ int GameWorld::launchBird(const BirdType& bird, const FlightModel& model, const 
     def.angularDamping = 0.8f;
     def.userData = userDataFor(m_birdIndex);
     b2Body* body = m_world->CreateBody(&def);
-    b2CircleShape circle;
-    circle.m_radius = static_cast<float>(bird.radiusM);
     b2FixtureDef fixture;
-    fixture.shape = &circle;
-    fixture.density = static_cast<float>(bird.massKg / (std::numbers::pi * bird.radiusM * bird.radiusM));
+    const double r = physicsCircleRadius(bird.radiusM);
+    fixture.density = static_cast<float>(bird.massKg / (std::numbers::pi * r * r)); // mass exactly the bird's
     fixture.friction = 0.6f;
     fixture.restitution = 0.3f;
-    body->CreateFixture(&fixture);
+    addCircleFixture(body, bird.radiusM, fixture);
     m_entities[static_cast<std::size_t>(m_birdIndex)].body = body;
 
     IntegratorSettings flightSettings;
@@ -418,7 +422,7 @@ std::optional<double> GameWorld::castCircle(double radiusM, const FlightState& a
     const b2Vec2 pa(static_cast<float>(a[0]), static_cast<float>(a[1]));
     const b2Vec2 pb(static_cast<float>(b[0]), static_cast<float>(b[1]));
     b2CircleShape circle;
-    circle.m_radius = static_cast<float>(radiusM);
+    circle.m_radius = physicsCircleRadius(radiusM);
 
     b2AABB box;
     const float margin = circle.m_radius + b2_polygonRadius + b2_linearSlop;
@@ -463,6 +467,23 @@ std::optional<double> GameWorld::castCircle(double radiusM, const FlightState& a
             if (!b2TestOverlap(fixture->GetAABB(child), box))
                 continue;
             input.proxyB.Set(shape, child);
+            // Box2D starts a contact in two ways, and the preview must see both: at the start of a step when
+            // the shapes' skins already overlap (b2Contact::Update), or by time of impact inside the step.
+            b2DistanceInput distanceInput;
+            distanceInput.proxyA = input.proxyA;
+            distanceInput.proxyB = input.proxyB;
+            distanceInput.transformA.Set(pa, 0.0f);
+            distanceInput.transformB = body->GetTransform();
+            distanceInput.useRadii = false;
+            b2SimplexCache cache;
+            cache.count = 0;
+            b2DistanceOutput distance;
+            b2Distance(&distance, &cache, &distanceInput);
+            if (distance.distance < input.proxyA.m_radius + input.proxyB.m_radius)
+            {
+                earliest = 0.0;
+                continue;
+            }
             b2TOIOutput output;
             b2TimeOfImpact(&output, &input);
             if (output.state == b2TOIOutput::e_touching && (!earliest || output.t < *earliest))

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <string>
+
+namespace abalike::app
+{
+
+/// Options shared by every `abalike bench NAME` suite.
+struct BenchOptions
+{
+    std::string outDir = "bench-out"; ///< where the suite writes its .csv/.md/.png files
+    bool quick = false;               ///< fewer repetitions (used by ctest smoke runs)
+};
+
+// Each suite prints its table, writes its files into outDir and returns the exit code.
+int runAccuracyBench(const BenchOptions& options);  ///< integration error against run time (flight issue)
+int runStabilityBench(const BenchOptions& options); ///< stiff and extreme cases (flight issue)
+int runReferenceBench(const BenchOptions& options); ///< predicted vs actual first contact on the reference shots
+int runPerfBench(const BenchOptions& options);      ///< world step times and headless speed (world issue)
+
+} // namespace abalike::app

@@ -1,0 +1,60 @@
+#include "bench/BenchSuite.hpp"
+#include "cli/Commands.hpp"
+#include "cli/UsageError.hpp"
+
+#include <filesystem>
+#include <memory>
+
+namespace abalike::app
+{
+
+namespace
+{
+
+struct BenchArgs
+{
+    BenchOptions options;
+};
+
+/// Creates the output folder, or says clearly why it cannot.
+void prepareOutDir(const std::string& dir)
+{
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir))
+        throw UsageError("--out: cannot create folder " + dir + (ec ? ": " + ec.message() : ""));
+}
+
+} // namespace
+
+CommandRunner addBenchCommand(CLI::App& app)
+{
+    auto args = std::make_shared<BenchArgs>();
+    auto chosen = std::make_shared<int (*)(const BenchOptions&)>(nullptr);
+    CLI::App* cmd = app.add_subcommand("bench", "Measure speed and accuracy; writes CSV and Markdown reports");
+    cmd->require_subcommand(1);
+    const struct
+    {
+        const char* name;
+        const char* help;
+        int (*run)(const BenchOptions&);
+    } suites[] = {
+        {"accuracy", "integration error against run time for every stepper", runAccuracyBench},
+        {"stability", "stiff and extreme flights: what plain RK4 does and what the guard does", runStabilityBench},
+        {"reference", "predicted vs actual first contact on the reference shots", runReferenceBench},
+        {"perf", "world step times per level, overhead against raw Box2D, headless speed", runPerfBench},
+    };
+    for (const auto& suite : suites)
+    {
+        CLI::App* sub = cmd->add_subcommand(suite.name, suite.help);
+        sub->add_option("--out", args->options.outDir, "output folder (default bench-out)");
+        sub->add_flag("--quick", args->options.quick, "fewer repetitions, for smoke tests");
+        sub->callback([chosen, run = suite.run] { *chosen = run; });
+    }
+    return [args, chosen] {
+        prepareOutDir(args->options.outDir);
+        return (*chosen)(args->options);
+    };
+}
+
+} // namespace abalike::app
