@@ -4,6 +4,7 @@
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/world/Catalog.hpp>
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -82,6 +83,26 @@ int nestingDepth(std::string_view text)
             --depth;
     }
     return deepest;
+}
+
+/// nlohmann reports the byte after the offending token; editors want its first character.
+std::size_t tokenStart(std::string_view text, std::size_t byteAfter)
+{
+    std::size_t end = std::min(byteAfter, text.size());
+    if (end == 0)
+        return 0;
+    std::size_t i = end - 1;
+    if (text[i] == '"')
+    {
+        // Back to the opening quote of this string.
+        while (i > 0 && !(text[i - 1] == '"' && (i < 2 || text[i - 2] != '\\')))
+            --i;
+        return i > 0 ? i - 1 : 0;
+    }
+    while (i > 0 && (std::isalnum(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '.' ||
+                     text[i - 1] == '-' || text[i - 1] == '+'))
+        --i;
+    return i;
 }
 
 void readBlocks(LevelReader& r, const json& root, LevelDef& level, const Catalog& catalog)
@@ -288,7 +309,7 @@ LevelDef parseLevel(std::string_view text, const std::string& fileName, const Ca
     }
     catch (const json::parse_error& e)
     {
-        const auto [line, column] = JsonLocator::lineColumn(text, e.byte > 0 ? e.byte - 1 : 0);
+        const auto [line, column] = JsonLocator::lineColumn(text, tokenStart(text, e.byte));
         std::string what = e.what();
         // nlohmann prefixes "[json.exception.parse_error.101] parse error at line 1, column 2: "; keep the reason.
         if (const auto colon = what.find(": "); colon != std::string::npos)
