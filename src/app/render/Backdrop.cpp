@@ -13,8 +13,7 @@ void Backdrop::paintSky(Mesh& mesh, const Camera& camera, float groundY)
 {
     const sf::FloatRect view = camera.visibleWorld();
     const float top = view.top + view.height;
-    mesh.addGradientRect({view.left, groundY}, {view.left + view.width, top}, palette::kSkyBottom,
-                         palette::kSkyTop);
+    mesh.addGradientRect({view.left, groundY}, {view.left + view.width, top}, palette::kSkyBottom, palette::kSkyTop);
 
     // Clouds at fixed places across the view, each a cluster of puffs.
     DetailRandom random(7);
@@ -53,8 +52,8 @@ void Backdrop::paintGround(Mesh& mesh, const Camera& camera, float groundY)
     // Blades along the top edge.
     const float blade = std::max(0.12f, 4.0f * pixelM);
     for (float x = left; x < right; x += blade * 0.9f)
-        mesh.addTriangle({x, groundY - 0.01f}, {x + 0.5f * blade, groundY + 0.6f * blade},
-                         {x + blade, groundY - 0.01f}, palette::kGrass);
+        mesh.addTriangle({x, groundY - 0.01f}, {x + 0.5f * blade, groundY + 0.6f * blade}, {x + blade, groundY - 0.01f},
+                         palette::kGrass);
 }
 
 } // namespace abalike::app

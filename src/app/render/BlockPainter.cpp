@@ -30,14 +30,6 @@ sf::Vector2f interiorPoint(std::span<const sf::Vector2f> polygon, DetailRandom& 
     return sum / total;
 }
 
-sf::Vector2f centroid(std::span<const sf::Vector2f> polygon)
-{
-    sf::Vector2f sum;
-    for (const sf::Vector2f& p : polygon)
-        sum += p;
-    return sum / static_cast<float>(polygon.size());
-}
-
 /// Lines along the long side of the block, broken here and there like grain.
 void addGrain(Mesh& mesh, std::span<const sf::Vector2f> inner, const MaterialColours& colours, const BlockLook& look,
               DetailRandom& random)
@@ -50,8 +42,8 @@ void addGrain(Mesh& mesh, std::span<const sf::Vector2f> inner, const MaterialCol
     for (int i = 0; i < lines; ++i)
     {
         const float f = (static_cast<float>(i) + 0.5f + random.range(-0.2f, 0.2f)) / static_cast<float>(lines);
-        sf::Vector2f a = alongX ? sf::Vector2f(box.left, box.top + f * box.height)
-                                : sf::Vector2f(box.left + f * box.width, box.top);
+        sf::Vector2f a =
+            alongX ? sf::Vector2f(box.left, box.top + f * box.height) : sf::Vector2f(box.left + f * box.width, box.top);
         sf::Vector2f b = alongX ? sf::Vector2f(box.left + box.width, a.y) : sf::Vector2f(a.x, box.top + box.height);
         if (!convex::clipSegment(inner, a, b))
             continue;
@@ -73,8 +65,8 @@ void addGlint(Mesh& mesh, std::span<const sf::Vector2f> inner, const MaterialCol
     {
         sf::Vector2f a = alongX ? sf::Vector2f(box.left + from * box.width, box.top + across * box.height)
                                 : sf::Vector2f(box.left + across * box.width, box.top + from * box.height);
-        sf::Vector2f b = alongX ? sf::Vector2f(box.left + to * box.width, a.y)
-                                : sf::Vector2f(a.x, box.top + to * box.height);
+        sf::Vector2f b =
+            alongX ? sf::Vector2f(box.left + to * box.width, a.y) : sf::Vector2f(a.x, box.top + to * box.height);
         if (convex::clipSegment(inner, a, b))
             mesh.addLine(a, b, width, colours.highlight);
     };
@@ -84,8 +76,8 @@ void addGlint(Mesh& mesh, std::span<const sf::Vector2f> inner, const MaterialCol
 }
 
 /// Speckles of two shades, placed by rejection inside the polygon.
-void addSpeckles(Mesh& mesh, std::span<const sf::Vector2f> inner, const MaterialColours& colours,
-                 const BlockLook& look, DetailRandom& random)
+void addSpeckles(Mesh& mesh, std::span<const sf::Vector2f> inner, const MaterialColours& colours, const BlockLook& look,
+                 DetailRandom& random)
 {
     const float area = convex::signedArea(inner);
     const int count = std::clamp(static_cast<int>(area / 0.025f), 3, 80);
@@ -101,8 +93,7 @@ void addSpeckles(Mesh& mesh, std::span<const sf::Vector2f> inner, const Material
 }
 
 /// Cracks running from the edge into the block; all points stay inside because they are convex combinations.
-void addCracks(Mesh& mesh, std::span<const sf::Vector2f> inner, int count, const BlockLook& look,
-               DetailRandom& random)
+void addCracks(Mesh& mesh, std::span<const sf::Vector2f> inner, int count, const BlockLook& look, DetailRandom& random)
 {
     const float width = std::max(0.025f, 1.3f * look.pixelM);
     const std::size_t n = inner.size();

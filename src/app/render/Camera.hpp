@@ -1,11 +1,10 @@
 #pragma once
 
-#include <abalike/level/LevelDef.hpp>
-#include <abalike/world/Catalog.hpp>
-
 #include <SFML/Graphics/Rect.hpp>
 #include <SFML/Graphics/Transform.hpp>
 #include <SFML/System/Vector2.hpp>
+#include <abalike/level/LevelDef.hpp>
+#include <abalike/world/Catalog.hpp>
 
 namespace abalike::app
 {

@@ -77,6 +77,16 @@ void CharacterPainter::paintBird(Mesh& mesh, std::string_view type, float r, flo
     mesh.addLine({0.44f * r, 0.36f * r}, {0.86f * r, 0.52f * r}, brow, colours.brow);
 }
 
+void CharacterPainter::paintEgg(Mesh& mesh, float r, float pixelM)
+{
+    const float stroke = std::max(0.06f * r, 1.5f * pixelM);
+    mesh.addEllipse({0.0f, 0.0f}, 0.86f * r, 1.08f * r, palette::kEggOutline, 24);
+    mesh.addEllipse({0.0f, 0.0f}, 0.86f * r - stroke, 1.08f * r - stroke, palette::kEgg, 24);
+    mesh.addEllipse({-0.3f * r, 0.4f * r}, 0.14f * r, 0.22f * r, sf::Color(255, 255, 255), 12);
+    mesh.addCircle({0.25f * r, -0.2f * r}, 0.08f * r, palette::kEggOutline, 8);
+    mesh.addCircle({-0.1f * r, -0.5f * r}, 0.06f * r, palette::kEggOutline, 8);
+}
+
 void CharacterPainter::paintPig(Mesh& mesh, float r, bool helmet, float healthFraction, float pixelM)
 {
     const float stroke = std::max(0.06f * r, 1.5f * pixelM);

@@ -14,6 +14,8 @@ class CharacterPainter
 public:
     /// A bird of the given type (red, blue, yellow, black, white) with eyes, angry brows, beak and tail.
     static void paintBird(Mesh& mesh, std::string_view type, float radius, float pixelM);
+    /// The white bird's egg: a speckled cream oval the size of its body.
+    static void paintEgg(Mesh& mesh, float radius, float pixelM);
     /// A pig; a helmet pig wears a grey cap; bruises show below 66% and 33% health.
     static void paintPig(Mesh& mesh, float radius, bool helmet, float healthFraction, float pixelM);
 };

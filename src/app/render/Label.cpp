@@ -1,7 +1,6 @@
 #include "render/Label.hpp"
 
 #include <SFML/Graphics/Text.hpp>
-
 #include <algorithm>
 #include <cmath>
 

@@ -3,7 +3,6 @@
 #include <SFML/Graphics/Font.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <SFML/System/String.hpp>
-
 #include <string_view>
 
 namespace abalike::app

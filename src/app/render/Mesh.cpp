@@ -20,9 +20,7 @@ sf::Vector2f unitNormal(sf::Vector2f a, sf::Vector2f b)
 }
 } // namespace
 
-Mesh::Mesh() : m_vertices(sf::Triangles)
-{
-}
+Mesh::Mesh() : m_vertices(sf::Triangles) {}
 
 void Mesh::clear()
 {

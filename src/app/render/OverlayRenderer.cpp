@@ -1,12 +1,15 @@
 #include "render/OverlayRenderer.hpp"
 
+#include "render/Hud.hpp"
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
 #include "render/TextFormat.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
-
 #include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <numbers>
 #include <vector>
 
 namespace abalike::app
@@ -32,13 +35,26 @@ std::vector<sf::Vector2f> worldPoints(std::span<const std::array<double, 3>> pat
 }
 } // namespace
 
-void OverlayRenderer::addDots(const Camera& camera, std::span<const sf::Vector2f> points, float radius,
-                              float opacity)
+void OverlayRenderer::addDots(const Camera& camera, std::span<const sf::Vector2f> points, float radius, float opacity)
 {
+    std::vector<sf::Vector2f> screen;
+    screen.reserve(points.size());
     for (const sf::Vector2f& point : points)
-        m_mesh.addCircle(camera.toScreen(point), radius + 1.5f, faded(palette::kPreviewOutline, opacity), 10);
-    for (const sf::Vector2f& point : points)
-        m_mesh.addCircle(camera.toScreen(point), radius, faded(palette::kPreviewDot, opacity), 10);
+        screen.push_back(camera.toScreen(point));
+    // Slow or zoomed-out flights put the steps close together: shrink the dots so they stay dots.
+    std::vector<float> gaps;
+    for (std::size_t i = 1; i < screen.size(); ++i)
+        gaps.push_back(std::hypot(screen[i].x - screen[i - 1].x, screen[i].y - screen[i - 1].y));
+    if (!gaps.empty())
+    {
+        std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
+        radius = std::clamp(0.3f * gaps[gaps.size() / 2], 1.5f, radius);
+    }
+    const float outline = std::min(1.5f, 0.5f * radius);
+    for (const sf::Vector2f& point : screen)
+        m_mesh.addCircle(point, radius + outline, faded(palette::kPreviewOutline, opacity), 10);
+    for (const sf::Vector2f& point : screen)
+        m_mesh.addCircle(point, radius, faded(palette::kPreviewDot, opacity), 10);
 }
 
 void OverlayRenderer::addPredictedContact(const Camera& camera, const ContactPoint& contact, float opacity)
@@ -46,6 +62,47 @@ void OverlayRenderer::addPredictedContact(const Camera& camera, const ContactPoi
     const sf::Vector2f at = camera.toScreen({static_cast<float>(contact.x), static_cast<float>(contact.y)});
     m_mesh.addRing(at, kContactRingPx, 5.0f, faded(palette::kPreviewOutline, opacity), 28);
     m_mesh.addRing(at, kContactRingPx, 2.5f, faded(palette::kPreviewDot, opacity), 28);
+}
+
+void OverlayRenderer::addAbility(const Camera& camera, const AbilityUse& ability, float opacity)
+{
+    const sf::Color colour = faded(palette::kAbility, opacity);
+    const sf::Color dark = faded(palette::kPreviewOutline, opacity);
+    const sf::Vector2f at = camera.toScreen({static_cast<float>(ability.x), static_cast<float>(ability.y)});
+    constexpr int kRays = 8;
+    for (int i = 0; i < kRays; ++i)
+    {
+        const float angle = 2.0f * std::numbers::pi_v<float> * static_cast<float>(i) / kRays;
+        const sf::Vector2f direction(std::cos(angle), std::sin(angle));
+        m_mesh.addLine(at + direction * 6.0f, at + direction * 13.0f, 4.0f, dark);
+        m_mesh.addLine(at + direction * 6.0f, at + direction * 13.0f, 2.0f, colour);
+    }
+
+    // Impulse arrows share one scale: the largest is 60 px long.
+    double largest = 0.0;
+    for (const AbilityImpulse& impulse : ability.impulses)
+        largest = std::max(largest, std::hypot(impulse.impulseX, impulse.impulseY));
+    if (largest <= 0.0)
+        return;
+    const double pixelsPerNs = 60.0 / largest;
+    for (const AbilityImpulse& impulse : ability.impulses)
+    {
+        const sf::Vector2f from = camera.toScreen({static_cast<float>(impulse.x), static_cast<float>(impulse.y)});
+        // Screen y points down, so the impulse's y flips.
+        const sf::Vector2f arrow(static_cast<float>(impulse.impulseX * pixelsPerNs),
+                                 static_cast<float>(-impulse.impulseY * pixelsPerNs));
+        const float length = std::hypot(arrow.x, arrow.y);
+        if (length < 4.0f)
+            continue;
+        const sf::Vector2f unit = arrow / length;
+        const sf::Vector2f side(-unit.y, unit.x);
+        const sf::Vector2f tip = from + arrow;
+        const float head = std::min(8.0f, 0.4f * length);
+        m_mesh.addLine(from, tip - unit * head, 4.0f, dark);
+        m_mesh.addLine(from, tip - unit * head, 2.0f, colour);
+        m_mesh.addTriangle(tip, tip - unit * head + side * (0.6f * head), tip - unit * head - side * (0.6f * head),
+                           colour);
+    }
 }
 
 void OverlayRenderer::drawPreview(sf::RenderTarget& target, const Camera& camera, const PredictedFlight& preview)
@@ -61,23 +118,33 @@ void OverlayRenderer::drawPreview(sf::RenderTarget& target, const Camera& camera
     m_mesh.draw(target);
 }
 
-void OverlayRenderer::drawShot(sf::RenderTarget& target, const Camera& camera, const ShotOverlay& shot, float opacity)
+void OverlayRenderer::drawShotPaths(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot,
+                                    float opacity)
 {
     m_mesh.clear();
-    addDots(camera, worldPoints(shot.predictedPath), kDotRadiusPx - 1.0f, 0.55f * opacity);
-
+    // The flown path underneath, the prediction's dots on top: where they agree, the dots sit on the line.
     std::vector<sf::Vector2f> actual = worldPoints(shot.actualPath);
     for (sf::Vector2f& point : actual)
         point = camera.toScreen(point);
-    m_mesh.addPolyline(actual, 5.5f, faded(sf::Color(90, 40, 0), 0.6f * opacity));
-    m_mesh.addPolyline(actual, 3.0f, faded(palette::kActualPath, opacity));
+    m_mesh.addPolyline(actual, 6.0f, faded(sf::Color(90, 40, 0), 0.5f * opacity));
+    m_mesh.addPolyline(actual, 4.0f, faded(palette::kActualPath, opacity));
+    addDots(camera, worldPoints(shot.predictedPath), kDotRadiusPx - 1.5f, 0.6f * opacity);
+    m_mesh.draw(target);
+}
 
+void OverlayRenderer::drawShotMarkers(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot,
+                                      float opacity)
+{
+    m_mesh.clear();
+    if (shot.ability)
+        addAbility(camera, *shot.ability, opacity);
     if (shot.predictedContact)
         addPredictedContact(camera, *shot.predictedContact, opacity);
     std::optional<sf::Vector2f> actualAt;
     if (shot.actualContact)
     {
-        actualAt = camera.toScreen({static_cast<float>(shot.actualContact->x), static_cast<float>(shot.actualContact->y)});
+        actualAt =
+            camera.toScreen({static_cast<float>(shot.actualContact->x), static_cast<float>(shot.actualContact->y)});
         constexpr float kArm = 6.0f;
         for (const float width : {5.0f, 3.0f})
         {
@@ -92,12 +159,12 @@ void OverlayRenderer::drawShot(sf::RenderTarget& target, const Camera& camera, c
 
     if (m_font == nullptr || !shot.deviationM || !actualAt)
         return;
-    // The label sits above and left of the contact, kept inside the window.
-    const unsigned size = std::max(12u, camera.windowSize().y / 48u);
+    // The label sits above and right of the contact, where the incoming path is not, kept inside the window.
+    const auto size = static_cast<unsigned>(std::max(9.0f, std::round(16.0f * hudScale(camera.windowSize()))));
     const sf::String text = utf8("predicted vs actual: " + formatDistance(*shot.deviationM));
     const sf::Vector2f extent = measureText(*m_font, text, size);
     const float pad = 0.4f * static_cast<float>(size);
-    sf::Vector2f at = *actualAt + sf::Vector2f(-extent.x - 2.0f * pad - 14.0f, -extent.y - 2.0f * pad - 20.0f);
+    sf::Vector2f at = *actualAt + sf::Vector2f(14.0f, -extent.y - 2.0f * pad - 36.0f);
     const sf::Vector2f window(camera.windowSize());
     at.x = std::clamp(at.x, 4.0f, std::max(4.0f, window.x - extent.x - 2.0f * pad - 4.0f));
     at.y = std::clamp(at.y, 4.0f, std::max(4.0f, window.y - extent.y - 2.0f * pad - 4.0f));

@@ -3,30 +3,17 @@
 #include "render/Camera.hpp"
 #include "render/Mesh.hpp"
 
-#include <abalike/game/GameSession.hpp>
-
 #include <SFML/Graphics/Font.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
-
-#include <array>
-#include <optional>
+#include <abalike/game/GameSession.hpp>
 #include <span>
 
 namespace abalike::app
 {
 
-/// What the overlay shows of one fired shot; the paths may still be growing while the bird flies.
-struct ShotOverlay
-{
-    std::span<const std::array<double, 3>> predictedPath; ///< (t, x, y)
-    std::span<const std::array<double, 3>> actualPath;    ///< (t, x, y)
-    std::optional<ContactPoint> predictedContact;
-    std::optional<ContactPoint> actualContact;
-    std::optional<double> deviationM;
-};
-
 /// Draws prediction against reality: the RK4 preview as dots, the flown path as a solid orange line, rings
-/// and crosses where each says the first contact is, and how far apart they are.
+/// and crosses where each says the first contact is, and how far apart they are; where an ability was used and
+/// the impulses it applied.
 class OverlayRenderer
 {
 public:
@@ -35,12 +22,16 @@ public:
 
     /// The preview of the current aim: a dot per step and a ring at the predicted contact.
     void drawPreview(sf::RenderTarget& target, const Camera& camera, const PredictedFlight& preview);
-    /// A fired shot, at the given opacity (older shots fade).
-    void drawShot(sf::RenderTarget& target, const Camera& camera, const ShotOverlay& shot, float opacity);
+    /// The paths of a fired shot, at the given opacity (older shots fade); drawn behind blocks and birds.
+    void drawShotPaths(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot, float opacity);
+    /// The contact markers and the deviation label of a fired shot; drawn over everything.
+    void drawShotMarkers(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot, float opacity);
 
 private:
     void addDots(const Camera& camera, std::span<const sf::Vector2f> worldPoints, float radius, float opacity);
     void addPredictedContact(const Camera& camera, const ContactPoint& contact, float opacity);
+    /// A burst where the ability was used and an arrow per impulse it applied.
+    void addAbility(const Camera& camera, const AbilityUse& ability, float opacity);
 
     const sf::Font* m_font;
     Mesh m_mesh;

@@ -32,7 +32,9 @@ BirdColours birdColours(std::string_view bird)
 sf::Color darken(sf::Color colour, float factor)
 {
     const auto scale = [factor](sf::Uint8 c)
-    { return static_cast<sf::Uint8>(std::clamp(static_cast<float>(c) * factor, 0.0f, 255.0f)); };
+    {
+        return static_cast<sf::Uint8>(std::clamp(static_cast<float>(c) * factor, 0.0f, 255.0f));
+    };
     return {scale(colour.r), scale(colour.g), scale(colour.b), colour.a};
 }
 

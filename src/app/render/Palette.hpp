@@ -1,7 +1,6 @@
 #pragma once
 
 #include <SFML/Graphics/Color.hpp>
-
 #include <string_view>
 
 namespace abalike::app
@@ -53,6 +52,9 @@ inline const sf::Color kEyeWhite(255, 255, 255);
 inline const sf::Color kPupil(20, 20, 24);
 inline const sf::Color kBeak(250, 160, 30);
 inline const sf::Color kBeakDark(214, 120, 20);
+inline const sf::Color kEgg(250, 244, 226);
+inline const sf::Color kEggOutline(178, 166, 140);
+inline const sf::Color kAbility(255, 230, 60);
 
 inline const sf::Color kPreviewDot(255, 255, 255);
 inline const sf::Color kPreviewOutline(30, 34, 48);

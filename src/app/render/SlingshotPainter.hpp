@@ -10,8 +10,8 @@ namespace abalike::app
 /// Where the slingshot stands and what it holds, in world metres.
 struct SlingshotPose
 {
-    sf::Vector2f base;                     ///< foot of the trunk on the ground
-    sf::Vector2f pouch;                    ///< where the bird leaves the slingshot
+    sf::Vector2f base;                      ///< foot of the trunk on the ground
+    sf::Vector2f pouch;                     ///< where the bird leaves the slingshot
     std::optional<sf::Vector2f> loadedBird; ///< centre of the bird in the pouch (pulled back while aiming)
     float birdRadius = 0.25f;
 };

@@ -16,10 +16,15 @@ std::string formatFixed(double value, int decimals)
 
 std::string formatPoints(int points)
 {
-    std::string digits = std::to_string(std::abs(points));
-    for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3)
-        digits.insert(static_cast<std::size_t>(i), ",");
-    return points < 0 ? "-" + digits : digits;
+    const std::string digits = std::to_string(std::abs(static_cast<long long>(points)));
+    std::string grouped = points < 0 ? "-" : "";
+    for (std::size_t i = 0; i < digits.size(); ++i)
+    {
+        if (i > 0 && (digits.size() - i) % 3 == 0)
+            grouped += ',';
+        grouped += digits[i];
+    }
+    return grouped;
 }
 
 std::string formatDistance(double metres)

@@ -7,9 +7,8 @@
 #include "render/Palette.hpp"
 #include "render/SlingshotPainter.hpp"
 
-#include <box2d/box2d.h>
-
 #include <algorithm>
+#include <box2d/box2d.h>
 #include <numbers>
 #include <vector>
 
@@ -19,7 +18,7 @@ namespace abalike::app
 namespace
 {
 constexpr float kRadToDeg = 180.0f / std::numbers::pi_v<float>;
-constexpr float kWaitingGapM = 0.15f;
+constexpr float kWaitingGapM = 0.1f;
 
 sf::Transform bodyTransform(const b2Body& body)
 {
@@ -58,22 +57,28 @@ std::vector<sf::Vector2f> polygonPoints(const b2PolygonShape& shape)
 }
 } // namespace
 
-void WorldRenderer::draw(sf::RenderTarget& target, const Camera& camera, const GameSession& session,
-                         sf::Vector2f pullOffset)
+void WorldRenderer::drawBackground(sf::RenderTarget& target, const Camera& camera, const GameSession& session)
+{
+    const auto groundY = static_cast<float>(session.level().groundY);
+    m_mesh.clear();
+    Backdrop::paintSky(m_mesh, camera, groundY);
+    Backdrop::paintGround(m_mesh, camera, groundY);
+    for (const Entity& entity : session.world().entities())
+    {
+        if (entity.alive && entity.body != nullptr && entity.kind == EntityKind::Terrain)
+            addTerrain(entity, camera.metresPerPixel());
+    }
+    m_mesh.draw(target, camera.transform());
+}
+
+void WorldRenderer::drawForeground(sf::RenderTarget& target, const Camera& camera, const GameSession& session,
+                                   sf::Vector2f pullOffset)
 {
     const LevelDef& level = session.level();
     const float pixelM = camera.metresPerPixel();
     const auto groundY = static_cast<float>(level.groundY);
     const std::vector<Entity>& entities = session.world().entities();
     m_mesh.clear();
-
-    Backdrop::paintSky(m_mesh, camera, groundY);
-    Backdrop::paintGround(m_mesh, camera, groundY);
-    for (const Entity& entity : entities)
-    {
-        if (entity.alive && entity.body != nullptr && entity.kind == EntityKind::Terrain)
-            addTerrain(entity, pixelM);
-    }
 
     // The slingshot and the bird it holds.
     const std::array<double, 2> pouch = session.launchPoint();
@@ -88,8 +93,8 @@ void WorldRenderer::draw(sf::RenderTarget& target, const Camera& camera, const G
         seat.y = std::max(seat.y, groundY + pose.birdRadius);
         pose.loadedBird = seat;
     }
-    SlingshotPainter::paintBack(m_mesh, pose, pixelM);
     addWaitingBirds(session, pixelM);
+    SlingshotPainter::paintBack(m_mesh, pose, pixelM);
     if (loaded != nullptr)
     {
         m_mesh.setLocalTransform(placeAt(*pose.loadedBird));
@@ -172,7 +177,10 @@ void WorldRenderer::addPig(const Entity& entity, const Catalog& catalog, float p
 void WorldRenderer::addBird(const Entity& entity, float pixelM)
 {
     m_mesh.setLocalTransform(bodyTransform(*entity.body));
-    CharacterPainter::paintBird(m_mesh, entity.typeName, static_cast<float>(0.5 * entity.widthM), pixelM);
+    if (entity.typeName == "egg")
+        CharacterPainter::paintEgg(m_mesh, static_cast<float>(0.5 * entity.widthM), pixelM);
+    else
+        CharacterPainter::paintBird(m_mesh, entity.typeName, static_cast<float>(0.5 * entity.widthM), pixelM);
     m_mesh.resetLocalTransform();
 }
 
@@ -182,7 +190,7 @@ void WorldRenderer::addWaitingBirds(const GameSession& session, float pixelM)
     // the one in the pouch.
     const LevelDef& level = session.level();
     const int first = session.birdsUsed() + (session.phase() == Phase::Aiming ? 1 : 0);
-    float x = static_cast<float>(level.slingshot.x) - 0.9f;
+    float x = static_cast<float>(level.slingshot.x) - 1.1f;
     for (int i = first; i < static_cast<int>(level.birds.size()); ++i)
     {
         const std::string& type = level.birds[static_cast<std::size_t>(i)];
@@ -190,7 +198,7 @@ void WorldRenderer::addWaitingBirds(const GameSession& session, float pixelM)
         x -= radius;
         m_mesh.setLocalTransform(placeAt({x, static_cast<float>(level.groundY) + radius}));
         CharacterPainter::paintBird(m_mesh, type, radius, pixelM);
-        x -= radius + kWaitingGapM + 0.35f * radius; // room for the tail feathers
+        x -= radius + kWaitingGapM + 0.3f * radius; // room for the tail feathers
     }
     m_mesh.resetLocalTransform();
 }

@@ -3,9 +3,8 @@
 #include "render/Camera.hpp"
 #include "render/Mesh.hpp"
 
-#include <abalike/game/GameSession.hpp>
-
 #include <SFML/Graphics/RenderTarget.hpp>
+#include <abalike/game/GameSession.hpp>
 
 namespace abalike::app
 {
@@ -15,8 +14,12 @@ namespace abalike::app
 class WorldRenderer
 {
 public:
-    /// pullOffset: where the loaded bird sits relative to the pouch while aiming (world metres).
-    void draw(sf::RenderTarget& target, const Camera& camera, const GameSession& session, sf::Vector2f pullOffset);
+    /// The scenery: sky, ground and terrain. Shot paths go between this and the foreground.
+    void drawBackground(sf::RenderTarget& target, const Camera& camera, const GameSession& session);
+    /// Everything that moves or can be hit: slingshot and birds, blocks, pigs. pullOffset is where the loaded
+    /// bird sits relative to the pouch while aiming (world metres).
+    void drawForeground(sf::RenderTarget& target, const Camera& camera, const GameSession& session,
+                        sf::Vector2f pullOffset);
 
 private:
     void addTerrain(const Entity& entity, float pixelM);

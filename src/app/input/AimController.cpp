@@ -1,0 +1,132 @@
+#include "input/AimController.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace abalike::app
+{
+
+namespace
+{
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+constexpr double kAngleStepDeg = 1.0;
+constexpr double kPowerStep = 0.02;
+constexpr float kGrabRadiusM = 1.0f;
+constexpr float kGrabRadiusPx = 36.0f;
+
+float distance(sf::Vector2f a, sf::Vector2f b)
+{
+    return std::hypot(a.x - b.x, a.y - b.y);
+}
+} // namespace
+
+void AimController::reset()
+{
+    m_angleDeg = kDefaultAngleDeg;
+    m_power = kDefaultPower;
+    m_dragging = false;
+    m_dragMoved = false;
+}
+
+void AimController::set(double angleDeg, double powerFraction)
+{
+    m_angleDeg = angleDeg;
+    m_power = std::clamp(powerFraction, 0.0, 1.0);
+}
+
+sf::Vector2f AimController::pullOffset() const
+{
+    const double pull = m_power * kMaxPullM;
+    return {static_cast<float>(-pull * std::cos(m_angleDeg * kDegToRad)),
+            static_cast<float>(-pull * std::sin(m_angleDeg * kDegToRad))};
+}
+
+bool AimController::handleEvent(const sf::Event& event, const Camera& camera, sf::Vector2f pouch)
+{
+    switch (event.type)
+    {
+    case sf::Event::MouseButtonPressed:
+    {
+        if (event.mouseButton.button != sf::Mouse::Left)
+            return false;
+        const sf::Vector2f world =
+            camera.toWorld({static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y)});
+        const float grab = std::max(kGrabRadiusM, kGrabRadiusPx * camera.metresPerPixel());
+        if (distance(world, pouch) <= grab || distance(world, pouch + pullOffset()) <= grab)
+        {
+            m_dragging = true;
+            m_dragMoved = false;
+            m_angleBeforeDrag = m_angleDeg;
+            m_powerBeforeDrag = m_power;
+        }
+        return false;
+    }
+    case sf::Event::MouseMoved:
+        if (m_dragging)
+        {
+            m_dragMoved = true;
+            aimFromPointer(
+                camera.toWorld({static_cast<float>(event.mouseMove.x), static_cast<float>(event.mouseMove.y)}), pouch);
+        }
+        return false;
+    case sf::Event::MouseButtonReleased:
+    {
+        if (event.mouseButton.button != sf::Mouse::Left || !m_dragging)
+            return false;
+        m_dragging = false;
+        if (m_dragMoved && m_power * kMaxPullM >= kMinPullM)
+            return true;
+        // A click or a tiny pull: keep the aim the player had.
+        m_angleDeg = m_angleBeforeDrag;
+        m_power = m_powerBeforeDrag;
+        return false;
+    }
+    case sf::Event::KeyPressed:
+        return handleKey(event.key.code);
+    default:
+        return false;
+    }
+}
+
+bool AimController::handleKey(sf::Keyboard::Key key)
+{
+    if (m_dragging)
+        return false;
+    switch (key)
+    {
+    case sf::Keyboard::Up:
+        m_angleDeg = std::min(m_angleDeg + kAngleStepDeg, 90.0);
+        return false;
+    case sf::Keyboard::Down:
+        m_angleDeg = std::max(m_angleDeg - kAngleStepDeg, -90.0);
+        return false;
+    case sf::Keyboard::Right:
+        // Snap to the 2% grid so repeated presses read as round numbers.
+        m_power = std::min(std::round(m_power / kPowerStep) * kPowerStep + kPowerStep, 1.0);
+        return false;
+    case sf::Keyboard::Left:
+        m_power = std::max(std::round(m_power / kPowerStep) * kPowerStep - kPowerStep, kPowerStep);
+        return false;
+    case sf::Keyboard::Space:
+        return m_power * kMaxPullM >= kMinPullM;
+    default:
+        return false;
+    }
+}
+
+void AimController::aimFromPointer(sf::Vector2f world, sf::Vector2f pouch)
+{
+    // The launch goes opposite to the drag: from the pointer through the pouch.
+    const sf::Vector2f pull = pouch - world;
+    const double length = std::hypot(pull.x, pull.y);
+    if (length < 1e-3)
+    {
+        m_power = 0.0;
+        return;
+    }
+    m_angleDeg = std::atan2(pull.y, pull.x) / kDegToRad;
+    m_power = std::min(length, kMaxPullM) / kMaxPullM;
+}
+
+} // namespace abalike::app

@@ -1,0 +1,50 @@
+#pragma once
+
+#include "render/Camera.hpp"
+
+#include <SFML/Window/Event.hpp>
+
+namespace abalike::app
+{
+
+/// The player's aim: an angle and a power (fraction of the slingshot's maximum force), set by dragging the bird
+/// back with the mouse or with the arrow keys. Both edit the same state, so the bird, the preview and the
+/// readout always agree.
+class AimController
+{
+public:
+    static constexpr double kMaxPullM = 2.0;  ///< a full pull: the bird this far behind the pouch is 100% power
+    static constexpr double kMinPullM = 0.25; ///< shorter drags are taken as a change of mind, not a shot
+    static constexpr double kDefaultAngleDeg = 45.0;
+    static constexpr double kDefaultPower = 0.5;
+
+    AimController() { reset(); }
+
+    /// Back to 45 degrees at 50% power, not dragging.
+    void reset();
+    /// Sets the aim directly (scripted shots); power is clamped to 0..1.
+    void set(double angleDeg, double powerFraction);
+
+    /// Handles mouse and keyboard input while a bird is ready; `pouch` is where the bird leaves the slingshot.
+    /// Returns true when the player let go of a drag or pressed Space: launch with the current aim.
+    bool handleEvent(const sf::Event& event, const Camera& camera, sf::Vector2f pouch);
+
+    double angleDeg() const { return m_angleDeg; }
+    double powerFraction() const { return m_power; }
+    bool dragging() const { return m_dragging; }
+    /// Where the bird sits relative to the pouch: pulled back against the launch direction by the power.
+    sf::Vector2f pullOffset() const;
+
+private:
+    bool handleKey(sf::Keyboard::Key key);
+    void aimFromPointer(sf::Vector2f world, sf::Vector2f pouch);
+
+    double m_angleDeg = kDefaultAngleDeg;
+    double m_power = kDefaultPower;
+    bool m_dragging = false;
+    bool m_dragMoved = false;
+    double m_angleBeforeDrag = kDefaultAngleDeg;
+    double m_powerBeforeDrag = kDefaultPower;
+};
+
+} // namespace abalike::app

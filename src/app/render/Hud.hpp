@@ -1,0 +1,46 @@
+#pragma once
+
+#include <SFML/Graphics/Font.hpp>
+#include <SFML/Graphics/RenderTarget.hpp>
+#include <abalike/game/GameSession.hpp>
+#include <optional>
+#include <string>
+
+namespace abalike::app
+{
+
+/// The numbers behind the current aim, shown as a small physics lesson: v0 = F t / m.
+struct AimReadout
+{
+    double angleDeg = 0.0;
+    double forceN = 0.0;
+    double speedMps = 0.0;
+    double massKg = 0.0;
+    double releaseTimeS = 0.0;
+};
+
+/// Text over the scene while playing: level name, score, birds and pigs left, the air, the aim readout and
+/// the level's hint. Draws nothing without a font.
+class Hud
+{
+public:
+    explicit Hud(const sf::Font* font) : m_font(font) {}
+
+    void draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session,
+              const std::optional<AimReadout>& aim) const;
+
+private:
+    /// Returns the bottom edge of the panel it drew.
+    float drawStatus(sf::RenderTarget& target, float scale, const GameSession& session) const;
+    void drawEnvironment(sf::RenderTarget& target, float top, float scale, const LevelDef& level) const;
+    void drawAim(sf::RenderTarget& target, sf::Vector2u size, float scale, const AimReadout& aim) const;
+    void drawAbilityPrompt(sf::RenderTarget& target, sf::Vector2u size, float scale, const GameSession& session) const;
+    void drawHint(sf::RenderTarget& target, sf::Vector2u size, float scale, const LevelDef& level) const;
+
+    const sf::Font* m_font;
+};
+
+/// Text scale for a window: 1 at 1280x720.
+float hudScale(sf::Vector2u size);
+
+} // namespace abalike::app

@@ -1,0 +1,25 @@
+#pragma once
+
+#include <SFML/Graphics/Font.hpp>
+#include <SFML/Graphics/RenderTarget.hpp>
+#include <string>
+#include <vector>
+
+namespace abalike::app
+{
+
+/// Live reload's message over the scene: the problems of an invalid edit of the level file, while the last good
+/// version keeps playing. Draws nothing without a font or without problems.
+class ReloadNotice
+{
+public:
+    explicit ReloadNotice(const sf::Font* font) : m_font(font) {}
+
+    /// lines: one FILE:LINE:COL problem each.
+    void draw(sf::RenderTarget& target, sf::Vector2u size, const std::vector<std::string>& lines) const;
+
+private:
+    const sf::Font* m_font;
+};
+
+} // namespace abalike::app

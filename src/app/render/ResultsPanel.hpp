@@ -1,0 +1,26 @@
+#pragma once
+
+#include "render/Mesh.hpp"
+
+#include <SFML/Graphics/Font.hpp>
+#include <SFML/Graphics/RenderTarget.hpp>
+#include <abalike/game/GameSession.hpp>
+
+namespace abalike::app
+{
+
+/// The end-of-level card: won or lost, where the score came from, the stars earned and what to press next.
+class ResultsPanel
+{
+public:
+    /// font may be null: then only the panel and the stars are drawn.
+    explicit ResultsPanel(const sf::Font* font) : m_font(font) {}
+
+    void draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session, bool hasNextLevel);
+
+private:
+    const sf::Font* m_font;
+    Mesh m_stars;
+};
+
+} // namespace abalike::app
