@@ -1,6 +1,5 @@
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/LevelIO.hpp>
-
 #include <box2d/box2d.h>
 #include <gtest/gtest.h>
 

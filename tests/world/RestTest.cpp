@@ -1,6 +1,5 @@
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/LevelIO.hpp>
-
 #include <box2d/box2d.h>
 #include <cmath>
 #include <gtest/gtest.h>
@@ -36,7 +35,8 @@ TEST(WorldAtRest, BoxRestsExactlyOnItsDesignedSurface)
 {
     LevelDef level;
     level.birds = {"red"};
-    level.blocks = {{BlockShape::Box, "stone", 5.0, 0.5, 1.0, 1.0, 0.0}, {BlockShape::Box, "wood", 5.0, 1.5, 1.0, 1.0, 0.0}};
+    level.blocks = {{BlockShape::Box, "stone", 5.0, 0.5, 1.0, 1.0, 0.0},
+                    {BlockShape::Box, "wood", 5.0, 1.5, 1.0, 1.0, 0.0}};
     level.pigs = {{"small", 8.0, 0.25}};
     GameWorld world(level, Catalog::builtin());
     for (int i = 0; i < 120; ++i)

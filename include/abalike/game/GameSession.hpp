@@ -4,7 +4,6 @@
 #include <abalike/game/Score.hpp>
 #include <abalike/level/LevelDef.hpp>
 #include <abalike/world/GameWorld.hpp>
-
 #include <array>
 #include <memory>
 #include <optional>
@@ -32,9 +31,15 @@ struct ShotRecord
     double speedMps = 0.0;
     std::optional<ContactPoint> predictedContact;
     std::optional<ContactPoint> actualContact;
-    std::optional<double> deviationM; ///< distance between predicted and actual first contact
+    /// Distance between predicted and actual first contact; only when the bird flew the predicted flight, i.e.
+    /// no ability changed it before its first contact (a split does not: the bird flies on unchanged).
+    std::optional<double> deviationM;
+    std::optional<EntityKind> firstTouched;           ///< what the bird first touched
     std::vector<std::array<double, 3>> predictedPath; ///< (t, x, y)
     std::vector<std::array<double, 3>> actualPath;    ///< (t, x, y)
+    std::optional<AbilityUse> ability; ///< the ability, if used: when, where, and every impulse it applied
+    int pigsDefeated = 0;              ///< pigs defeated while this shot was under way
+    int accuracyPoints = 0;            ///< this shot's share of ScoreBreakdown::accuracyBonus
 };
 
 /// A launch the rules do not allow (no bird, not aiming, too fast); the message says why.
@@ -66,6 +71,8 @@ public:
 
     /// Launch speed v0 = F t_release / m for the current bird and a slingshot force F.
     double launchSpeedForForce(double forceN) const;
+    /// The slingshot force F = m v0 / t_release that launches the current bird at a speed (for the HUD).
+    double forceForLaunchSpeed(double speedMps) const;
     /// Fastest launch of the current bird (the slingshot's maximum force).
     double maxLaunchSpeed() const;
     /// Where a bird leaves the slingshot.
@@ -77,6 +84,12 @@ public:
     PredictedFlight preview(double angleDeg, double speedMps) const;
     /// Launches the current bird. Throws LaunchError when not aiming or faster than the bird can be launched.
     void launch(double angleDeg, double speedMps);
+    /// Whether the flying bird's ability can be used now (see GameWorld::canActivateAbility).
+    bool canActivateAbility() const;
+    /// Uses the flying bird's ability (click or Space in flight); false if it cannot be used now.
+    bool activateAbility();
+    /// Time since the current shot was launched (s).
+    double timeSinceLaunch() const { return m_world->time() - m_shotStartTime; }
 
     const std::vector<ShotRecord>& shots() const { return m_shots; }
     ScoreBreakdown score() const { return m_score; }
@@ -99,16 +112,22 @@ private:
     Phase m_phase = Phase::Aiming;
     int m_nextBird = 0;
     double m_shotStartTime = 0.0;
-    double m_birdSlowSinceS = -1.0;
     std::vector<ShotRecord> m_shots;
     ScoreBreakdown m_score;
 };
 
-/// A scripted shot: angle in degrees, launch speed in m/s.
+/// A scripted shot: angle in degrees, launch speed in m/s, and when (s after launch) to use the bird's ability.
 struct ScriptedShot
 {
+    ScriptedShot() = default;
+    ScriptedShot(double angle, double speed, std::optional<double> abilityAt = std::nullopt)
+        : angleDeg(angle), speedMps(speed), abilityAtS(abilityAt)
+    {
+    }
+
     double angleDeg = 0.0;
     double speedMps = 0.0;
+    std::optional<double> abilityAtS; ///< none: the ability is not used
 };
 
 /// Plays the shots in order, headless, letting the world settle between them; returns the finished session.

@@ -14,9 +14,10 @@ struct Material
     double densityKgPerM2 = 0.0;
     double friction = 0.0;
     double restitution = 0.0;
-    double strengthNs = 0.0; ///< normal impulse a block can absorb before it breaks (N s)
-    int points = 0;          ///< score when destroyed
-    std::string note;        ///< where the numbers come from
+    double strengthNs = 0.0;         ///< normal impulse a block can absorb before it breaks (N s)
+    int points = 0;                  ///< score when destroyed
+    std::string note;                ///< where the numbers come from
+    double bulkDensityKgPerM3 = 0.0; ///< the real material's density; areal density = this x slab depth
 };
 
 /// A kind of bird: the spec's "unique masses and sizes".
@@ -27,6 +28,8 @@ struct BirdType
     double radiusM = 0.0;
     double dragCoefficient = 0.47; ///< Cd of a sphere
     std::string ability;           ///< "none", "split", "boost", "explode", "egg"
+    double friction = 0.6;
+    double restitution = 0.3;
 };
 
 /// A kind of pig.
@@ -38,6 +41,29 @@ struct PigType
     double healthNs = 0.0; ///< impulse it absorbs before it is defeated (N s)
     int points = 0;
     bool helmet = false;
+    double friction = 0.6;
+    double restitution = 0.2;
+};
+
+/// The numbers behind the birds' abilities (see assets/catalog.json, "abilities").
+struct AbilityParams
+{
+    double splitAngleDeg = 10.0;     ///< split: the extra birds fly off at +- this from the velocity
+    double boostSpeedGainMps = 15.0; ///< boost: speed added along the velocity
+    double explodeRadiusM = 3.0;     ///< explode: bodies whose centre is nearer are pushed and damaged
+    double explodeImpulseNs = 250.0; ///< explode: impulse (and damage) at the centre, falling linearly to 0
+    double eggMassKg = 10.0;         ///< egg: mass of the egg
+    double eggRadiusM = 0.2;         ///< egg: radius of the egg
+    double eggPushSpeedMps = 15.0;   ///< egg: how much faster than the bird the egg leaves downwards
+};
+
+/// Score rules beyond the per-block and per-pig points.
+struct ScoringRules
+{
+    int pointsPerUnusedBird = 10000;        ///< efficiency: each bird left when the level is won
+    int efficiencyPointsPerExtraPig = 5000; ///< efficiency: each pig beyond the first defeated in one shot
+    int accuracyPointsPerShot = 1000;       ///< accuracy: a first contact exactly where predicted
+    double accuracyToleranceM = 0.05;       ///< accuracy: deviation at which the accuracy points reach zero
 };
 
 /// Balance data (materials, birds, pigs), kept in one data file (assets/catalog.json) that is compiled into
@@ -60,16 +86,24 @@ public:
     const std::vector<PigType>& pigs() const { return m_pigs; }
 
     double slingshotReleaseTimeS() const { return m_releaseTimeS; }
-    int pointsPerUnusedBird() const { return m_pointsPerUnusedBird; }
+    int pointsPerUnusedBird() const { return m_scoring.pointsPerUnusedBird; }
+    const ScoringRules& scoring() const { return m_scoring; }
     double damageSpeedThresholdMps() const { return m_damageSpeedThreshold; }
+    const AbilityParams& abilities() const { return m_abilities; }
+    double groundFriction() const { return m_groundFriction; }
+    /// Depth of the slab a 2D block stands for (m): areal density = bulk density x depth.
+    double slabDepthM() const { return m_slabDepthM; }
 
 private:
     std::vector<Material> m_materials;
     std::vector<BirdType> m_birds;
     std::vector<PigType> m_pigs;
+    AbilityParams m_abilities;
+    ScoringRules m_scoring;
     double m_releaseTimeS = 0.1;
-    int m_pointsPerUnusedBird = 10000;
     double m_damageSpeedThreshold = 0.5;
+    double m_groundFriction = 0.8;
+    double m_slabDepthM = 0.1;
 };
 
 } // namespace abalike

@@ -3,8 +3,8 @@
 #include <abalike/flight/FlightIntegrator.hpp>
 #include <abalike/flight/Prediction.hpp>
 #include <abalike/level/LevelDef.hpp>
+#include <abalike/world/Ability.hpp>
 #include <abalike/world/Catalog.hpp>
-
 #include <array>
 #include <memory>
 #include <optional>
@@ -17,12 +17,26 @@ class b2World;
 namespace abalike
 {
 
-/// Box2D settings of a world; defaults chosen by measurement (see README, "Physics settings").
+/// Box2D settings of a world; the defaults were chosen by measurement (docs/world-physics.md, "Iterations").
 struct WorldSettings
 {
     double dtS = 1.0 / 60.0;
     int velocityIterations = 8;
     int positionIterations = 3;
+    /// A step is split into up to this many Box2D sub-steps so that no body moves more than 90 % of
+    /// b2_maxTranslation (2 m) per sub-step; Box2D would otherwise silently cap speeds at 2 m / dt (120 m/s at
+    /// 60 Hz). 1 turns sub-stepping off.
+    int maxSubsteps = 8;
+    bool allowSleep = true;
+    /// Velocity iterations of the very first step. Box2D warm-starts each step from the last step's contact
+    /// impulses; a level starts with none, and with 8 iterations the top of a 20-block tower falls 10 cm before
+    /// the impulses build up. Solving the first step well makes them right from the start (measured in
+    /// docs/world-physics.md). kAutoSettle: 5 x depth^2 (at least 2000, at most 10 000), depth being the most
+    /// bodies stacked on each other, because Gauss-Seidel needs about depth^2 sweeps to carry the load of the top
+    /// body down to the ground; 0: no settle step; more: that many.
+    int settleIterations = kAutoSettle;
+
+    static constexpr int kAutoSettle = -1;
 };
 
 enum class EntityKind
@@ -31,7 +45,7 @@ enum class EntityKind
     Terrain,
     Block,
     Pig,
-    Bird,
+    Bird, ///< the launched bird, the extra birds of a split and eggs (typeName "egg")
 };
 
 /// Something in the world the game cares about. Bodies point back at their entity by index (user data).
@@ -41,9 +55,10 @@ struct Entity
     int defIndex = -1;    ///< index in the level's blocks / pigs / terrain, or the shot number for birds
     std::string typeName; ///< material, pig type or bird type
     BlockShape shape = BlockShape::Box;
-    double widthM = 0.0;  ///< blocks and terrain: size; pigs and birds: diameter
+    double widthM = 0.0; ///< blocks and terrain: size; pigs and birds: diameter
     double heightM = 0.0;
-    double health = 0.0;  ///< remaining impulse it can absorb (N s)
+    double wallM = 0.0;  ///< hollow boxes: wall thickness
+    double health = 0.0; ///< remaining impulse it can absorb (N s)
     double maxHealth = 0.0;
     bool alive = true;
     b2Body* body = nullptr; ///< null once removed
@@ -64,7 +79,8 @@ struct DestroyedEvent
 ///
 /// The bird's free flight is driven by the same FlightIntegrator (RK4) the preview uses: each step the bird's
 /// velocity is set to the chord between consecutive RK4 states, so Box2D's own integration and its bullet
-/// time-of-impact land exactly where the preview says. At first contact Box2D takes over.
+/// time-of-impact land exactly where the preview says. At first contact Box2D takes over. An ability that
+/// changes the bird's velocity in flight re-seeds the integrator from the new state.
 class GameWorld
 {
 public:
@@ -73,25 +89,45 @@ public:
     GameWorld(const GameWorld&) = delete;
     GameWorld& operator=(const GameWorld&) = delete;
 
-    /// Advances the world by one fixed step, then applies damage and removes what broke.
+    /// Advances the world by one fixed step, then applies damage and removes what broke or came to rest.
     void step();
 
     double time() const { return m_time; }
     double dt() const { return m_settings.dtS; }
     const WorldSettings& settings() const { return m_settings; }
+    /// Box2D sub-steps taken by the last step (see WorldSettings::maxSubsteps).
+    int lastSubsteps() const { return m_lastSubsteps; }
+    /// Fastest a body can move without Box2D capping its speed: 90 % of b2_maxTranslation per sub-step.
+    double maxSpeedMps() const;
+    /// The most bodies resting on each other at the start (1 for a block on the ground).
+    int stackDepth() const { return m_stackDepth; }
+    /// Velocity iterations of the settle step (see WorldSettings::settleIterations).
+    int settleIterations() const { return m_settleIterations; }
 
     /// Puts a bird at s0 and starts its free flight under the model. Returns its entity index.
     int launchBird(const BirdType& bird, const FlightModel& model, const FlightState& s0);
-    /// Takes the bird out of the world (it came to rest or left the world).
+    /// Takes the launched bird out of the world (split birds and eggs stay until they rest).
     void removeBird();
-    /// The bird's entity, if one is in the world.
+    /// Takes every bird, split bird and egg out of the world.
+    void removeAllBirds();
+    /// The launched bird's entity, if it is in the world.
     const Entity* bird() const;
+    /// Split birds and eggs still in the world.
+    int projectilesInPlay() const { return static_cast<int>(m_projectiles.size()); }
     /// True while the bird has not touched anything since launch.
     bool birdInFreeFlight() const { return m_birdFlight != nullptr; }
     /// Where and when (since launch) the bird first touched something, once it has.
     const std::optional<ContactPoint>& birdContact() const { return m_birdContact; }
+    /// What the bird first touched, once it has.
+    const std::optional<EntityKind>& birdContactKind() const { return m_birdContactKind; }
     /// The bird's path since launch, one point (t since launch, x, y) per step.
     const std::vector<std::array<double, 3>>& birdPath() const { return m_birdPath; }
+
+    /// Whether the launched bird's ability can be used now: split, boost and egg while it flies free, explode
+    /// while it is in the world; each once.
+    bool canActivateAbility() const;
+    /// Uses the launched bird's ability now (between steps); returns what it did, or nullopt if it cannot.
+    std::optional<AbilityUse> activateAbility();
 
     /// Fraction (0..1) along the straight move a -> b at which a circle of the given radius first touches
     /// level geometry, by Box2D's time of impact: the same query the solver runs for bullets.
@@ -115,13 +151,39 @@ public:
     class ContactRecorder;
 
 private:
+    /// A split bird or an egg: flown by Box2D with the flight model's drag, retired when it rests.
+    struct Projectile
+    {
+        int index = -1;
+        double launchTimeS = 0.0; ///< when it was made (world time)
+        double shotStartS = 0.0;  ///< when its shot was launched: the flight model's time origin (gusts)
+        double slowSinceS = -1.0;
+        std::unique_ptr<FlightIntegrator> model; ///< evaluates drag and wind for it
+    };
+
     void buildLevel();
+    void measureStackDepth();
     int addEntity(Entity entity);
+    b2Body* createBirdBody(int index, double radiusM, double massKg, double friction, double restitution,
+                           const FlightState& s);
+    int substepCount() const;
     void driveBirdFlight();
-    void finishBirdStep();
+    void applyFlightForces(b2Body* body, const FlightIntegrator& model, double sinceLaunchS);
+    void finishBirdStep(const std::array<double, 2>& stepStart);
+    void retireBirds();
+    void removeProjectile(std::size_t slot);
     void applyDamage();
+    void damageEntity(int index, double impulseNs);
     void removeOutOfBounds();
     void destroyEntity(int index, bool scored);
+    FlightState birdState() const;
+    void setBirdVelocity(double vx, double vy);
+    int addProjectile(const std::string& typeName, double radiusM, double massKg, const FlightState& s,
+                      const FlightModel& model);
+    void split(AbilityUse& use);
+    void boost(AbilityUse& use);
+    void explode(AbilityUse& use);
+    void dropEgg(AbilityUse& use);
 
     LevelDef m_level;
     const Catalog& m_catalog;
@@ -131,14 +193,24 @@ private:
     std::vector<Entity> m_entities;
     std::vector<DestroyedEvent> m_destroyed;
     double m_time = 0.0;
+    long m_steps = 0;
+    int m_stackDepth = 0;
+    int m_settleIterations = 0;
+    int m_lastSubsteps = 1;
+    std::array<double, 3> m_extent{}; ///< left, right, bottom: beyond these a body has left the world
 
     int m_birdIndex = -1;
+    BirdType m_birdType;
     double m_birdLaunchTime = 0.0;
+    double m_birdSlowSinceS = -1.0;
+    bool m_abilityUsed = false;
     std::unique_ptr<FlightIntegrator> m_birdFlight; ///< drives the bird until its first contact, then null
     std::unique_ptr<FlightIntegrator> m_birdModel;  ///< the same model, evaluated for drag after contact
     FlightState m_birdStepStart{};
     std::optional<ContactPoint> m_birdContact;
+    std::optional<EntityKind> m_birdContactKind;
     std::vector<std::array<double, 3>> m_birdPath;
+    std::vector<Projectile> m_projectiles;
 };
 
 } // namespace abalike

@@ -1,5 +1,4 @@
 #include <abalike/game/GameSession.hpp>
-
 #include <box2d/box2d.h>
 #include <cmath>
 #include <sstream>
@@ -9,15 +8,8 @@ namespace abalike
 
 namespace
 {
-/// A bird slower than this for kBirdRestS after its first contact is taken off the field.
-constexpr double kBirdRestSpeedMps = 0.3;
-constexpr double kBirdRestS = 1.0;
-/// Longest a bird stays in play after launch.
-constexpr double kBirdLifetimeS = 12.0;
 /// Longest a shot lasts before the next bird is ready, even if something still moves.
 constexpr double kShotTimeCapS = 20.0;
-/// Box2D moves a body at most b2_maxTranslation per step; launches are capped a little below that speed.
-constexpr double kMaxTranslationShare = 0.95;
 } // namespace
 
 GameSession::GameSession(LevelDef level, const Catalog& catalog, WorldSettings settings)
@@ -35,7 +27,6 @@ void GameSession::restart()
     m_phase = Phase::Aiming;
     m_nextBird = 0;
     m_shotStartTime = 0.0;
-    m_birdSlowSinceS = -1.0;
     m_shots.clear();
     m_score = {};
 }
@@ -60,10 +51,18 @@ double GameSession::launchSpeedForForce(double forceN) const
     return forceN * m_catalog.slingshotReleaseTimeS() / bird->massKg;
 }
 
+double GameSession::forceForLaunchSpeed(double speedMps) const
+{
+    const BirdType* bird = currentBird();
+    if (bird == nullptr)
+        return 0.0;
+    return speedMps * bird->massKg / m_catalog.slingshotReleaseTimeS();
+}
+
 double GameSession::maxLaunchSpeed() const
 {
     const double bySlingshot = launchSpeedForForce(m_level.slingshot.maxForceN);
-    const double byBox2d = kMaxTranslationShare * b2_maxTranslation / m_settings.dtS;
+    const double byBox2d = m_world->maxSpeedMps(); // Box2D would cap faster birds silently
     return std::min(bySlingshot, byBox2d);
 }
 
@@ -80,6 +79,7 @@ FlightModel GameSession::flightModelFor(const BirdType& bird) const
     model.quadraticDrag = quadraticDragCoefficient(m_level.environment.airDensity, bird.dragCoefficient, bird.radiusM);
     model.windX = m_level.environment.windX;
     model.windY = m_level.environment.windY;
+    model.gusts = m_level.environment.gusts;
     return model;
 }
 
@@ -93,7 +93,8 @@ PredictedFlight GameSession::preview(double angleDeg, double speedMps) const
     PredictionLimits limits;
     limits.maxTimeS = 15.0;
     const double radius = bird->radiusM;
-    limits.contact = [this, radius](const FlightState& a, const FlightState& b) {
+    limits.contact = [this, radius](const FlightState& a, const FlightState& b)
+    {
         return m_world->castCircle(radius, a, b);
     };
     const auto p = launchPoint();
@@ -117,9 +118,9 @@ void GameSession::launch(double angleDeg, double speedMps)
     else if (speedMps < 0.0)
         why << "speed must be >= 0 m/s, got " << speedMps;
     else if (speedMps > maxLaunchSpeed() * (1.0 + 1e-12))
-        why << "bird " << m_nextBird + 1 << " (" << bird->name << ", " << bird->massKg << " kg) can be launched at most "
-            << maxLaunchSpeed() << " m/s (slingshot " << m_level.slingshot.maxForceN << " N), asked " << speedMps
-            << " m/s";
+        why << "bird " << m_nextBird + 1 << " (" << bird->name << ", " << bird->massKg
+            << " kg) can be launched at most " << maxLaunchSpeed() << " m/s (slingshot " << m_level.slingshot.maxForceN
+            << " N), asked " << speedMps << " m/s";
     if (!why.str().empty())
         throw LaunchError(why.str());
 
@@ -138,7 +139,23 @@ void GameSession::launch(double angleDeg, double speedMps)
     ++m_nextBird;
     m_phase = Phase::Flying;
     m_shotStartTime = m_world->time();
-    m_birdSlowSinceS = -1.0;
+}
+
+bool GameSession::canActivateAbility() const
+{
+    return m_phase == Phase::Flying && m_world->canActivateAbility();
+}
+
+bool GameSession::activateAbility()
+{
+    if (!canActivateAbility() || m_shots.empty())
+        return false;
+    std::optional<AbilityUse> use = m_world->activateAbility();
+    if (!use)
+        return false;
+    m_shots.back().ability = std::move(use);
+    collectEvents(); // a blast may have destroyed something already
+    return true;
 }
 
 void GameSession::step()
@@ -153,6 +170,7 @@ void GameSession::step()
 
 void GameSession::collectEvents()
 {
+    ShotRecord* shot = m_shots.empty() ? nullptr : &m_shots.back();
     for (const DestroyedEvent& event : m_world->takeDestroyedEvents())
     {
         if (event.kind == EntityKind::Block && event.points > 0)
@@ -164,6 +182,11 @@ void GameSession::collectEvents()
         {
             m_score.pigPoints += event.points;
             ++m_score.pigsDefeated;
+            if (shot == nullptr)
+                continue;
+            // Efficiency: one bird doing the work of two.
+            if (++shot->pigsDefeated > 1)
+                m_score.efficiencyBonus += m_catalog.scoring().efficiencyPointsPerExtraPig;
         }
     }
 }
@@ -178,23 +201,27 @@ void GameSession::updateBird()
     const auto& path = m_world->birdPath();
     for (std::size_t i = shot.actualPath.size(); i < path.size(); ++i)
         shot.actualPath.push_back(path[i]);
-    if (!shot.actualContact && m_world->birdContact())
+    if (shot.actualContact || !m_world->birdContact())
+        return;
+    shot.actualContact = m_world->birdContact();
+    shot.firstTouched = m_world->birdContactKind();
+    // The prediction made at launch is only a claim about the flight that was launched: once an ability changed
+    // that flight, the distance between the two contacts measures the ability, not the prediction.
+    const bool flightChanged = shot.ability && shot.ability->changedFlight;
+    if (!shot.predictedContact || flightChanged)
+        return;
+    shot.deviationM =
+        std::hypot(shot.actualContact->x - shot.predictedContact->x, shot.actualContact->y - shot.predictedContact->y);
+    // Accuracy counts where the bird meets the structure (a block or a pig), not the ground.
+    if (shot.firstTouched == EntityKind::Block || shot.firstTouched == EntityKind::Pig)
     {
-        shot.actualContact = m_world->birdContact();
-        if (shot.predictedContact)
-            shot.deviationM = std::hypot(shot.actualContact->x - shot.predictedContact->x,
-                                         shot.actualContact->y - shot.predictedContact->y);
+        const ScoringRules& rules = m_catalog.scoring();
+        shot.accuracyPoints =
+            accuracyPointsFor(*shot.deviationM, rules.accuracyPointsPerShot, rules.accuracyToleranceM);
+        m_score.accuracyBonus += shot.accuracyPoints;
+        if (shot.accuracyPoints > 0)
+            ++m_score.accurateShots;
     }
-
-    const double sinceLaunch = m_world->time() - m_shotStartTime;
-    const b2Vec2 v = bird->body->GetLinearVelocity();
-    const bool slow = std::hypot(v.x, v.y) < kBirdRestSpeedMps && !m_world->birdInFreeFlight();
-    if (!slow)
-        m_birdSlowSinceS = -1.0;
-    else if (m_birdSlowSinceS < 0.0)
-        m_birdSlowSinceS = sinceLaunch;
-    if ((slow && sinceLaunch - m_birdSlowSinceS >= kBirdRestS) || sinceLaunch >= kBirdLifetimeS)
-        m_world->removeBird();
 }
 
 void GameSession::updatePhase()
@@ -202,11 +229,13 @@ void GameSession::updatePhase()
     if (m_phase != Phase::Flying)
         return;
     const bool timeUp = m_world->time() - m_shotStartTime >= kShotTimeCapS;
-    if (!(m_world->bird() == nullptr && m_world->isSettled()) && !timeUp)
+    const bool birdsGone = m_world->bird() == nullptr && m_world->projectilesInPlay() == 0;
+    if (!(birdsGone && m_world->isSettled()) && !timeUp)
         return;
-    m_world->removeBird();
+    m_world->removeAllBirds();
     if (m_world->pigsAlive() == 0)
     {
+        m_score.unusedBirds = birdsRemaining();
         m_score.unusedBirdBonus = birdsRemaining() * m_catalog.pointsPerUnusedBird();
         m_phase = Phase::Won;
     }
@@ -224,24 +253,50 @@ int GameSession::stars() const
 std::unique_ptr<GameSession> simulateShots(const LevelDef& level, const std::vector<ScriptedShot>& shots,
                                            const Catalog& catalog)
 {
+    if (shots.size() > level.birds.size())
+        throw LaunchError("shot " + std::to_string(level.birds.size() + 1) +
+                          ": no bird left to launch (the level has " + std::to_string(level.birds.size()) + ")");
     auto session = std::make_unique<GameSession>(level, catalog);
-    for (std::size_t i = 0; i < shots.size(); ++i)
+    double abilityAtS = -1.0; // < 0: no ability pending
+    const auto playOut = [&]
     {
         while (session->phase() == Phase::Flying)
+        {
+            // The ability fires at the first step boundary at or after its time (a bird that cannot use it by then
+            // -- it already touched something -- simply flies on).
+            if (abilityAtS >= 0.0 && session->timeSinceLaunch() >= abilityAtS - 1e-9)
+            {
+                session->activateAbility();
+                abilityAtS = -1.0;
+            }
             session->step();
+        }
+    };
+    for (std::size_t i = 0; i < shots.size(); ++i)
+    {
+        playOut();
         if (session->finished())
             break; // the level ended before this shot; nothing left to shoot at
         try
         {
+            if (const auto at = shots[i].abilityAtS)
+            {
+                const BirdType* bird = session->currentBird();
+                if (!std::isfinite(*at) || *at < 0.0)
+                    throw LaunchError("the ability time must be a finite number of seconds >= 0");
+                if (bird != nullptr && bird->ability == "none")
+                    throw LaunchError("bird " + std::to_string(session->birdsUsed() + 1) + " (" + bird->name +
+                                      ") has no ability to use");
+            }
             session->launch(shots[i].angleDeg, shots[i].speedMps);
         }
         catch (const LaunchError& e)
         {
             throw LaunchError("shot " + std::to_string(i + 1) + ": " + e.what());
         }
+        abilityAtS = shots[i].abilityAtS.value_or(-1.0);
     }
-    while (session->phase() == Phase::Flying)
-        session->step();
+    playOut();
     return session;
 }
 

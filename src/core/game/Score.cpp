@@ -1,4 +1,6 @@
 #include <abalike/game/Score.hpp>
+#include <algorithm>
+#include <cmath>
 
 namespace abalike
 {
@@ -13,6 +15,13 @@ int starsFor(int score, bool won, const std::array<int, 3>& thresholds)
     if (score >= thresholds[2])
         stars = 3;
     return stars;
+}
+
+int accuracyPointsFor(double deviationM, int fullPoints, double toleranceM)
+{
+    if (!(deviationM >= 0.0) || !(toleranceM > 0.0))
+        return 0;
+    return static_cast<int>(std::lround(fullPoints * std::max(0.0, 1.0 - deviationM / toleranceM)));
 }
 
 } // namespace abalike

@@ -1,5 +1,5 @@
 #include <abalike/world/Catalog.hpp>
-
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -42,30 +42,75 @@ Catalog Catalog::fromJson(std::string_view text)
     try
     {
         const json root = json::parse(text);
+        catalog.m_slabDepthM = root.contains("slab_depth_m") ? positive(root, "slab_depth_m", "catalog") : 0.1;
         catalog.m_releaseTimeS = positive(root.at("slingshot"), "release_time_s", "slingshot");
-        catalog.m_pointsPerUnusedBird = root.at("scoring").at("points_per_unused_bird").get<int>();
+        const json& scoring = root.at("scoring");
+        catalog.m_scoring.pointsPerUnusedBird = scoring.at("points_per_unused_bird").get<int>();
+        catalog.m_scoring.efficiencyPointsPerExtraPig = scoring.value("efficiency_points_per_extra_pig", 5000);
+        catalog.m_scoring.accuracyPointsPerShot = scoring.value("accuracy_points_per_shot", 1000);
+        catalog.m_scoring.accuracyToleranceM = scoring.value("accuracy_tolerance_m", 0.05);
+        if (!(catalog.m_scoring.accuracyToleranceM > 0.0))
+            throw std::runtime_error("scoring.accuracy_tolerance_m must be > 0");
         catalog.m_damageSpeedThreshold = positive(root.at("damage"), "speed_threshold_mps", "damage");
+        if (root.contains("ground"))
+            catalog.m_groundFriction = root.at("ground").value("friction", 0.8);
         for (const json& m : root.at("materials"))
         {
             const std::string where = "material " + m.at("name").get<std::string>();
-            catalog.m_materials.push_back({m.at("name").get<std::string>(), positive(m, "density_kg_per_m2", where),
-                                           m.at("friction").get<double>(), m.at("restitution").get<double>(),
-                                           positive(m, "strength_ns", where), m.at("points").get<int>(),
-                                           m.value("note", std::string())});
+            Material material{m.at("name").get<std::string>(),   positive(m, "density_kg_per_m2", where),
+                              m.at("friction").get<double>(),    m.at("restitution").get<double>(),
+                              positive(m, "strength_ns", where), m.at("points").get<int>(),
+                              m.value("note", std::string())};
+            // The areal density Box2D uses must be the documented bulk density times the slab depth.
+            material.bulkDensityKgPerM3 =
+                m.value("bulk_density_kg_per_m3", material.densityKgPerM2 / catalog.m_slabDepthM);
+            if (std::abs(material.bulkDensityKgPerM3 * catalog.m_slabDepthM - material.densityKgPerM2) >
+                1e-9 * material.densityKgPerM2)
+                throw std::runtime_error(where + ": density_kg_per_m2 must be bulk_density_kg_per_m3 x slab_depth_m");
+            catalog.m_materials.push_back(std::move(material));
         }
         for (const json& b : root.at("birds"))
         {
             const std::string where = "bird " + b.at("name").get<std::string>();
-            catalog.m_birds.push_back({b.at("name").get<std::string>(), positive(b, "mass_kg", where),
-                                       positive(b, "radius_m", where), positive(b, "drag_coefficient", where),
-                                       b.at("ability").get<std::string>()});
+            BirdType bird{b.at("name").get<std::string>(), positive(b, "mass_kg", where),
+                          positive(b, "radius_m", where), positive(b, "drag_coefficient", where),
+                          b.at("ability").get<std::string>()};
+            bird.friction = b.value("friction", bird.friction);
+            bird.restitution = b.value("restitution", bird.restitution);
+            catalog.m_birds.push_back(std::move(bird));
         }
         for (const json& p : root.at("pigs"))
         {
             const std::string where = "pig " + p.at("name").get<std::string>();
-            catalog.m_pigs.push_back({p.at("name").get<std::string>(), positive(p, "radius_m", where),
-                                      positive(p, "density_kg_per_m2", where), positive(p, "health_ns", where),
-                                      p.at("points").get<int>(), p.at("helmet").get<bool>()});
+            PigType pig{p.at("name").get<std::string>(),
+                        positive(p, "radius_m", where),
+                        positive(p, "density_kg_per_m2", where),
+                        positive(p, "health_ns", where),
+                        p.at("points").get<int>(),
+                        p.at("helmet").get<bool>()};
+            pig.friction = p.value("friction", pig.friction);
+            pig.restitution = p.value("restitution", pig.restitution);
+            catalog.m_pigs.push_back(std::move(pig));
+        }
+        if (root.contains("abilities"))
+        {
+            const json& a = root.at("abilities");
+            AbilityParams& params = catalog.m_abilities;
+            if (a.contains("split"))
+                params.splitAngleDeg = positive(a.at("split"), "angle_deg", "abilities.split");
+            if (a.contains("boost"))
+                params.boostSpeedGainMps = positive(a.at("boost"), "speed_gain_mps", "abilities.boost");
+            if (a.contains("explode"))
+            {
+                params.explodeRadiusM = positive(a.at("explode"), "radius_m", "abilities.explode");
+                params.explodeImpulseNs = positive(a.at("explode"), "impulse_ns", "abilities.explode");
+            }
+            if (a.contains("egg"))
+            {
+                params.eggMassKg = positive(a.at("egg"), "mass_kg", "abilities.egg");
+                params.eggRadiusM = positive(a.at("egg"), "radius_m", "abilities.egg");
+                params.eggPushSpeedMps = positive(a.at("egg"), "push_speed_mps", "abilities.egg");
+            }
         }
     }
     catch (const json::exception& e)

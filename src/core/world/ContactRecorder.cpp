@@ -9,11 +9,14 @@ void GameWorld::ContactRecorder::BeginContact(b2Contact* contact)
 {
     if (m_bird == nullptr || m_birdTouch)
         return;
-    const b2Body* a = contact->GetFixtureA()->GetBody();
-    const b2Body* b = contact->GetFixtureB()->GetBody();
+    b2Body* a = contact->GetFixtureA()->GetBody();
+    b2Body* b = contact->GetFixtureB()->GetBody();
     // During a time-of-impact sub-step Box2D has already moved the bird to the moment of impact.
     if (a == m_bird || b == m_bird)
+    {
         m_birdTouch = m_bird->GetPosition();
+        m_birdTouchOther = entityIndexOf(a == m_bird ? b : a);
+    }
 }
 
 void GameWorld::ContactRecorder::PreSolve(b2Contact* contact, const b2Manifold* /*oldManifold*/)
@@ -30,7 +33,11 @@ void GameWorld::ContactRecorder::PreSolve(b2Contact* contact, const b2Manifold* 
         const b2Vec2 vb = b->GetLinearVelocityFromWorldPoint(manifold.points[i]);
         closing = std::max(closing, -b2Dot(vb - va, manifold.normal));
     }
-    m_closingSpeed[contact] = closing;
+    // Resting contacts (nearly all of them) are not stored: PostSolve ignores what it does not find.
+    if (closing >= m_threshold)
+        m_closingSpeed[contact] = closing;
+    else if (!m_closingSpeed.empty())
+        m_closingSpeed.erase(contact);
 }
 
 void GameWorld::ContactRecorder::PostSolve(b2Contact* contact, const b2ContactImpulse* impulse)

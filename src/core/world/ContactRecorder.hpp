@@ -1,7 +1,6 @@
 #pragma once
 
 #include <abalike/world/GameWorld.hpp>
-
 #include <box2d/box2d.h>
 #include <optional>
 #include <unordered_map>
@@ -28,9 +27,12 @@ public:
     {
         m_bird = bird;
         m_birdTouch.reset();
+        m_birdTouchOther = -1;
     }
     /// Where the watched bird was when it first touched something.
     const std::optional<b2Vec2>& birdTouch() const { return m_birdTouch; }
+    /// Entity index of what the watched bird first touched (-1 if none or not an entity).
+    int birdTouchOther() const { return m_birdTouchOther; }
 
     /// Impact impulses (N s) per entity index during the last step.
     const std::unordered_map<int, double>& impulses() const { return m_impulses; }
@@ -48,7 +50,8 @@ private:
     float m_threshold;
     const b2Body* m_bird = nullptr;
     std::optional<b2Vec2> m_birdTouch;
-    std::unordered_map<const b2Contact*, float> m_closingSpeed;
+    int m_birdTouchOther = -1;
+    std::unordered_map<const b2Contact*, float> m_closingSpeed; ///< only contacts closing above the threshold
     std::unordered_map<int, double> m_impulses;
 };
 

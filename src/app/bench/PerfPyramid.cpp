@@ -1,0 +1,158 @@
+#include "bench/PerfParts.hpp"
+
+#include <abalike/world/StressScenes.hpp>
+#include <algorithm>
+#include <box2d/box2d.h>
+#include <chrono>
+#include <memory>
+
+namespace abalike::app
+{
+
+namespace
+{
+
+using Clock = std::chrono::steady_clock;
+
+/// A plain b2World with the same bodies, fixtures and settings as `from`, created in the same order (Box2D lists
+/// bodies and fixtures newest first), so that both worlds compute the same thing and only our layer differs.
+std::unique_ptr<b2World> cloneWorld(const b2World& from, bool allowSleep)
+{
+    auto world = std::make_unique<b2World>(from.GetGravity());
+    world->SetAllowSleeping(allowSleep);
+    std::vector<const b2Body*> bodies;
+    for (const b2Body* b = from.GetBodyList(); b != nullptr; b = b->GetNext())
+        bodies.push_back(b);
+    std::reverse(bodies.begin(), bodies.end());
+    for (const b2Body* b : bodies)
+    {
+        b2BodyDef def;
+        def.type = b->GetType();
+        def.position = b->GetPosition();
+        def.angle = b->GetAngle();
+        def.linearVelocity = b->GetLinearVelocity();
+        def.angularVelocity = b->GetAngularVelocity();
+        def.linearDamping = b->GetLinearDamping();
+        def.angularDamping = b->GetAngularDamping();
+        def.allowSleep = b->IsSleepingAllowed();
+        def.awake = b->IsAwake();
+        def.fixedRotation = b->IsFixedRotation();
+        def.bullet = b->IsBullet();
+        def.gravityScale = b->GetGravityScale();
+        b2Body* body = world->CreateBody(&def);
+        std::vector<const b2Fixture*> fixtures;
+        for (const b2Fixture* f = b->GetFixtureList(); f != nullptr; f = f->GetNext())
+            fixtures.push_back(f);
+        std::reverse(fixtures.begin(), fixtures.end());
+        for (const b2Fixture* f : fixtures)
+        {
+            b2FixtureDef fd;
+            fd.shape = f->GetShape();
+            fd.friction = f->GetFriction();
+            fd.restitution = f->GetRestitution();
+            fd.restitutionThreshold = f->GetRestitutionThreshold();
+            fd.density = f->GetDensity();
+            fd.isSensor = f->IsSensor();
+            fd.filter = f->GetFilterData();
+            body->CreateFixture(&fd);
+        }
+    }
+    return world;
+}
+
+double seconds(Clock::time_point since)
+{
+    return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+} // namespace
+
+PyramidPerf measurePyramid(int rows, int steps, int runs, bool allowSleep)
+{
+    PyramidPerf perf;
+    perf.rows = rows;
+    perf.steps = steps;
+    perf.runs = runs;
+    perf.allowSleep = allowSleep;
+    const LevelDef level = pyramidScene(rows);
+    perf.bodies = static_cast<int>(level.blocks.size());
+    WorldSettings settings;
+    settings.allowSleep = allowSleep;
+
+    std::vector<double> ours;
+    std::vector<double> raw;
+    std::vector<double> ratios;
+    std::vector<double> oursTotals;
+    std::vector<double> rawTotals;
+    std::vector<double> firstOurs;
+    std::vector<double> firstRaw;
+    perf.sameFinalState = true;
+    for (int run = 0; run < runs; ++run)
+    {
+        // Alternate which goes first so that neither always runs on a warmer cache.
+        GameWorld world(level, Catalog::builtin(), settings);
+        const std::unique_ptr<b2World> plain = cloneWorld(world.box2d(), allowSleep);
+        double oursTotal = 0.0;
+        double rawTotal = 0.0;
+        const auto runOurs = [&]
+        {
+            for (int i = 0; i < steps; ++i)
+            {
+                const auto t0 = Clock::now();
+                world.step();
+                const double dt = seconds(t0);
+                (i == 0 ? firstOurs : ours).push_back(dt);
+                oursTotal += i == 0 ? 0.0 : dt;
+            }
+        };
+        const auto runRaw = [&]
+        {
+            const auto h = static_cast<float>(settings.dtS);
+            for (int i = 0; i < steps; ++i)
+            {
+                const int velocityIterations = i == 0 ? std::max(world.settleIterations(), settings.velocityIterations)
+                                                      : settings.velocityIterations;
+                const auto t0 = Clock::now();
+                plain->Step(h, velocityIterations, settings.positionIterations);
+                const double dt = seconds(t0);
+                (i == 0 ? firstRaw : raw).push_back(dt);
+                rawTotal += i == 0 ? 0.0 : dt;
+            }
+        };
+        if (run % 2 == 0)
+        {
+            runOurs();
+            runRaw();
+        }
+        else
+        {
+            runRaw();
+            runOurs();
+        }
+        ratios.push_back(oursTotal / rawTotal);
+        oursTotals.push_back(oursTotal);
+        rawTotals.push_back(rawTotal);
+
+        // Same bodies, same order, same steps: the positions must agree bit for bit.
+        std::vector<b2Vec2> a;
+        std::vector<b2Vec2> b;
+        for (const b2Body* body = world.box2d().GetBodyList(); body != nullptr; body = body->GetNext())
+            a.push_back(body->GetPosition());
+        for (const b2Body* body = plain->GetBodyList(); body != nullptr; body = body->GetNext())
+            b.push_back(body->GetPosition());
+        perf.sameFinalState = perf.sameFinalState && a.size() == b.size() &&
+                              std::equal(a.begin(), a.end(), b.begin(),
+                                         [](const b2Vec2& p, const b2Vec2& q) { return p.x == q.x && p.y == q.y; });
+    }
+    perf.ours = statsOf(ours);
+    perf.raw = statsOf(raw);
+    std::sort(ratios.begin(), ratios.end());
+    perf.medianRunRatio = ratios[ratios.size() / 2];
+    perf.overheadRatio =
+        *std::min_element(oursTotals.begin(), oursTotals.end()) / *std::min_element(rawTotals.begin(), rawTotals.end());
+    perf.firstStepOursMs = 1e-3 * statsOf(firstOurs).medianUs;
+    perf.firstStepRawMs = 1e-3 * statsOf(firstRaw).medianUs;
+    return perf;
+}
+
+} // namespace abalike::app

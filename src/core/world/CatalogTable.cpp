@@ -1,0 +1,118 @@
+#include <abalike/world/CatalogTable.hpp>
+#include <cmath>
+#include <iomanip>
+#include <numbers>
+#include <sstream>
+
+namespace abalike
+{
+
+namespace
+{
+
+/// A number with a fixed count of decimals.
+std::string fixed(double value, int decimals)
+{
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(decimals) << value;
+    return out.str();
+}
+
+} // namespace
+
+std::string catalogMarkdown(const Catalog& catalog)
+{
+    std::ostringstream md;
+    md << "# Materials, birds and pigs\n\n"
+       << "Generated from `assets/catalog.json` (compiled into the core as `Catalog::builtin()`) by\n"
+       << "`catalogMarkdown()`; `tests/world/CatalogTableTest.cpp` fails when this file is out of date. Regenerate "
+          "it with\n"
+       << "`ABALIKE_UPDATE_DOCS=1 build/tests/abalike_tests --gtest_filter='CatalogTable.*'`.\n\n"
+       << "Box2D is 2D: every block is a slab " << fixed(catalog.slabDepthM(), 2)
+       << " m deep, so its areal density (what Box2D uses) is the\n"
+       << "bulk density times " << fixed(catalog.slabDepthM(), 2)
+       << " m. Box2D mixes friction as sqrt(f1 f2) and restitution as max(e1, e2), and\n"
+       << "applies restitution only above 1 m/s closing speed. Strength is the impulse a block absorbs before it "
+          "breaks.\n\n";
+
+    md << "## Materials\n\n"
+       << "| Material | Bulk density (kg/m³) | Areal density (kg/m²) | Friction | Restitution | Strength (N s) | "
+          "Points | Basis |\n"
+       << "|---|---:|---:|---:|---:|---:|---:|---|\n";
+    for (const Material& m : catalog.materials())
+        md << "| " << m.name << " | " << fixed(m.bulkDensityKgPerM3, 0) << " | " << fixed(m.densityKgPerM2, 0) << " | "
+           << fixed(m.friction, 2) << " | " << fixed(m.restitution, 2) << " | " << fixed(m.strengthNs, 0) << " | "
+           << m.points << " | " << m.note << " |\n";
+
+    md << "\n## Mass ratios (Box2D: stacking degrades past 10:1, heavy on light)\n\n"
+       << "Mass of a block resting on a block of the same size, divided by the mass of the one under it:\n\n"
+       << "| upper \\ lower |";
+    for (const Material& lower : catalog.materials())
+        md << ' ' << lower.name << " |";
+    md << "\n|---|";
+    for (std::size_t i = 0; i < catalog.materials().size(); ++i)
+        md << "---:|";
+    md << '\n';
+    double worst = 0.0;
+    for (const Material& upper : catalog.materials())
+    {
+        md << "| " << upper.name << " |";
+        for (const Material& lower : catalog.materials())
+        {
+            const double ratio = upper.densityKgPerM2 / lower.densityKgPerM2;
+            worst = std::max(worst, ratio);
+            md << ' ' << fixed(ratio, 2) << " |";
+        }
+        md << '\n';
+    }
+    md << "\nWorst same-size ratio: " << fixed(worst, 2)
+       << ". Blocks of different sizes multiply it by their area ratio; the level check\n"
+       << "(`checkRest`) reports the worst heavy-on-light pair of every level, and the tests keep every campaign "
+          "level and\n"
+       << "stress scene at or below 10.\n\n";
+
+    md << "## Birds\n\n"
+       << "The slingshot's force acts for " << fixed(catalog.slingshotReleaseTimeS(), 2)
+       << " s, so v0 = F t / m: the same pull sends a heavy bird slower.\n\n"
+       << "| Bird | Mass (kg) | Radius (m) | Drag Cd | Friction | Restitution | Ability | v0 at 1200 N (m/s) |\n"
+       << "|---|---:|---:|---:|---:|---:|---|---:|\n";
+    for (const BirdType& b : catalog.birds())
+        md << "| " << b.name << " | " << fixed(b.massKg, 1) << " | " << fixed(b.radiusM, 2) << " | "
+           << fixed(b.dragCoefficient, 2) << " | " << fixed(b.friction, 2) << " | " << fixed(b.restitution, 2) << " | "
+           << b.ability << " | " << fixed(1200.0 * catalog.slingshotReleaseTimeS() / b.massKg, 1) << " |\n";
+
+    const AbilityParams& a = catalog.abilities();
+    md << "\n## Abilities (click or Space in flight)\n\n"
+       << "| Ability | Parameters | What it does |\n|---|---|---|\n"
+       << "| split | " << fixed(a.splitAngleDeg, 1)
+       << " deg | two more birds of the same kind at +-angle from the velocity, same speed; the bird flies on |\n"
+       << "| boost | +" << fixed(a.boostSpeedGainMps, 1) << " m/s | impulse m dv along the current velocity |\n"
+       << "| explode | R = " << fixed(a.explodeRadiusM, 1) << " m, J = " << fixed(a.explodeImpulseNs, 0)
+       << " N s | radial impulse J (1 - d/R) on every block and pig within R, absorbed as damage too; the bird is "
+          "gone |\n"
+       << "| egg | " << fixed(a.eggMassKg, 1) << " kg, r = " << fixed(a.eggRadiusM, 2) << " m, "
+       << fixed(a.eggPushSpeedMps, 1)
+       << " m/s | the egg leaves downwards that much faster than the bird; the bird gets the equal and opposite "
+          "impulse upwards |\n";
+
+    md << "\n## Pigs\n\n"
+       << "| Pig | Radius (m) | Mass (kg) | Health (N s) | Points | Helmet |\n|---|---:|---:|---:|---:|---|\n";
+    for (const PigType& p : catalog.pigs())
+        md << "| " << p.name << " | " << fixed(p.radiusM, 2) << " | "
+           << fixed(p.densityKgPerM2 * std::numbers::pi * p.radiusM * p.radiusM, 1) << " | " << fixed(p.healthNs, 0)
+           << " | " << p.points << " | " << (p.helmet ? "yes" : "no") << " |\n";
+
+    const ScoringRules& s = catalog.scoring();
+    md << "\n## Damage and scoring\n\n"
+       << "- Damage: the normal impulses Box2D reports (PostSolve) of contacts closing faster than "
+       << fixed(catalog.damageSpeedThresholdMps(), 1) << " m/s;\n  resting contact never hurts.\n"
+       << "- Points per destroyed block by material (above) and per pig by type.\n"
+       << "- Efficiency: " << s.pointsPerUnusedBird << " per bird left when the level is won, and "
+       << s.efficiencyPointsPerExtraPig << " per pig beyond the first\n  that one shot defeats.\n"
+       << "- Accuracy: a shot whose first contact is a block or a pig, on the flight the preview predicted (no "
+          "ability\n  fired before contact), earns "
+       << s.accuracyPointsPerShot << " x max(0, 1 - deviation / " << fixed(s.accuracyToleranceM, 2) << " m).\n";
+    return md.str();
+}
+
+} // namespace abalike

@@ -1,0 +1,96 @@
+#include <abalike/game/GameSession.hpp>
+#include <abalike/level/LevelIO.hpp>
+#include <gtest/gtest.h>
+
+namespace abalike
+{
+namespace
+{
+
+LevelDef firstLevel()
+{
+    return loadLevel(std::string(ABALIKE_SOURCE_DIR) + "/levels/1-1-first-flight.json", Catalog::builtin());
+}
+
+TEST(Scoring, AccuracyFallsLinearlyToZeroAtTheTolerance)
+{
+    EXPECT_EQ(accuracyPointsFor(0.0, 1000, 0.05), 1000);
+    EXPECT_EQ(accuracyPointsFor(0.0003, 1000, 0.05), 994);
+    EXPECT_EQ(accuracyPointsFor(0.025, 1000, 0.05), 500);
+    EXPECT_EQ(accuracyPointsFor(0.05, 1000, 0.05), 0);
+    EXPECT_EQ(accuracyPointsFor(3.0, 1000, 0.05), 0);
+    EXPECT_EQ(accuracyPointsFor(-1.0, 1000, 0.05), 0);
+}
+
+TEST(Scoring, TheBreakdownAddsUpAndExplainsEachLine)
+{
+    const auto session = simulateShots(firstLevel(), {{55.0, 17.0}, {10.0, 23.0}});
+    ASSERT_EQ(session->phase(), Phase::Won);
+    const ScoreBreakdown s = session->score();
+    const ScoringRules& rules = session->catalog().scoring();
+    EXPECT_EQ(s.total(), s.blockPoints + s.pigPoints + s.unusedBirdBonus + s.efficiencyBonus + s.accuracyBonus);
+    EXPECT_EQ(s.unusedBirds, 1);
+    EXPECT_EQ(s.unusedBirdBonus, rules.pointsPerUnusedBird);
+    // The first shot defeats two pigs: one of them is the efficiency bonus.
+    ASSERT_EQ(session->shots().size(), 2u);
+    EXPECT_EQ(session->shots()[0].pigsDefeated, 2);
+    EXPECT_EQ(session->shots()[1].pigsDefeated, 1);
+    EXPECT_EQ(s.efficiencyBonus, rules.efficiencyPointsPerExtraPig);
+    // Both shots met the towers where the preview said (our world follows the RK4 path to about a micrometre).
+    EXPECT_EQ(s.accurateShots, 2);
+    int accuracy = 0;
+    for (const ShotRecord& shot : session->shots())
+    {
+        ASSERT_TRUE(shot.deviationM.has_value());
+        EXPECT_EQ(shot.accuracyPoints,
+                  accuracyPointsFor(*shot.deviationM, rules.accuracyPointsPerShot, rules.accuracyToleranceM));
+        accuracy += shot.accuracyPoints;
+    }
+    EXPECT_EQ(s.accuracyBonus, accuracy);
+    EXPECT_GE(s.accuracyBonus, 2 * rules.accuracyPointsPerShot - 2);
+}
+
+TEST(Scoring, AShotIntoTheGroundEarnsNoAccuracy)
+{
+    const auto session = simulateShots(firstLevel(), {{5.0, 8.0}});
+    const ShotRecord& shot = session->shots()[0];
+    ASSERT_TRUE(shot.deviationM.has_value());
+    EXPECT_EQ(shot.firstTouched, EntityKind::Ground);
+    EXPECT_EQ(shot.accuracyPoints, 0);
+    EXPECT_EQ(session->score().accuracyBonus, 0);
+}
+
+TEST(Scoring, StarsFollowTheLevelsThresholds)
+{
+    EXPECT_EQ(starsFor(50000, false, {10, 20, 30}), 0);
+    EXPECT_EQ(starsFor(5, true, {10, 20, 30}), 1);
+    EXPECT_EQ(starsFor(20, true, {10, 20, 30}), 2);
+    EXPECT_EQ(starsFor(30, true, {10, 20, 30}), 3);
+}
+
+TEST(Slingshot, SameForceSendsAHeavyBirdSlowerAndTheErrorNamesTheTopSpeed)
+{
+    LevelDef level = firstLevel();
+    level.birds = {"blue", "black"};
+    GameSession session(level);
+    const double blue = session.launchSpeedForForce(600.0);
+    EXPECT_DOUBLE_EQ(session.forceForLaunchSpeed(blue), 600.0);
+    EXPECT_DOUBLE_EQ(blue, 600.0 * 0.1 / 1.5);
+    try
+    {
+        session.launch(45.0, session.maxLaunchSpeed() + 1.0);
+        FAIL() << "launched faster than the slingshot allows";
+    }
+    catch (const LaunchError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("can be launched at most 80 m/s"), std::string::npos) << e.what();
+    }
+    session.launch(45.0, 10.0);
+    while (session.phase() == Phase::Flying)
+        session.step();
+    EXPECT_LT(session.launchSpeedForForce(600.0), blue) << "black (8 kg) is slower than blue (1.5 kg)";
+    EXPECT_DOUBLE_EQ(session.maxLaunchSpeed(), 1200.0 * 0.1 / 8.0);
+}
+
+} // namespace
+} // namespace abalike

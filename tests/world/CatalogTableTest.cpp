@@ -1,0 +1,74 @@
+#include <abalike/world/CatalogTable.hpp>
+#include <cstdlib>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <sstream>
+
+namespace abalike
+{
+namespace
+{
+
+const std::string kDocs = std::string(ABALIKE_SOURCE_DIR) + "/docs/materials.md";
+
+TEST(CatalogTable, DocsMaterialsIsGeneratedFromTheCatalog)
+{
+    const std::string generated = catalogMarkdown(Catalog::builtin());
+    if (std::getenv("ABALIKE_UPDATE_DOCS") != nullptr)
+    {
+        std::ofstream(kDocs, std::ios::binary) << generated;
+        GTEST_SKIP() << "wrote " << kDocs;
+    }
+    std::ifstream in(kDocs, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_EQ(text.str(), generated) << kDocs << " is out of date: run with ABALIKE_UPDATE_DOCS=1 to regenerate";
+}
+
+TEST(CatalogTable, SameSizeMaterialsStayInsideTenToOne)
+{
+    const auto& materials = Catalog::builtin().materials();
+    for (const Material& upper : materials)
+        for (const Material& lower : materials)
+            EXPECT_LE(upper.densityKgPerM2 / lower.densityKgPerM2, 10.0) << upper.name << " on " << lower.name;
+}
+
+TEST(CatalogTable, ArealDensityIsBulkDensityTimesSlabDepth)
+{
+    for (const Material& m : Catalog::builtin().materials())
+        EXPECT_DOUBLE_EQ(m.densityKgPerM2, m.bulkDensityKgPerM3 * Catalog::builtin().slabDepthM()) << m.name;
+    EXPECT_THROW(Catalog::fromJson(R"({"slab_depth_m": 0.1, "slingshot": {"release_time_s": 0.1},
+        "scoring": {"points_per_unused_bird": 1}, "damage": {"speed_threshold_mps": 0.5},
+        "materials": [{"name": "x", "bulk_density_kg_per_m3": 500, "density_kg_per_m2": 40, "friction": 0.5,
+                       "restitution": 0.1, "strength_ns": 10, "points": 1}],
+        "birds": [], "pigs": []})"),
+                 std::runtime_error);
+}
+
+TEST(CatalogTable, IceIsLightSlipperyAndBrittleStoneHeavyAndTough)
+{
+    const Catalog& c = Catalog::builtin();
+    const Material& ice = *c.findMaterial("ice");
+    const Material& wood = *c.findMaterial("wood");
+    const Material& stone = *c.findMaterial("stone");
+    EXPECT_LT(ice.densityKgPerM2, wood.densityKgPerM2);
+    EXPECT_LT(ice.friction, wood.friction);
+    EXPECT_LT(ice.strengthNs, wood.strengthNs);
+    EXPECT_GT(stone.densityKgPerM2, wood.densityKgPerM2);
+    EXPECT_GT(stone.strengthNs, wood.strengthNs);
+}
+
+TEST(CatalogTable, BirdsHaveDistinctMassesRadiiAndAbilities)
+{
+    const auto& birds = Catalog::builtin().birds();
+    for (std::size_t i = 0; i < birds.size(); ++i)
+        for (std::size_t j = i + 1; j < birds.size(); ++j)
+        {
+            EXPECT_NE(birds[i].massKg, birds[j].massKg);
+            EXPECT_NE(birds[i].radiusM, birds[j].radiusM);
+            EXPECT_NE(birds[i].ability, birds[j].ability);
+        }
+}
+
+} // namespace
+} // namespace abalike

@@ -1,0 +1,80 @@
+#include <abalike/level/LevelIO.hpp>
+#include <abalike/world/RestCheck.hpp>
+#include <gtest/gtest.h>
+
+namespace abalike
+{
+namespace
+{
+
+const std::string kSource = ABALIKE_SOURCE_DIR;
+
+LevelDef groundLevel()
+{
+    LevelDef level;
+    level.birds = {"red"};
+    level.pigs = {{"small", 30.0, 0.25}};
+    return level;
+}
+
+TEST(RestCheck, FirstLevelStandsForTenSeconds)
+{
+    const LevelDef level = loadLevel(kSource + "/levels/1-1-first-flight.json", Catalog::builtin());
+    const RestReport report = checkRest(level);
+    EXPECT_TRUE(report.passed()) << report.summary();
+    EXPECT_EQ(report.seconds, 10.0);
+    EXPECT_EQ(report.bodies.size(), level.blocks.size() + level.pigs.size());
+    EXPECT_TRUE(report.settled);
+}
+
+TEST(RestCheck, EveryCampaignLevelStandsWithinTheMassRatioGuidance)
+{
+    for (const std::string& path : loadCampaign(kSource + "/levels/campaign.json"))
+    {
+        const RestReport report = checkRest(loadLevel(path, Catalog::builtin()));
+        std::cout << "[ level    ] " << path.substr(path.find_last_of('/') + 1) << ": " << report.summary() << '\n';
+        EXPECT_TRUE(report.passed()) << path << ": " << report.summary();
+        EXPECT_LE(report.worstMassRatio.ratio, 10.0) << path << ": " << report.summary();
+    }
+}
+
+TEST(RestCheck, AFloatingBlockFails)
+{
+    LevelDef level = groundLevel();
+    level.blocks.push_back({BlockShape::Box, "wood", 10.0, 3.0, 1.0, 1.0, 0.0});
+    const RestReport report = checkRest(level, Catalog::builtin(), 2.0);
+    EXPECT_FALSE(report.passed());
+    EXPECT_GT(report.maxDisplacementM, 2.0);
+    EXPECT_EQ(report.worstBody, 0);
+}
+
+TEST(RestCheck, AnOverhangThatCannotStandFails)
+{
+    // A plank whose centre of mass is well beyond its one column tips over.
+    LevelDef level = groundLevel();
+    level.blocks.push_back({BlockShape::Box, "wood", 10.0, 1.0, 0.25, 2.0, 0.0});
+    level.blocks.push_back({BlockShape::Box, "wood", 11.0, 2.125, 2.5, 0.25, 0.0});
+    const RestReport report = checkRest(level, Catalog::builtin(), 5.0);
+    EXPECT_FALSE(report.passed()) << report.summary();
+    EXPECT_GT(report.maxDisplacementM, 0.1);
+}
+
+TEST(RestCheck, ReportsTheHeaviestBodyOnALighterOne)
+{
+    LevelDef level = groundLevel();
+    level.blocks.push_back({BlockShape::Box, "ice", 10.0, 0.1, 2.0, 0.2, 0.0});   // 16 kg
+    level.blocks.push_back({BlockShape::Box, "stone", 10.0, 0.7, 1.0, 1.0, 0.0}); // 240 kg: 15:1
+    const RestReport report = checkRest(level, Catalog::builtin(), 1.0);
+    EXPECT_GT(report.worstMassRatio.ratio, 10.0);
+    EXPECT_EQ(report.worstMassRatio.heavier, "block 1 (stone)");
+    EXPECT_EQ(report.worstMassRatio.lighter, "block 0 (ice)");
+}
+
+TEST(RestCheck, SummaryNamesTheVerdict)
+{
+    const RestReport report = checkRest(groundLevel(), Catalog::builtin(), 1.0);
+    EXPECT_EQ(report.summary().rfind("stands after 1.0 s", 0), 0u) << report.summary();
+}
+
+} // namespace
+} // namespace abalike
