@@ -1,8 +1,10 @@
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/world/Catalog.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <gtest/gtest.h>
+#include <set>
 
 namespace abalike
 {
@@ -34,16 +36,18 @@ TEST_P(BundledLevel, LoadsWithBirdsPigsAndEveryMaterial)
 }
 
 INSTANTIATE_TEST_SUITE_P(Levels, BundledLevel, ::testing::ValuesIn(bundledLevels()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
+                         [](const ::testing::TestParamInfo<std::string>& info)
+                         {
                              std::string name = std::filesystem::path(info.param).stem().string();
-                             std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(c); }, '_');
+                             std::replace_if(
+                                 name.begin(), name.end(), [](char c) { return !std::isalnum(c); }, '_');
                              return name;
                          });
 
 TEST(LevelFiles, FirstLevelHasTheSliceContent)
 {
-    const LevelDef level = loadLevel(std::string(ABALIKE_SOURCE_DIR) + "/levels/1-1-first-flight.json",
-                                     Catalog::builtin());
+    const LevelDef level =
+        loadLevel(std::string(ABALIKE_SOURCE_DIR) + "/levels/1-1-first-flight.json", Catalog::builtin());
     EXPECT_EQ(level.id, "1-1");
     EXPECT_GE(level.pigs.size(), 2u);
     EXPECT_EQ(level.birds.size(), 3u);
@@ -60,6 +64,45 @@ TEST(LevelFiles, CampaignListsExistingLevels)
     ASSERT_FALSE(paths.empty());
     for (const std::string& path : paths)
         EXPECT_TRUE(std::filesystem::exists(path)) << path;
+}
+
+TEST(LevelFiles, CampaignHasTwentyLevelsInFourEpisodesWithUniqueIdsAndReferenceShots)
+{
+    const auto episodes = loadCampaignEpisodes(std::string(ABALIKE_SOURCE_DIR) + "/levels/campaign.json");
+    EXPECT_GE(episodes.size(), 4u);
+    std::set<std::string> ids;
+    std::size_t count = 0;
+    for (const CampaignEpisode& episode : episodes)
+        for (const std::string& path : episode.levelPaths)
+        {
+            const LevelDef level = loadLevel(path, Catalog::builtin());
+            EXPECT_EQ(level.episode, episode.id) << path;
+            EXPECT_TRUE(ids.insert(level.id).second) << "duplicate id " << level.id;
+            EXPECT_TRUE(level.referenceShot) << path;
+            ++count;
+        }
+    EXPECT_GE(count, 20u);
+}
+
+TEST(LevelFiles, CampaignTeachesEveryWorldAndATimeLimit)
+{
+    std::set<double> gravities;
+    bool timeLimit = false;
+    bool wind = false;
+    bool gusts = false;
+    for (const std::string& path : loadCampaign(std::string(ABALIKE_SOURCE_DIR) + "/levels/campaign.json"))
+    {
+        const LevelDef level = loadLevel(path, Catalog::builtin());
+        gravities.insert(level.environment.gravity);
+        timeLimit = timeLimit || level.timeLimitS.has_value();
+        wind = wind || level.environment.windX != 0.0;
+        gusts = gusts || level.environment.gusts.has_value();
+    }
+    for (const double g : {9.81, 1.62, 3.71, 24.79})
+        EXPECT_EQ(gravities.count(g), 1u) << g;
+    EXPECT_TRUE(timeLimit);
+    EXPECT_TRUE(wind);
+    EXPECT_TRUE(gusts);
 }
 
 } // namespace

@@ -1,6 +1,9 @@
 #pragma once
 
+#include <abalike/flight/FlightModel.hpp>
+
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,9 +13,10 @@ namespace abalike
 /// Shapes a block can have.
 enum class BlockShape
 {
-    Box,      ///< width x height rectangle (squares, planks, columns)
-    Circle,   ///< diameter = width
-    Triangle, ///< right triangle with legs width and height
+    Box,       ///< width x height rectangle (squares, planks, columns)
+    Circle,    ///< diameter = width
+    Triangle,  ///< right triangle with legs width and height
+    HollowBox, ///< width x height frame of four walls wallM thick, one body ("hollow_box" in JSON)
 };
 
 /// A block of building material. Position is the centre of its bounding box (m), angle counter-clockwise.
@@ -25,6 +29,7 @@ struct BlockDef
     double widthM = 1.0;
     double heightM = 1.0;
     double angleDeg = 0.0;
+    double wallM = 0.1; ///< HollowBox: wall thickness (m)
 };
 
 /// A pig; it rests on whatever is below its centre.
@@ -53,21 +58,31 @@ struct SlingshotDef
     double maxForceN = 1200; ///< largest launch force; v0 = F t_release / m
 };
 
-/// The air and gravity of a level. Absent terms (zero) are not simulated.
+/// The air and gravity of a level. Absent terms (zero, or no gusts) are not simulated.
 struct EnvironmentDef
 {
-    double gravity = 9.81;     ///< m/s^2 along -y
-    double airDensity = 0.0;   ///< kg/m^3; 0 is vacuum (no drag)
-    double windX = 0.0;        ///< m/s
+    double gravity = 9.81;   ///< m/s^2 along -y
+    double airDensity = 0.0; ///< kg/m^3; 0 is vacuum (no drag)
+    double windX = 0.0;      ///< m/s
     double windY = 0.0;
+    std::optional<GustDef> gusts; ///< time-varying wind on top of windX/windY (acts through drag)
+};
+
+/// A shot that shows off a level (benchmarks time it; designers replay it): angle in degrees, speed in m/s.
+struct ReferenceShotDef
+{
+    double angleDeg = 45.0;
+    double speedMps = 0.0;
 };
 
 /// A level, as designers write it in JSON (levels/*.json).
 struct LevelDef
 {
+    int format = 1; ///< version of the file format
     std::string id;
     std::string title;
-    std::string lesson; ///< the physics concept it teaches ("concept" in JSON)
+    std::string episode; ///< id of the campaign episode it belongs to; empty when it stands alone
+    std::string lesson;  ///< the physics concept it teaches ("concept" in JSON)
     std::vector<std::string> hints;
     double groundY = 0.0;
     SlingshotDef slingshot;
@@ -77,7 +92,9 @@ struct LevelDef
     std::vector<TerrainDef> terrain;
     EnvironmentDef environment;
     std::array<int, 3> starScores{10000, 20000, 30000}; ///< score for one, two and three stars
-    std::string sourcePath; ///< file it was loaded from, for messages
+    std::optional<double> timeLimitS;                   ///< game time (s) to defeat every pig; none when absent
+    std::optional<ReferenceShotDef> referenceShot;      ///< a first shot that shows the level off
+    std::string sourcePath;                             ///< file it was loaded from, for messages
 };
 
 } // namespace abalike

@@ -16,8 +16,8 @@ class Catalog;
 struct LevelIssue
 {
     std::string file;
-    int line = 0;   ///< 1-based; 0 when unknown
-    int column = 0; ///< 1-based; 0 when unknown
+    int line = 0;        ///< 1-based; 0 when unknown
+    int column = 0;      ///< 1-based; 0 when unknown
     std::string pointer; ///< JSON pointer of the offending value, e.g. /blocks/3/material
     std::string message;
 
@@ -42,7 +42,22 @@ LevelDef loadLevel(const std::string& path, const Catalog& catalog);
 /// Parses level JSON text; fileName is used in messages. Throws LevelLoadError.
 LevelDef parseLevel(std::string_view text, const std::string& fileName, const Catalog& catalog);
 
-/// The levels of the bundled campaign manifest, in play order (paths resolved against the manifest's folder).
+/// One episode of a campaign manifest.
+struct CampaignEpisode
+{
+    std::string id;
+    std::string title;
+    std::vector<std::string> levelPaths; ///< resolved against the manifest's folder
+};
+
+/// True if the file is a JSON object with "episodes" (a campaign manifest) rather than a level; false for anything
+/// unreadable or invalid, which the level loader then reports.
+bool isCampaignManifest(const std::string& path);
+
+/// The episodes of a campaign manifest (levels/campaign.json), in play order. Throws LevelLoadError.
+std::vector<CampaignEpisode> loadCampaignEpisodes(const std::string& manifestPath);
+
+/// The levels of a campaign manifest, in play order (paths resolved against the manifest's folder).
 std::vector<std::string> loadCampaign(const std::string& manifestPath);
 
 } // namespace abalike

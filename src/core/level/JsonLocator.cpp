@@ -61,6 +61,17 @@ std::pair<int, int> JsonLocator::lineColumn(std::string_view text, std::size_t o
     return {line, column};
 }
 
+std::string_view JsonLocator::rawScalar(const std::string& pointer) const
+{
+    const auto it = m_offsets.find(pointer);
+    if (it == m_offsets.end())
+        return {};
+    std::size_t end = it->second;
+    while (end < m_text.size() && std::string_view(",}] \n\r\t").find(m_text[end]) == std::string_view::npos)
+        ++end;
+    return m_text.substr(it->second, end - it->second);
+}
+
 void JsonLocator::skipSpace()
 {
     while (m_pos < m_text.size() &&
@@ -101,12 +112,14 @@ void JsonLocator::scanValue(const std::string& pointer)
         skipSpace();
         while (m_pos < m_text.size() && m_text[m_pos] != '}')
         {
-            const std::size_t keyPos = m_pos;
+            const std::size_t keyPos = m_pos + 1; // a key's errors point at its name, inside the quotes
             const std::string key = scanString();
             const std::string child = pointer + "/" + escapePointerToken(key);
             skipSpace();
             ++m_pos; // ':'
             skipSpace();
+            if (m_offsets.count(child + "#key") != 0)
+                m_duplicates.push_back(child);
             scanValue(child);
             m_offsets.emplace(child + "#key", keyPos);
             skipSpace();

@@ -5,6 +5,7 @@
 #include <string_view>
 #include <unordered_map>
 #include <utility>
+#include <vector>
 
 namespace abalike
 {
@@ -23,6 +24,12 @@ public:
     /// Line and column of a byte offset (1-based; columns count bytes).
     static std::pair<int, int> lineColumn(std::string_view text, std::size_t offset);
 
+    /// The source text of the scalar at pointer (a number as written, e.g. "1e400"); empty if not located.
+    std::string_view rawScalar(const std::string& pointer) const;
+
+    /// Pointers of keys that appear more than once in their object (JSON parsers silently keep the last).
+    const std::vector<std::string>& duplicateKeys() const { return m_duplicates; }
+
 private:
     void scanValue(const std::string& pointer);
     void skipSpace();
@@ -32,6 +39,7 @@ private:
     std::size_t m_pos = 0;
     int m_depth = 0;
     std::unordered_map<std::string, std::size_t> m_offsets;
+    std::vector<std::string> m_duplicates;
 };
 
 } // namespace abalike

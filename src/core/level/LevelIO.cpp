@@ -1,13 +1,13 @@
 #include "level/JsonLocator.hpp"
+#include "level/JsonText.hpp"
+#include "level/LevelLimits.hpp"
 #include "level/LevelReader.hpp"
+#include "level/LevelSections.hpp"
 
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/world/Catalog.hpp>
 
-#include <cctype>
-#include <filesystem>
-#include <fstream>
-#include <limits>
+#include <cmath>
 #include <sstream>
 
 namespace abalike
@@ -17,17 +17,16 @@ namespace
 {
 
 using json = nlohmann::json;
+using namespace abalike::limits;
 
-constexpr std::size_t kMaxLevelBytes = 4u << 20; // a large level is a few kB
-constexpr int kMaxNesting = 64;                  // a level nests 4 deep
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr NumberRange kCoordinate{-kWorldExtentM, kWorldExtentM, "m", "outside the world"};
+constexpr NumberRange kAngle{-kMaxAngleDeg, kMaxAngleDeg, "degrees"};
+constexpr NumberRange kMovingSize{kMinBodySizeM, kMaxMovingSizeM, "m",
+                                  "outside the sizes Box2D simulates well for a moving body"};
+constexpr NumberRange kStaticSize{kMinBodySizeM, kMaxStaticSizeM, "m",
+                                  "outside the sizes Box2D simulates well for a static body"};
 
-/// Box2D simulates moving bodies of 0.1 to 10 m and static ones up to 50 m well; the world should stay within
-/// about 2 km of the origin.
-constexpr double kMinBodySize = 0.1;
-constexpr double kMaxBodySize = 10.0;
-constexpr double kMaxStaticSize = 50.0;
-constexpr double kWorldExtent = 2000.0;
+constexpr JsonTextLimits kLevelText{kMaxLevelBytes, kMaxNesting, "a level"};
 
 std::vector<std::string> names(const auto& items)
 {
@@ -59,63 +58,17 @@ void checkName(LevelReader& reader, const std::string& pointer, const std::strin
     reader.error(pointer, message);
 }
 
-/// Deepest bracket nesting outside strings; stops counting once past the limit.
-int nestingDepth(std::string_view text)
-{
-    int depth = 0;
-    int deepest = 0;
-    bool inString = false;
-    for (std::size_t i = 0; i < text.size() && deepest <= kMaxNesting; ++i)
-    {
-        const char c = text[i];
-        if (inString)
-        {
-            if (c == '\\')
-                ++i;
-            else if (c == '"')
-                inString = false;
-        }
-        else if (c == '"')
-            inString = true;
-        else if (c == '{' || c == '[')
-            deepest = std::max(deepest, ++depth);
-        else if (c == '}' || c == ']')
-            --depth;
-    }
-    return deepest;
-}
-
-/// nlohmann reports the byte after the offending token; editors want its first character.
-std::size_t tokenStart(std::string_view text, std::size_t byteAfter)
-{
-    std::size_t end = std::min(byteAfter, text.size());
-    if (end == 0)
-        return 0;
-    std::size_t i = end - 1;
-    if (text[i] == '"')
-    {
-        // Back to the opening quote of this string.
-        while (i > 0 && !(text[i - 1] == '"' && (i < 2 || text[i - 2] != '\\')))
-            --i;
-        return i > 0 ? i - 1 : 0;
-    }
-    while (i > 0 && (std::isalnum(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '.' ||
-                     text[i - 1] == '-' || text[i - 1] == '+'))
-        --i;
-    return i;
-}
-
 void readBlocks(LevelReader& r, const json& root, LevelDef& level, const Catalog& catalog)
 {
     const auto it = root.find("blocks");
-    if (it == root.end() || !r.array(*it, "/blocks"))
+    if (it == root.end() || !r.array(*it, "/blocks", 0, kMaxBlocks, "blocks"))
         return;
     const auto materials = names(catalog.materials());
     for (std::size_t i = 0; i < it->size(); ++i)
     {
         const json& b = (*it)[i];
         const std::string p = "/blocks/" + std::to_string(i);
-        if (!r.object(b, p, {"shape", "material", "x", "y", "w", "h", "angle_deg"}))
+        if (!r.object(b, p, {"shape", "material", "x", "y", "w", "h", "angle_deg", "wall"}))
             continue;
         BlockDef block;
         const std::string shape = r.string(b, p, "shape", "box", false);
@@ -125,17 +78,34 @@ void readBlocks(LevelReader& r, const json& root, LevelDef& level, const Catalog
             block.shape = BlockShape::Circle;
         else if (shape == "triangle")
             block.shape = BlockShape::Triangle;
+        else if (shape == "hollow_box")
+            block.shape = BlockShape::HollowBox;
         else
-            r.error(p + "/shape", "unknown shape \"" + shape + "\" (expected box, circle or triangle)");
+            checkName(r, p + "/shape", "shape", shape, {"box", "circle", "triangle", "hollow_box"});
         block.material = r.string(b, p, "material", "wood", true);
         checkName(r, p + "/material", "material", block.material, materials);
-        block.x = r.number(b, p, "x", 0.0, true, -kWorldExtent, kWorldExtent);
-        block.y = r.number(b, p, "y", 0.0, true, -kWorldExtent, kWorldExtent);
-        block.widthM = r.number(b, p, "w", 1.0, true, kMinBodySize, kMaxBodySize);
-        block.heightM = r.number(b, p, "h", 1.0, block.shape != BlockShape::Circle, kMinBodySize, kMaxBodySize);
+        block.x = r.number(b, p, "x", 0.0, true, kCoordinate);
+        block.y = r.number(b, p, "y", 0.0, true, kCoordinate);
+        block.widthM = r.number(b, p, "w", 1.0, true, kMovingSize);
         if (block.shape == BlockShape::Circle)
+        {
+            if (b.contains("h"))
+                r.error(p + "/h", "a circle's only size is its diameter \"w\" (expected no \"h\", got " +
+                                      describeJsonType(b["h"]) + ")");
             block.heightM = block.widthM;
-        block.angleDeg = r.number(b, p, "angle_deg", 0.0, false, -360.0, 360.0);
+        }
+        else
+            block.heightM = r.number(b, p, "h", 1.0, true, kMovingSize);
+        block.angleDeg = r.number(b, p, "angle_deg", 0.0, false, kAngle);
+        if (block.shape == BlockShape::HollowBox)
+        {
+            // Each wall is a Box2D polygon at least 5 cm thick, and the frame must leave a hole of 10 cm or more.
+            const double maxWall = std::max(0.05, 0.5 * std::min(block.widthM, block.heightM) - 0.05);
+            block.wallM =
+                r.number(b, p, "wall", 0.1, false, NumberRange{0.05, maxWall, "m", "does not leave a hollow"});
+        }
+        else if (b.contains("wall"))
+            r.error(p + "/wall", "only a \"hollow_box\" has a wall thickness (got shape \"" + shape + "\")");
         level.blocks.push_back(block);
     }
 }
@@ -148,10 +118,8 @@ void readPigs(LevelReader& r, const json& root, LevelDef& level, const Catalog& 
         r.error("", "missing required key \"pigs\" (expected an array with at least one pig)");
         return;
     }
-    if (!r.array(*it, "/pigs"))
+    if (!r.array(*it, "/pigs", 1, kMaxPigs, "pigs"))
         return;
-    if (it->empty())
-        r.error("/pigs", "a level needs at least one pig (got an empty array)");
     const auto pigTypes = names(catalog.pigs());
     for (std::size_t i = 0; i < it->size(); ++i)
     {
@@ -162,8 +130,8 @@ void readPigs(LevelReader& r, const json& root, LevelDef& level, const Catalog& 
         PigDef pig;
         pig.type = r.string(g, p, "type", "small", false);
         checkName(r, p + "/type", "pig type", pig.type, pigTypes);
-        pig.x = r.number(g, p, "x", 0.0, true, -kWorldExtent, kWorldExtent);
-        pig.y = r.number(g, p, "y", 0.0, true, -kWorldExtent, kWorldExtent);
+        pig.x = r.number(g, p, "x", 0.0, true, kCoordinate);
+        pig.y = r.number(g, p, "y", 0.0, true, kCoordinate);
         level.pigs.push_back(pig);
     }
 }
@@ -171,7 +139,7 @@ void readPigs(LevelReader& r, const json& root, LevelDef& level, const Catalog& 
 void readTerrain(LevelReader& r, const json& root, LevelDef& level)
 {
     const auto it = root.find("terrain");
-    if (it == root.end() || !r.array(*it, "/terrain"))
+    if (it == root.end() || !r.array(*it, "/terrain", 0, kMaxTerrain, "terrain pieces"))
         return;
     for (std::size_t i = 0; i < it->size(); ++i)
     {
@@ -180,11 +148,11 @@ void readTerrain(LevelReader& r, const json& root, LevelDef& level)
         if (!r.object(t, p, {"x", "y", "w", "h", "angle_deg"}))
             continue;
         TerrainDef terrain;
-        terrain.x = r.number(t, p, "x", 0.0, true, -kWorldExtent, kWorldExtent);
-        terrain.y = r.number(t, p, "y", 0.0, true, -kWorldExtent, kWorldExtent);
-        terrain.widthM = r.number(t, p, "w", 1.0, true, kMinBodySize, kMaxStaticSize);
-        terrain.heightM = r.number(t, p, "h", 1.0, true, kMinBodySize, kMaxStaticSize);
-        terrain.angleDeg = r.number(t, p, "angle_deg", 0.0, false, -360.0, 360.0);
+        terrain.x = r.number(t, p, "x", 0.0, true, kCoordinate);
+        terrain.y = r.number(t, p, "y", 0.0, true, kCoordinate);
+        terrain.widthM = r.number(t, p, "w", 1.0, true, kStaticSize);
+        terrain.heightM = r.number(t, p, "h", 1.0, true, kStaticSize);
+        terrain.angleDeg = r.number(t, p, "angle_deg", 0.0, false, kAngle);
         level.terrain.push_back(terrain);
     }
 }
@@ -197,10 +165,8 @@ void readBirds(LevelReader& r, const json& root, LevelDef& level, const Catalog&
         r.error("", "missing required key \"birds\" (expected an array of bird names)");
         return;
     }
-    if (!r.array(*it, "/birds"))
+    if (!r.array(*it, "/birds", 1, kMaxBirds, "birds"))
         return;
-    if (it->empty())
-        r.error("/birds", "a level needs at least one bird (got an empty array)");
     const auto birdTypes = names(catalog.birds());
     for (std::size_t i = 0; i < it->size(); ++i)
     {
@@ -216,54 +182,52 @@ void readBirds(LevelReader& r, const json& root, LevelDef& level, const Catalog&
     }
 }
 
-void readEnvironment(LevelReader& r, const json& root, LevelDef& level)
+void readSlingshot(LevelReader& r, const json& root, LevelDef& level)
 {
-    const auto it = root.find("environment");
-    if (it == root.end() || !r.object(*it, "/environment", {"gravity", "air_density", "wind"}))
-        return;
-    EnvironmentDef& env = level.environment;
-    env.gravity = r.number(*it, "/environment", "gravity", 9.81, false, 0.0, 1000.0);
-    env.airDensity = r.number(*it, "/environment", "air_density", 0.0, false, 0.0, 100.0);
-    if (const auto wind = it->find("wind"); wind != it->end())
+    const auto sling = root.find("slingshot");
+    if (sling == root.end())
+        r.error("", "missing required key \"slingshot\" (expected {\"x\", \"y\", \"max_force_n\"})");
+    else if (r.object(*sling, "/slingshot", {"x", "y", "max_force_n"}))
     {
-        if (!wind->is_array() || wind->size() != 2 || !(*wind)[0].is_number() || !(*wind)[1].is_number())
-            r.error("/environment/wind", "expected [wx, wy] in m/s, got " + describeJsonType(*wind));
-        else
-        {
-            env.windX = (*wind)[0].get<double>();
-            env.windY = (*wind)[1].get<double>();
-        }
+        level.slingshot.x = r.number(*sling, "/slingshot", "x", 0.0, true, kCoordinate);
+        level.slingshot.y = r.number(*sling, "/slingshot", "y", 1.5, true, kCoordinate);
+        level.slingshot.maxForceN =
+            r.number(*sling, "/slingshot", "max_force_n", 1200.0, false, NumberRange{kMinForceN, kMaxForceN, "N"});
     }
 }
 
 void readStars(LevelReader& r, const json& root, LevelDef& level)
 {
     const auto it = root.find("stars");
-    if (it == root.end())
+    if (it == root.end() || !r.array(*it, "/stars", 3, 3, "star scores [one, two, three]"))
         return;
-    if (!it->is_array() || it->size() != 3)
-    {
-        r.error("/stars", "expected three increasing scores [one, two, three], got " + describeJsonType(*it));
-        return;
-    }
     for (std::size_t i = 0; i < 3; ++i)
     {
         const json& v = (*it)[i];
-        if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > 100000000)
+        const std::string p = "/stars/" + std::to_string(i);
+        const auto score = r.numberAt(v, p, NumberRange{0.0, static_cast<double>(kMaxStarScore), "points"});
+        if (!score)
+            return;
+        if (*score != std::floor(*score))
         {
-            r.error("/stars/" + std::to_string(i), "expected a whole score >= 0, got " + describeJsonType(v));
+            r.error(p, "expected a whole score, got " + describeJsonType(v));
             return;
         }
-        level.starScores[i] = static_cast<int>(v.get<long long>());
+        level.starScores[i] = static_cast<int>(*score);
     }
     if (!(level.starScores[0] <= level.starScores[1] && level.starScores[1] <= level.starScores[2]))
-        r.error("/stars", "star scores must not decrease (one <= two <= three)");
+    {
+        std::ostringstream message;
+        message << "star scores must not decrease (expected one <= two <= three, got " << level.starScores[0] << ", "
+                << level.starScores[1] << ", " << level.starScores[2] << ")";
+        r.error("/stars", message.str());
+    }
 }
 
 void readHints(LevelReader& r, const json& root, LevelDef& level)
 {
     const auto it = root.find("hints");
-    if (it == root.end() || !r.array(*it, "/hints"))
+    if (it == root.end() || !r.array(*it, "/hints", 0, kMaxHints, "hints"))
         return;
     for (std::size_t i = 0; i < it->size(); ++i)
     {
@@ -272,6 +236,45 @@ void readHints(LevelReader& r, const json& root, LevelDef& level)
         else
             r.error("/hints/" + std::to_string(i), "expected a string, got " + describeJsonType((*it)[i]));
     }
+}
+
+void readReferenceShot(LevelReader& r, const json& root, LevelDef& level)
+{
+    const auto it = root.find("reference_shot");
+    if (it == root.end() || !r.array(*it, "/reference_shot", 2, 2, "numbers [angle_deg, speed_mps]"))
+        return;
+    const auto angle = r.numberAt((*it)[0], "/reference_shot/0", NumberRange{-90.0, 90.0, "degrees"});
+    const auto speed = r.numberAt((*it)[1], "/reference_shot/1", NumberRange{0.0, kMaxLaunchSpeedMps, "m/s"});
+    if (angle && speed)
+        level.referenceShot = ReferenceShotDef{*angle, *speed};
+}
+
+/// A string field that must not be empty.
+std::string nonEmptyString(LevelReader& r, const json& root, const char* key, bool required)
+{
+    std::string value = r.string(root, "", key, "", required);
+    if (root.contains(key) && root[key].is_string() && value.empty())
+        r.error(std::string("/") + key, "expected a non-empty string, got \"\"");
+    return value;
+}
+
+void readHeader(LevelReader& r, const json& root, LevelDef& level)
+{
+    if (const auto format = root.find("format"); format == root.end())
+        r.error("", "missing required key \"format\" (expected 1, the version of the level format)");
+    else if (const auto version = r.numberAt(*format, "/format", NumberRange{0.0, 1.0e9}); version && *version != 1.0)
+        r.error("/format", "unsupported format version (expected 1, got " + format->dump() + ")");
+    if (const auto schema = root.find("$schema"); schema != root.end() && !schema->is_string())
+        r.error("/$schema", "expected the path of the level schema as a string, got " + describeJsonType(*schema));
+    level.id = nonEmptyString(r, root, "id", true);
+    level.title = nonEmptyString(r, root, "title", true);
+    level.episode = nonEmptyString(r, root, "episode", false);
+    level.lesson = r.string(root, "", "concept", "", false);
+    if (root.contains("time_limit_s"))
+        level.timeLimitS =
+            r.number(root, "", "time_limit_s", 0.0, true, NumberRange{kMinTimeLimitS, kMaxTimeLimitS, "s"});
+    if (const auto ground = root.find("ground"); ground != root.end() && r.object(*ground, "/ground", {"y"}))
+        level.groundY = r.number(*ground, "/ground", "y", 0.0, false, kCoordinate);
 }
 
 } // namespace
@@ -291,67 +294,32 @@ LevelLoadError::LevelLoadError(std::vector<LevelIssue> issues)
 
 LevelDef parseLevel(std::string_view text, const std::string& fileName, const Catalog& catalog)
 {
-    auto fail = [&](int line, int column, const std::string& message) {
-        throw LevelLoadError({LevelIssue{fileName, line, column, "", message}});
-    };
-    if (text.size() > kMaxLevelBytes)
-        fail(1, 1, "file is " + std::to_string(text.size()) + " bytes (expected a level of at most " +
-                       std::to_string(kMaxLevelBytes) + " bytes)");
-    if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
-        fail(1, 1, "empty file (expected a JSON object describing a level)");
-    if (nestingDepth(text) > kMaxNesting)
-        fail(1, 1, "JSON nested more than " + std::to_string(kMaxNesting) + " levels deep (a level needs 4)");
-
-    json root;
-    try
-    {
-        root = json::parse(text);
-    }
-    catch (const json::parse_error& e)
-    {
-        const auto [line, column] = JsonLocator::lineColumn(text, tokenStart(text, e.byte));
-        std::string what = e.what();
-        // nlohmann prefixes "[json.exception.parse_error.101] parse error at line 1, column 2: "; keep the reason.
-        if (const auto colon = what.find(": "); colon != std::string::npos)
-            what = what.substr(colon + 2);
-        fail(line, column, "invalid JSON: " + what);
-    }
-    catch (const json::exception& e)
-    {
-        fail(1, 1, std::string("invalid JSON: ") + e.what());
-    }
-
+    const json root = parseJsonText(text, fileName, kLevelText);
     const JsonLocator locator(text);
     LevelReader r(fileName, locator);
+    r.duplicateKeys();
     LevelDef level;
     level.sourcePath = fileName;
-    if (!r.object(root, "", {"$schema", "format", "id", "title", "concept", "hints", "ground", "slingshot", "birds",
-                             "blocks", "pigs", "terrain", "environment", "stars"}))
+    if (!r.object(root, "",
+                  {"$schema", "format", "id", "title", "episode", "concept", "hints", "ground", "slingshot", "birds",
+                   "blocks", "pigs", "terrain", "environment", "stars", "time_limit_s", "reference_shot"}))
         throw LevelLoadError(r.take());
 
-    const double format = r.number(root, "", "format", 1.0, true, 1.0, 1.0);
-    (void)format;
-    level.id = r.string(root, "", "id", "", true);
-    level.title = r.string(root, "", "title", "", true);
-    level.lesson = r.string(root, "", "concept", "", false);
+    readHeader(r, root, level);
     readHints(r, root, level);
-    if (const auto ground = root.find("ground"); ground != root.end() && r.object(*ground, "/ground", {"y"}))
-        level.groundY = r.number(*ground, "/ground", "y", 0.0, false, -kWorldExtent, kWorldExtent);
-    if (const auto sling = root.find("slingshot"); sling == root.end())
-        r.error("", "missing required key \"slingshot\" (expected {\"x\", \"y\", \"max_force_n\"})");
-    else if (r.object(*sling, "/slingshot", {"x", "y", "max_force_n"}))
-    {
-        level.slingshot.x = r.number(*sling, "/slingshot", "x", 0.0, true, -kWorldExtent, kWorldExtent);
-        level.slingshot.y = r.number(*sling, "/slingshot", "y", 1.5, true, -kWorldExtent, kWorldExtent);
-        level.slingshot.maxForceN = r.number(*sling, "/slingshot", "max_force_n", 1200.0, false, 1.0, 1.0e6);
-    }
+    readSlingshot(r, root, level);
     readBirds(r, root, level, catalog);
     readBlocks(r, root, level, catalog);
     readPigs(r, root, level, catalog);
     readTerrain(r, root, level);
     readEnvironment(r, root, level);
     readStars(r, root, level);
+    readReferenceShot(r, root, level);
 
+    // Geometry and reach only mean something once every field read cleanly; a fallback value would only add
+    // confusing follow-on errors.
+    if (r.ok())
+        checkLevel(level, catalog, r);
     if (!r.ok())
         throw LevelLoadError(r.take());
     return level;
@@ -359,73 +327,7 @@ LevelDef parseLevel(std::string_view text, const std::string& fileName, const Ca
 
 LevelDef loadLevel(const std::string& path, const Catalog& catalog)
 {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw LevelLoadError({LevelIssue{path, 0, 0, "", "is a directory (expected a level .json file)"}});
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw LevelLoadError({LevelIssue{path, 0, 0, "", "cannot open file (does it exist and is it readable?)"}});
-    std::string text;
-    char buffer[65536];
-    while (in.read(buffer, sizeof buffer) || in.gcount() > 0)
-    {
-        text.append(buffer, static_cast<std::size_t>(in.gcount()));
-        if (text.size() > kMaxLevelBytes)
-            break; // parseLevel reports the size; no need to read a huge file to the end
-    }
-    return parseLevel(text, path, catalog);
-}
-
-std::vector<std::string> loadCampaign(const std::string& manifestPath)
-{
-    std::ifstream in(manifestPath, std::ios::binary);
-    if (!in)
-        throw LevelLoadError({LevelIssue{manifestPath, 0, 0, "", "cannot open campaign manifest"}});
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    const std::string text = buffer.str();
-    json root;
-    try
-    {
-        root = json::parse(text);
-    }
-    catch (const json::exception& e)
-    {
-        throw LevelLoadError({LevelIssue{manifestPath, 0, 0, "", std::string("invalid JSON: ") + e.what()}});
-    }
-    const JsonLocator locator(text);
-    LevelReader r(manifestPath, locator);
-    std::vector<std::string> paths;
-    const auto folder = std::filesystem::path(manifestPath).parent_path();
-    if (r.object(root, "", {"$schema", "format", "title", "episodes"}))
-    {
-        const auto episodes = root.find("episodes");
-        if (episodes == root.end())
-            r.error("", "missing required key \"episodes\"");
-        else if (r.array(*episodes, "/episodes"))
-        {
-            for (std::size_t e = 0; e < episodes->size(); ++e)
-            {
-                const json& episode = (*episodes)[e];
-                const std::string p = "/episodes/" + std::to_string(e);
-                if (!r.object(episode, p, {"id", "title", "levels"}))
-                    continue;
-                const auto levels = episode.find("levels");
-                if (levels == episode.end() || !r.array(*levels, p + "/levels"))
-                    continue;
-                for (std::size_t l = 0; l < levels->size(); ++l)
-                {
-                    if ((*levels)[l].is_string())
-                        paths.push_back((folder / (*levels)[l].get<std::string>()).string());
-                    else
-                        r.error(p + "/levels/" + std::to_string(l), "expected a level file name");
-                }
-            }
-        }
-    }
-    if (!r.ok())
-        throw LevelLoadError(r.take());
-    return paths;
+    return parseLevel(readJsonFile(path, kLevelText), path, catalog);
 }
 
 } // namespace abalike

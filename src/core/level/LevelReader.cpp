@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
 namespace abalike
 {
@@ -106,10 +107,53 @@ bool LevelReader::array(const json& value, const std::string& pointer)
     return false;
 }
 
+bool LevelReader::array(const json& value, const std::string& pointer, std::size_t minItems, std::size_t maxItems,
+                        const char* items)
+{
+    if (!value.is_array())
+    {
+        error(pointer, std::string("expected an array of ") + items + ", got " + describeJsonType(value));
+        return false;
+    }
+    if (value.size() < minItems || value.size() > maxItems)
+    {
+        std::ostringstream message;
+        message << "wrong number of " << items << " (expected ";
+        if (minItems == maxItems)
+            message << minItems;
+        else
+            message << minItems << " to " << maxItems;
+        message << ", got " << value.size() << ")";
+        error(pointer, message.str());
+        return false;
+    }
+    return true;
+}
+
+std::vector<LevelIssue> LevelReader::take()
+{
+    std::stable_sort(m_issues.begin(), m_issues.end(),
+                     [](const LevelIssue& a, const LevelIssue& b)
+                     { return std::tie(a.line, a.column) < std::tie(b.line, b.column); });
+    return std::move(m_issues);
+}
+
+void LevelReader::duplicateKeys()
+{
+    for (const std::string& pointer : m_locator.duplicateKeys())
+        keyError(pointer, "duplicate key \"" + pointer.substr(pointer.rfind('/') + 1) +
+                              "\" (expected each key once in an object; a JSON reader would silently keep the last)");
+}
+
 double LevelReader::number(const json& object, const std::string& pointer, const char* key, double fallback,
                            bool required, double min, double max)
 {
-    const std::string here = pointer + "/" + key;
+    return number(object, pointer, key, fallback, required, NumberRange{min, max});
+}
+
+double LevelReader::number(const json& object, const std::string& pointer, const char* key, double fallback,
+                           bool required, const NumberRange& range)
+{
     const auto it = object.find(key);
     if (it == object.end())
     {
@@ -117,25 +161,34 @@ double LevelReader::number(const json& object, const std::string& pointer, const
             error(pointer, std::string("missing required key \"") + key + "\" (expected a number)");
         return fallback;
     }
-    if (!it->is_number())
+    return numberAt(*it, pointer + "/" + key, range).value_or(fallback);
+}
+
+std::optional<double> LevelReader::numberAt(const json& value, const std::string& pointer, const NumberRange& range)
+{
+    if (!value.is_number())
     {
-        error(here, "expected a number, got " + describeJsonType(*it));
-        return fallback;
+        error(pointer, "expected a number, got " + describeJsonType(value));
+        return std::nullopt;
     }
-    const double value = it->get<double>();
-    if (!std::isfinite(value))
+    const double number = value.get<double>();
+    if (!std::isfinite(number))
     {
-        error(here, "expected a finite number, got " + it->dump());
-        return fallback;
+        // The parser turned a literal beyond a double's range into infinity; quote it as written.
+        const std::string_view raw = m_locator.rawScalar(pointer);
+        error(pointer, "expected a finite number, got " + (raw.empty() ? value.dump() : std::string(raw)) +
+                           " (beyond the range of a double)");
+        return std::nullopt;
     }
-    if (value < min || value > max)
+    if (number < range.min || number > range.max)
     {
         std::ostringstream message;
-        message << "out of range (expected " << min << " to " << max << ", got " << value << ")";
-        error(here, message.str());
-        return fallback;
+        message << range.what << " (expected " << range.min << " to " << range.max << (*range.unit ? " " : "")
+                << range.unit << ", got " << number << ")";
+        error(pointer, message.str());
+        return std::nullopt;
     }
-    return value;
+    return number;
 }
 
 std::string LevelReader::string(const json& object, const std::string& pointer, const char* key,

@@ -13,6 +13,15 @@
 namespace abalike
 {
 
+/// The values a number field accepts, and how to explain a value outside them.
+struct NumberRange
+{
+    double min = 0.0;
+    double max = 0.0;
+    const char* unit = "";             ///< printed after the bounds, e.g. "m"
+    const char* what = "out of range"; ///< what is wrong with a value outside, e.g. "too large for a moving body"
+};
+
 /// Reads typed fields out of parsed JSON, collecting every problem (with its pointer and position) instead of
 /// stopping at the first.
 class LevelReader
@@ -29,14 +38,25 @@ public:
     /// True if value is an object; reports unknown keys (with a suggestion) against the allowed list.
     bool object(const json& value, const std::string& pointer, std::initializer_list<const char*> allowed);
     bool array(const json& value, const std::string& pointer);
+    /// True if value is an array of minItems to maxItems elements (reports either problem).
+    bool array(const json& value, const std::string& pointer, std::size_t minItems, std::size_t maxItems,
+               const char* items);
 
     /// Reads a finite number in [min, max]; reports and returns fallback when missing (if required) or wrong.
     double number(const json& object, const std::string& pointer, const char* key, double fallback, bool required,
                   double min, double max);
+    double number(const json& object, const std::string& pointer, const char* key, double fallback, bool required,
+                  const NumberRange& range);
+    /// Reads the array element or value at pointer itself as a finite number in range.
+    std::optional<double> numberAt(const json& value, const std::string& pointer, const NumberRange& range);
     std::string string(const json& object, const std::string& pointer, const char* key, const std::string& fallback,
                        bool required);
 
-    std::vector<LevelIssue> take() { return std::move(m_issues); }
+    /// Reports every key the document repeats inside one object.
+    void duplicateKeys();
+
+    /// The problems found, in the order they appear in the file.
+    std::vector<LevelIssue> take();
     bool ok() const { return m_issues.empty(); }
 
 private:

@@ -1,0 +1,19 @@
+#pragma once
+
+#include <abalike/flight/FlightModel.hpp>
+#include <abalike/level/LevelDef.hpp>
+#include <abalike/world/Catalog.hpp>
+
+namespace abalike
+{
+
+/// The flight model acting on a bird in a level's environment: gravity, quadratic drag from the air density and
+/// the bird's size (absent in vacuum), and the wind and gusts that act through that drag.
+FlightModel levelFlightModel(const EnvironmentDef& environment, const BirdType& bird);
+
+/// Fastest launch of a bird from a slingshot, v0 = F t_release / m, capped a little below the speed at which
+/// Box2D's per-step translation limit (b2_maxTranslation per step of dtS) would slow it.
+double maxLaunchSpeed(const SlingshotDef& slingshot, const BirdType& bird, const Catalog& catalog,
+                      double dtS = 1.0 / 60.0);
+
+} // namespace abalike

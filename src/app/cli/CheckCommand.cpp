@@ -1,0 +1,269 @@
+#include "cli/Commands.hpp"
+#include "cli/ProgressBar.hpp"
+#include "cli/SolutionJson.hpp"
+#include "cli/UsageError.hpp"
+
+#include <abalike/design/Solver.hpp>
+#include <abalike/level/LevelIO.hpp>
+#include <abalike/world/RestCheck.hpp>
+
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+namespace abalike::app
+{
+
+namespace
+{
+
+/// Box2D's documentation: stacking degrades when a body rests on one more than ten times lighter.
+constexpr double kMaxStackMassRatio = 10.0;
+
+struct CheckArgs
+{
+    std::vector<std::string> files;
+    bool json = false;
+    bool solve = false;
+    int threads = 0;
+};
+
+/// A level to check, and the campaign episode that lists it (if any).
+struct CheckItem
+{
+    std::string file;
+    std::string episode;
+};
+
+/// Everything found about one file.
+struct FileReport
+{
+    std::string file;
+    std::optional<LevelDef> level;
+    std::vector<LevelIssue> issues;
+    std::optional<RestReport> rest;
+    std::optional<Solution> solution;
+    std::vector<std::string> reasons; ///< why it fails, one short phrase each
+
+    bool ok() const { return reasons.empty(); }
+};
+
+/// The same file however it is spelled (levels/x.json, ./levels/x.json).
+std::string canonical(const std::string& path)
+{
+    std::error_code ec;
+    const auto resolved = std::filesystem::weakly_canonical(path, ec);
+    return ec ? path : resolved.string();
+}
+
+/// Level files as given; a campaign manifest stands for every level it lists. Each file is checked once (with its
+/// episode, if a manifest lists it), however often it is named.
+std::vector<CheckItem> expand(const std::vector<std::string>& files, std::vector<FileReport>& manifestFailures)
+{
+    std::vector<CheckItem> items;
+    std::map<std::string, std::size_t> seen;
+    const auto add = [&](const std::string& file, const std::string& episode)
+    {
+        const auto [it, inserted] = seen.emplace(canonical(file), items.size());
+        if (inserted)
+            items.push_back({file, episode});
+        else if (!episode.empty())
+            items[it->second].episode = episode;
+    };
+    for (const std::string& file : files)
+    {
+        if (!isCampaignManifest(file))
+        {
+            add(file, "");
+            continue;
+        }
+        try
+        {
+            for (const CampaignEpisode& episode : loadCampaignEpisodes(file))
+                for (const std::string& level : episode.levelPaths)
+                    add(level, episode.id);
+        }
+        catch (const LevelLoadError& e)
+        {
+            FileReport report;
+            report.file = file;
+            report.issues = e.issues();
+            report.reasons.push_back(std::to_string(e.issues().size()) + " error(s) in the campaign manifest");
+            manifestFailures.push_back(std::move(report));
+        }
+    }
+    return items;
+}
+
+FileReport checkFile(const CheckItem& item, const CheckArgs& a)
+{
+    FileReport report;
+    report.file = item.file;
+    try
+    {
+        report.level = loadLevel(item.file, Catalog::builtin());
+    }
+    catch (const LevelLoadError& e)
+    {
+        report.issues = e.issues();
+        std::string reason = std::to_string(e.issues().size()) + " error(s)";
+        if (!e.issues().empty())
+        {
+            const LevelIssue& first = e.issues().front();
+            reason += ", first at " + std::to_string(first.line) + ":" + std::to_string(first.column) + " " +
+                      (first.pointer.empty() ? "/" : first.pointer) + ": " + first.message;
+        }
+        report.reasons.push_back(reason);
+        return report;
+    }
+    const LevelDef& level = *report.level;
+    if (!item.episode.empty() && level.episode != item.episode)
+        report.reasons.push_back("the campaign lists it in episode \"" + item.episode + "\" but it says \"" +
+                                 level.episode + "\"");
+
+    report.rest = checkRest(level);
+    if (!report.rest->passed())
+        report.reasons.push_back(report.rest->summary());
+    else if (report.rest->worstMassRatio.ratio > kMaxStackMassRatio)
+        report.reasons.push_back("stacks too heavy on light for Box2D (expected a mass ratio of at most 10, got " +
+                                 std::to_string(report.rest->worstMassRatio.ratio) + ": " +
+                                 report.rest->worstMassRatio.heavier + " on " + report.rest->worstMassRatio.lighter +
+                                 ")");
+    if (a.solve && report.rest->passed())
+    {
+        SolverOptions options;
+        options.threads = a.threads;
+        ProgressBar bar("solving " + level.id);
+        options.progress = [&bar](std::size_t done, std::size_t total)
+        {
+            bar.update(done, total);
+        };
+        report.solution = solveLevel(level, Catalog::builtin(), options);
+        bar.finish();
+        if (!report.solution->outcome.won)
+            report.reasons.push_back("the solver found no win (best: " +
+                                     std::to_string(report.solution->outcome.pigsRemaining) + " pig(s) left)");
+        else if (report.solution->outcome.stars < 1)
+            report.reasons.push_back("the solver's best win earns no star");
+    }
+    return report;
+}
+
+/// Ids must be unique across everything checked together (a campaign), or progress would mix levels up.
+void checkUniqueIds(std::vector<FileReport>& reports)
+{
+    std::map<std::string, std::string> firstFile;
+    for (FileReport& report : reports)
+    {
+        if (!report.level)
+            continue;
+        const auto [it, inserted] = firstFile.emplace(report.level->id, report.file);
+        if (!inserted && it->second != report.file)
+            report.reasons.push_back("id \"" + report.level->id + "\" is already used by " + it->second);
+    }
+}
+
+std::string summaryLine(const FileReport& r)
+{
+    std::ostringstream line;
+    line << (r.ok() ? "PASS " : "FAIL ") << r.file;
+    if (!r.ok())
+    {
+        line << ": ";
+        for (std::size_t i = 0; i < r.reasons.size(); ++i)
+            line << (i ? "; " : "") << r.reasons[i];
+        return line.str();
+    }
+    line << " (" << r.level->id << ", stands still";
+    if (r.solution)
+        line << "; solved: " << r.solution->outcome.score << " points, " << r.solution->outcome.stars << " star(s), "
+             << r.solution->shots.size() << " shot(s)";
+    line << ")";
+    return line.str();
+}
+
+nlohmann::ordered_json reportJson(const FileReport& r)
+{
+    nlohmann::ordered_json out;
+    out["file"] = r.file;
+    out["ok"] = r.ok();
+    out["level"] = r.level ? nlohmann::ordered_json(r.level->id) : nullptr;
+    nlohmann::ordered_json errors = nlohmann::ordered_json::array();
+    for (const LevelIssue& issue : r.issues)
+        errors.push_back({{"file", issue.file},
+                          {"line", issue.line},
+                          {"column", issue.column},
+                          {"pointer", issue.pointer},
+                          {"message", issue.message},
+                          {"text", issue.format()}});
+    out["errors"] = std::move(errors);
+    if (r.rest)
+        out["rest"] = {{"ok", r.rest->passed()},
+                       {"seconds", r.rest->seconds},
+                       {"max_move_m", r.rest->maxDisplacementM},
+                       {"damaged", r.rest->damagedBodies},
+                       {"destroyed", r.rest->destroyedBodies},
+                       {"settled", r.rest->settled},
+                       {"worst_mass_ratio", r.rest->worstMassRatio.ratio},
+                       {"summary", r.rest->summary()}};
+    else
+        out["rest"] = nullptr;
+    out["solve"] = r.solution ? solutionToJson(*r.level, *r.solution) : nlohmann::ordered_json(nullptr);
+    out["reasons"] = r.reasons;
+    return out;
+}
+
+int runCheck(const CheckArgs& a)
+{
+    if (a.threads < 0 || a.threads > 256)
+        throw UsageError("--threads: expected 0 (all cores) to 256, got " + std::to_string(a.threads));
+    std::vector<FileReport> reports;
+    for (const CheckItem& item : expand(a.files, reports))
+        reports.push_back(checkFile(item, a));
+    checkUniqueIds(reports);
+
+    bool allOk = true;
+    for (const FileReport& r : reports)
+        allOk = allOk && r.ok();
+    if (a.json)
+    {
+        nlohmann::ordered_json out;
+        out["ok"] = allOk;
+        out["files"] = nlohmann::ordered_json::array();
+        for (const FileReport& r : reports)
+            out["files"].push_back(reportJson(r));
+        std::cout << out.dump(2) << '\n';
+    }
+    else
+    {
+        for (const FileReport& r : reports)
+        {
+            std::cout << summaryLine(r) << '\n';
+            // Every problem in the FILE:LINE:COL form editors jump to, on stderr like a compiler's.
+            for (const LevelIssue& issue : r.issues)
+                std::cerr << issue.format() << '\n';
+        }
+    }
+    return allOk ? 0 : kUsageExitCode;
+}
+
+} // namespace
+
+CommandRunner addCheckCommand(CLI::App& app)
+{
+    auto args = std::make_shared<CheckArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "check", "Check level files (or a campaign manifest: every level it lists): format, geometry, rest, solver");
+    cmd->add_option("files", args->files, "level JSON files or campaign manifests")->required();
+    cmd->add_flag("--json", args->json, "print one JSON report");
+    cmd->add_flag("--solve", args->solve, "also run the solver: each level must be won with at least one star");
+    cmd->add_option("--threads", args->threads, "solver worker threads (default 0: every core)");
+    return [args]
+    {
+        return runCheck(*args);
+    };
+}
+
+} // namespace abalike::app

@@ -1,0 +1,65 @@
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace abalike
+{
+
+/// Number of worker threads to use: requested if > 0, else every hardware thread.
+inline unsigned workerCount(int requested)
+{
+    if (requested > 0)
+        return static_cast<unsigned>(requested);
+    return std::max(1u, std::thread::hardware_concurrency());
+}
+
+/// Calls work(i) for every i in [0, count) on up to `threads` threads. Each call must write only its own result
+/// slot, so the outcome never depends on which thread ran what or when; done(i) is called after each item under
+/// a lock (progress reports). The first exception thrown by work is rethrown here.
+template <typename Work, typename Done>
+void parallelFor(std::size_t count, unsigned threads, Work&& work, Done&& done)
+{
+    std::atomic<std::size_t> next{0};
+    std::mutex lock;
+    std::exception_ptr failure;
+    auto worker = [&]
+    {
+        while (true)
+        {
+            const std::size_t i = next.fetch_add(1);
+            if (i >= count)
+                return;
+            try
+            {
+                work(i);
+            }
+            catch (...)
+            {
+                const std::lock_guard guard(lock);
+                if (!failure)
+                    failure = std::current_exception();
+                next = count; // stop handing out work
+                return;
+            }
+            const std::lock_guard guard(lock);
+            done(i);
+        }
+    };
+    const unsigned n = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(count)));
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < n; ++t)
+        pool.emplace_back(worker);
+    worker();
+    for (std::thread& thread : pool)
+        thread.join();
+    if (failure)
+        std::rethrow_exception(failure);
+}
+
+} // namespace abalike

@@ -1,0 +1,278 @@
+#include "design/ParallelFor.hpp"
+
+#include <abalike/design/Solver.hpp>
+#include <abalike/level/LevelFlight.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <set>
+#include <tuple>
+
+namespace abalike
+{
+
+namespace
+{
+
+/// The coarse grid aims between these angles: flatter shots hit the ground, steeper ones rarely help.
+constexpr double kMinAngleDeg = -10.0;
+constexpr double kMaxAngleDeg = 80.0;
+/// Ability times tried, as fractions of the time to the bird's first contact without it.
+constexpr double kAbilityFractions[] = {0.3, 0.5, 0.7, 0.9};
+/// Best candidates of a bird that are refined and tried with abilities.
+constexpr std::size_t kRefineCount = 3;
+
+/// Shots written with few digits survive any round trip through text (JSON, --shot A,S) bit for bit: dividing by
+/// a whole number of steps per unit gives the double nearest to the decimal, which prints as that decimal.
+double roundTo(double value, double stepsPerUnit)
+{
+    return std::round(value * stepsPerUnit) / stepsPerUnit;
+}
+
+double floorTo(double value, double stepsPerUnit)
+{
+    return std::floor(value * stepsPerUnit) / stepsPerUnit;
+}
+
+struct Candidate
+{
+    std::size_t prefix = 0; ///< index into the stage's prefixes
+    ScriptedShot shot;
+};
+
+struct Evaluated
+{
+    std::vector<ScriptedShot> shots;
+    ShotOutcome outcome;
+    std::optional<double> lastContactS; ///< when the last shot first touched something, after its launch
+    bool valid = false;
+};
+
+/// Better first: won, fewer pigs left, higher score. Ties keep their order (a stable sort by candidate index).
+bool better(const Evaluated& a, const Evaluated& b)
+{
+    if (a.valid != b.valid)
+        return a.valid;
+    return std::make_tuple(a.outcome.won, -a.outcome.pigsRemaining, a.outcome.score) >
+           std::make_tuple(b.outcome.won, -b.outcome.pigsRemaining, b.outcome.score);
+}
+
+using ShotKey = std::tuple<std::size_t, double, double, double>;
+
+ShotKey keyOf(const Candidate& c)
+{
+    return {c.prefix, c.shot.angleDeg, c.shot.speedMps, c.shot.abilityAtS.value_or(-1.0)};
+}
+
+class Search
+{
+public:
+    Search(const LevelDef& level, const Catalog& catalog, const SolverOptions& options)
+        : m_level(level), m_catalog(catalog), m_options(options), m_threads(workerCount(options.threads))
+    {
+        const std::size_t birds = level.birds.size();
+        const std::size_t grid = static_cast<std::size_t>(std::max(1, options.angleSteps)) *
+                                 std::max<std::size_t>(1, options.speedFractions.size());
+        const std::size_t perPrefix = grid + static_cast<std::size_t>(options.refineRounds) * kRefineCount * 8 +
+                                      (options.tryAbilities ? kRefineCount * std::size(kAbilityFractions) : 0);
+        m_estimate = perPrefix * (1 + (birds - 1) * static_cast<std::size_t>(std::max(1, options.beamWidth)));
+    }
+
+    Solution run()
+    {
+        const auto start = std::chrono::steady_clock::now();
+        std::vector<std::vector<ScriptedShot>> prefixes{{}};
+        Evaluated best;
+        for (std::size_t bird = 0; bird < m_level.birds.size() && !prefixes.empty(); ++bird)
+        {
+            std::vector<Evaluated> stage = searchBird(bird, prefixes);
+            if (!stage.empty() && better(stage.front(), best))
+                best = stage.front();
+            if (best.outcome.won)
+                break; // a win with fewer birds keeps the unused-bird bonus: later birds cannot beat it
+            prefixes.clear();
+            for (const Evaluated& e : stage)
+            {
+                if (prefixes.size() >= static_cast<std::size_t>(std::max(1, m_options.beamWidth)))
+                    break;
+                if (e.valid && !e.outcome.finished)
+                    prefixes.push_back(e.shots);
+            }
+        }
+        report(m_estimate);
+        Solution solution;
+        solution.shots = best.shots;
+        solution.outcome = best.outcome;
+        solution.simulations = m_simulations;
+        solution.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return solution;
+    }
+
+private:
+    /// Every candidate shot for one bird after each prefix, ranked best first.
+    std::vector<Evaluated> searchBird(std::size_t birdIndex, const std::vector<std::vector<ScriptedShot>>& prefixes)
+    {
+        m_seen.clear(); // prefix indices name different sequences from one bird to the next
+        const BirdType* bird = m_catalog.findBird(m_level.birds[birdIndex]);
+        const double top = floorTo(maxLaunchSpeed(m_level.slingshot, *bird, m_catalog), 100);
+        std::vector<Candidate> candidates;
+        for (std::size_t p = 0; p < prefixes.size(); ++p)
+            for (int a = 0; a < m_options.angleSteps; ++a)
+                for (const double fraction : m_options.speedFractions)
+                {
+                    const double t = m_options.angleSteps > 1 ? double(a) / (m_options.angleSteps - 1) : 0.5;
+                    const double angle = roundTo(kMinAngleDeg + t * (kMaxAngleDeg - kMinAngleDeg), 10);
+                    candidates.push_back({p, {angle, floorTo(fraction * top, 100), std::nullopt}});
+                }
+        std::vector<Evaluated> ranked;
+        evaluate(prefixes, candidates, ranked);
+
+        // Refine around the best few: a smaller step each round.
+        double angleStep = (kMaxAngleDeg - kMinAngleDeg) / std::max(1, m_options.angleSteps - 1) / 2;
+        double speedStep = 0.05 * top;
+        for (int round = 0; round < m_options.refineRounds; ++round)
+        {
+            std::vector<Candidate> next;
+            for (std::size_t i = 0; i < std::min(kRefineCount, ranked.size()); ++i)
+            {
+                const Candidate base = candidateOf(ranked[i], prefixes);
+                for (int da = -1; da <= 1; ++da)
+                    for (int ds = -1; ds <= 1; ++ds)
+                    {
+                        if (da == 0 && ds == 0)
+                            continue;
+                        Candidate c = base;
+                        c.shot.angleDeg = std::clamp(roundTo(base.shot.angleDeg + da * angleStep, 10), -90.0, 90.0);
+                        c.shot.speedMps = std::clamp(floorTo(base.shot.speedMps + ds * speedStep, 100), 0.0, top);
+                        next.push_back(c);
+                    }
+            }
+            evaluate(prefixes, next, ranked);
+            angleStep /= 2;
+            speedStep /= 2;
+        }
+
+        // The bird's ability at a few moments before its first contact.
+        if (m_options.tryAbilities && bird->ability != "none" && !bird->ability.empty())
+        {
+            std::vector<Candidate> next;
+            for (std::size_t i = 0; i < std::min(kRefineCount, ranked.size()); ++i)
+            {
+                if (!ranked[i].lastContactS || ranked[i].shots.back().abilityAtS)
+                    continue;
+                for (const double fraction : kAbilityFractions)
+                {
+                    Candidate c = candidateOf(ranked[i], prefixes);
+                    c.shot.abilityAtS = std::max(0.05, roundTo(fraction * *ranked[i].lastContactS, 100));
+                    next.push_back(c);
+                }
+            }
+            evaluate(prefixes, next, ranked);
+        }
+        return ranked;
+    }
+
+    /// The candidate an evaluated sequence came from: its prefix and its last shot.
+    static Candidate candidateOf(const Evaluated& e, const std::vector<std::vector<ScriptedShot>>& prefixes)
+    {
+        const std::vector<ScriptedShot> prefix(e.shots.begin(), e.shots.end() - 1);
+        std::size_t p = 0;
+        while (p < prefixes.size() && !samePrefix(prefixes[p], prefix))
+            ++p;
+        return {p, e.shots.back()};
+    }
+
+    static bool samePrefix(const std::vector<ScriptedShot>& a, const std::vector<ScriptedShot>& b)
+    {
+        if (a.size() != b.size())
+            return false;
+        for (std::size_t i = 0; i < a.size(); ++i)
+            if (a[i].angleDeg != b[i].angleDeg || a[i].speedMps != b[i].speedMps || a[i].abilityAtS != b[i].abilityAtS)
+                return false;
+        return true;
+    }
+
+    /// Plays the candidates not seen before (in parallel) and merges them into ranked, best first.
+    void evaluate(const std::vector<std::vector<ScriptedShot>>& prefixes, const std::vector<Candidate>& candidates,
+                  std::vector<Evaluated>& ranked)
+    {
+        std::vector<Candidate> fresh;
+        for (const Candidate& c : candidates)
+            if (m_seen.insert(keyOf(c)).second)
+                fresh.push_back(c);
+        std::vector<Evaluated> results(fresh.size());
+        parallelFor(
+            fresh.size(), m_threads,
+            [&](std::size_t i)
+            {
+                Evaluated& e = results[i];
+                e.shots = prefixes[fresh[i].prefix];
+                e.shots.push_back(fresh[i].shot);
+                try
+                {
+                    const auto session = simulateShots(m_level, e.shots, m_catalog);
+                    e.outcome = outcomeOf(*session);
+                    if (!session->shots().empty() && session->shots().back().actualContact)
+                        e.lastContactS = session->shots().back().actualContact->t;
+                    e.valid = true;
+                }
+                catch (const LaunchError&)
+                {
+                    e.valid = false;
+                }
+            },
+            [&](std::size_t) { report(++m_done); });
+        m_simulations += fresh.size();
+        ranked.insert(ranked.end(), std::make_move_iterator(results.begin()), std::make_move_iterator(results.end()));
+        // Stable: equal sequences keep the order they were generated in, whatever thread finished first.
+        std::stable_sort(ranked.begin(), ranked.end(), better);
+    }
+
+    void report(std::size_t done)
+    {
+        m_estimate = std::max(m_estimate, done);
+        if (m_options.progress)
+            m_options.progress(done, m_estimate);
+    }
+
+    const LevelDef& m_level;
+    const Catalog& m_catalog;
+    const SolverOptions& m_options;
+    unsigned m_threads = 1;
+    std::size_t m_estimate = 0;
+    std::size_t m_done = 0;
+    std::size_t m_simulations = 0;
+    std::set<ShotKey> m_seen;
+};
+
+} // namespace
+
+ShotOutcome outcomeOf(const GameSession& session)
+{
+    ShotOutcome out;
+    out.won = session.phase() == Phase::Won;
+    // A time-limited level counts as won only if play was over by the limit: the end of play is a conservative
+    // stand-in for the moment the last pig fell, whatever the session itself does about the clock.
+    if (const auto limit = session.level().timeLimitS; out.won && limit && session.simTime() > *limit)
+        out.won = false;
+    out.finished = session.finished();
+    out.score = session.score().total();
+    out.stars = out.won ? session.stars() : 0;
+    out.pigsRemaining = session.pigsRemaining();
+    out.birdsUsed = session.birdsUsed();
+    return out;
+}
+
+ShotOutcome playShots(const LevelDef& level, const std::vector<ScriptedShot>& shots, const Catalog& catalog)
+{
+    return outcomeOf(*simulateShots(level, shots, catalog));
+}
+
+Solution solveLevel(const LevelDef& level, const Catalog& catalog, const SolverOptions& options)
+{
+    if (level.birds.empty())
+        return {};
+    return Search(level, catalog, options).run();
+}
+
+} // namespace abalike

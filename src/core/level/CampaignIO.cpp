@@ -1,0 +1,88 @@
+#include "level/JsonLocator.hpp"
+#include "level/JsonText.hpp"
+#include "level/LevelReader.hpp"
+
+#include <abalike/level/LevelIO.hpp>
+
+#include <filesystem>
+
+namespace abalike
+{
+
+namespace
+{
+constexpr JsonTextLimits kManifestText{1u << 20, 16, "a campaign manifest"};
+} // namespace
+
+bool isCampaignManifest(const std::string& path)
+{
+    try
+    {
+        const nlohmann::json root = parseJsonText(readJsonFile(path, kManifestText), path, kManifestText);
+        return root.is_object() && root.contains("episodes");
+    }
+    catch (const LevelLoadError&)
+    {
+        return false;
+    }
+}
+
+std::vector<CampaignEpisode> loadCampaignEpisodes(const std::string& manifestPath)
+{
+    const std::string text = readJsonFile(manifestPath, kManifestText);
+    const nlohmann::json root = parseJsonText(text, manifestPath, kManifestText);
+    const JsonLocator locator(text);
+    LevelReader r(manifestPath, locator);
+    r.duplicateKeys();
+    std::vector<CampaignEpisode> out;
+    const auto folder = std::filesystem::path(manifestPath).parent_path();
+    if (r.object(root, "", {"$schema", "format", "title", "episodes"}))
+    {
+        const auto episodes = root.find("episodes");
+        if (episodes == root.end())
+            r.error("", "missing required key \"episodes\" (expected an array of episodes)");
+        else if (r.array(*episodes, "/episodes", 1, 100, "episodes"))
+        {
+            for (std::size_t e = 0; e < episodes->size(); ++e)
+            {
+                const nlohmann::json& episode = (*episodes)[e];
+                const std::string p = "/episodes/" + std::to_string(e);
+                if (!r.object(episode, p, {"id", "title", "levels"}))
+                    continue;
+                CampaignEpisode item;
+                item.id = r.string(episode, p, "id", "", true);
+                item.title = r.string(episode, p, "title", "", false);
+                const auto levels = episode.find("levels");
+                if (levels == episode.end())
+                {
+                    r.error(p, "missing required key \"levels\" (expected an array of level file names)");
+                    continue;
+                }
+                if (!r.array(*levels, p + "/levels", 1, 1000, "level file names"))
+                    continue;
+                for (std::size_t l = 0; l < levels->size(); ++l)
+                {
+                    if ((*levels)[l].is_string())
+                        item.levelPaths.push_back((folder / (*levels)[l].get<std::string>()).string());
+                    else
+                        r.error(p + "/levels/" + std::to_string(l),
+                                "expected a level file name, got " + describeJsonType((*levels)[l]));
+                }
+                out.push_back(std::move(item));
+            }
+        }
+    }
+    if (!r.ok())
+        throw LevelLoadError(r.take());
+    return out;
+}
+
+std::vector<std::string> loadCampaign(const std::string& manifestPath)
+{
+    std::vector<std::string> paths;
+    for (const CampaignEpisode& episode : loadCampaignEpisodes(manifestPath))
+        paths.insert(paths.end(), episode.levelPaths.begin(), episode.levelPaths.end());
+    return paths;
+}
+
+} // namespace abalike

@@ -1,0 +1,131 @@
+#include "RunAbalike.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace abalike::test
+{
+namespace
+{
+
+const std::string kFirstLevel = sourcePath("levels/1-1-first-flight.json");
+
+std::string malformed(const std::string& name)
+{
+    return sourcePath("tests/level/malformed/" + name + ".json");
+}
+
+/// The expected lines of a malformed file, with the file named by its full path as the CLI prints it.
+std::vector<std::string> expectedLines(const std::string& name)
+{
+    std::ifstream in(sourcePath("tests/level/malformed/" + name + ".expected"));
+    std::vector<std::string> out;
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty())
+            out.push_back(malformed(name) + line.substr(line.find(".json") + 5));
+    return out;
+}
+
+TEST(CheckCli, AGoodLevelPasses)
+{
+    const RunResult r = runAbalike("check " + kFirstLevel);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out.rfind("PASS " + kFirstLevel, 0), 0u) << r.out;
+    EXPECT_TRUE(r.err.empty()) << r.err;
+}
+
+class CheckCliMalformed : public ::testing::TestWithParam<std::string>
+{
+};
+
+/// A few of the malformed suite, through the real executable: FAIL on stdout, every error on stderr, exit 2.
+TEST_P(CheckCliMalformed, FailsWithEveryExpectedLine)
+{
+    const RunResult r = runAbalike("check " + malformed(GetParam()));
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.out.rfind("FAIL " + malformed(GetParam()), 0), 0u) << r.out;
+    for (const std::string& line : expectedLines(GetParam()))
+        EXPECT_NE(r.err.find(line), std::string::npos) << "expected: " << line << "\ngot: " << r.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(Files, CheckCliMalformed,
+                         ::testing::Values("empty", "binary-garbage", "truncated", "huge-number", "invalid-utf8",
+                                           "many-problems", "overlapping-blocks", "pig-out-of-reach"),
+                         [](const auto& info)
+                         {
+                             std::string name = info.param;
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
+
+TEST(CheckCli, OneBadFileFailsTheRunButEveryFileIsReported)
+{
+    const RunResult r = runAbalike("check " + kFirstLevel + " " + malformed("unknown-bird"));
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("PASS " + kFirstLevel), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("FAIL " + malformed("unknown-bird")), std::string::npos) << r.out;
+}
+
+TEST(CheckCli, HugeAndDeepFilesFailFast)
+{
+    const auto folder = std::filesystem::temp_directory_path();
+    const auto huge = folder / ("abalike-check-huge-" + std::to_string(::getpid()) + ".json");
+    const auto deep = folder / ("abalike-check-deep-" + std::to_string(::getpid()) + ".json");
+    {
+        std::ofstream out(huge, std::ios::binary);
+        const std::string chunk(1 << 20, ' ');
+        for (int i = 0; i < 50; ++i)
+            out << chunk;
+    }
+    std::ofstream(deep, std::ios::binary) << std::string(100000, '[') << std::string(100000, ']');
+    const RunResult r = runAbalike("check " + huge.string() + " " + deep.string());
+    std::filesystem::remove(huge);
+    std::filesystem::remove(deep);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find(huge.string() + ":1:1: error: /: file too large"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(deep.string() + ":1:65: error: /: JSON nested too deeply"), std::string::npos) << r.err;
+}
+
+TEST(CheckCli, JsonReportHasEveryFileAndError)
+{
+    const RunResult r = runAbalike("check --json " + kFirstLevel + " " + malformed("many-problems"));
+    EXPECT_EQ(r.exitCode, 2);
+    const auto report = nlohmann::json::parse(r.out);
+    EXPECT_FALSE(report["ok"].get<bool>());
+    ASSERT_EQ(report["files"].size(), 2u);
+    EXPECT_TRUE(report["files"][0]["ok"].get<bool>());
+    EXPECT_TRUE(report["files"][0]["rest"]["ok"].get<bool>());
+    EXPECT_FALSE(report["files"][1]["ok"].get<bool>());
+    EXPECT_EQ(report["files"][1]["errors"].size(), 4u);
+    EXPECT_EQ(report["files"][1]["errors"][0]["pointer"], "/birds/1");
+    EXPECT_EQ(report["files"][1]["errors"][0]["line"], 6);
+}
+
+TEST(CheckCli, CampaignManifestChecksEveryLevelItLists)
+{
+    const RunResult r = runAbalike("check --json " + sourcePath("levels/campaign.json"));
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    const auto report = nlohmann::json::parse(r.out);
+    EXPECT_GE(report["files"].size(), 20u);
+    for (const auto& file : report["files"])
+        EXPECT_TRUE(file["ok"].get<bool>()) << file.dump();
+}
+
+TEST(CheckCli, AnUnstableLevelFailsTheRestTest)
+{
+    const auto path =
+        std::filesystem::temp_directory_path() / ("abalike-check-tip-" + std::to_string(::getpid()) + ".json");
+    // A tall plank balanced on a narrow ice corner tips over.
+    std::ofstream(path) << R"({"format": 1, "id": "tip", "title": "Tip", "slingshot": {"x": 0, "y": 1.5},
+      "birds": ["red"], "pigs": [{"type": "small", "x": 14, "y": 0.25}],
+      "blocks": [{"material": "stone", "x": 10, "y": 2.5, "w": 0.3, "h": 5, "angle_deg": 10}]})";
+    const RunResult r = runAbalike("check " + path.string());
+    std::filesystem::remove(path);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("does not stand after 10.0 s"), std::string::npos) << r.out;
+}
+
+} // namespace
+} // namespace abalike::test
