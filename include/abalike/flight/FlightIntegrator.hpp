@@ -2,9 +2,9 @@
 
 #include <abalike/flight/FlightModel.hpp>
 #include <abalike/flight/Stepper.hpp>
-
 #include <cstddef>
 #include <memory>
+#include <string_view>
 
 namespace abalike
 {
@@ -13,10 +13,33 @@ namespace abalike
 struct IntegratorSettings
 {
     StepperKind stepper = StepperKind::Rk4;
-    double dtS = 1.0 / 60.0;  ///< output step (and the step of fixed-step methods)
-    double tolerance = 1e-9;  ///< absolute and relative tolerance of dopri5
+    double dtS = 1.0 / 60.0;    ///< output step (and the step of fixed-step methods)
+    double tolerance = 1e-9;    ///< absolute and relative tolerance of dopri5
     bool guardStiffness = true; ///< sub-step fixed-step methods when |lambda| dt leaves their stability region
+    double guardLimit = 0.0;    ///< largest |lambda| h of a guarded sub-step; 0 uses defaultGuardLimit(stepper)
+    /// Explicit sub-steps an output step may take before the guard hands the rest of it to rosenbrock4 (and the
+    /// following steps too while they would need more); 0 uses kDefaultMaxExplicitSubsteps.
+    int maxExplicitSubsteps = 0;
 };
+
+/// The |lambda| h the stiffness guard allows a fixed-step method per sub-step, chosen by measurement (see
+/// docs/flight-numerics.md): small enough that a guarded step is accurate, not merely stable.
+double defaultGuardLimit(StepperKind kind);
+
+/// Default of IntegratorSettings::maxExplicitSubsteps, chosen by measurement (see docs/flight-numerics.md).
+inline constexpr int kDefaultMaxExplicitSubsteps = 64;
+
+/// What the stiffness guard did during an integration.
+enum class GuardAction
+{
+    Off,      ///< the guard was disabled
+    None,     ///< the guard was on and no step needed it
+    Substep,  ///< some steps were split into explicit sub-steps
+    Implicit, ///< some steps were so stiff that they were handed to the implicit rosenbrock4 stepper
+};
+
+/// Name used in JSON: "off", "none", "substep", "rosenbrock4".
+std::string_view guardActionName(GuardAction action);
 
 /// One step of an integration: the state and its derivative at both ends, enough for cubic Hermite
 /// interpolation (fourth-order accurate, exact for vacuum flight) inside the step.
@@ -66,6 +89,8 @@ public:
     std::size_t substeps() const;
     /// Largest |lambda| * h seen by a fixed-step method, h being the step it actually took.
     double maxStiffnessRatio() const;
+    /// What the stiffness guard did since construction.
+    GuardAction guardAction() const;
 
     class Impl;
 

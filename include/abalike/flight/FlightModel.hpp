@@ -26,14 +26,16 @@ struct GustDef
         double windY = 0.0;
     };
     Kind kind = Kind::Steps;
-    std::vector<Step> steps;     ///< Kind::Steps, sorted by startS
-    double amplitudeX = 0.0;     ///< Kind::Sine: w(t) += A sin(2 pi t / T + phase)
+    std::vector<Step> steps; ///< Kind::Steps, sorted by startS
+    double amplitudeX = 0.0; ///< Kind::Sine: w(t) += A sin(2 pi t / T + phase)
     double amplitudeY = 0.0;
     double periodS = 1.0;
     double phaseRad = 0.0;
 
     /// Gust wind at time t (m/s), without the constant wind.
     std::array<double, 2> windAt(double t) const;
+    /// d(windAt)/dt (m/s^2); zero between the jumps of Kind::Steps.
+    std::array<double, 2> rateAt(double t) const;
 };
 
 /// The forces on a bird in free flight. Every term is optional; a term that is absent (zero) is not

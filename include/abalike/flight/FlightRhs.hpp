@@ -1,8 +1,9 @@
 #pragma once
 
 #include <abalike/flight/FlightModel.hpp>
-
+#include <array>
 #include <cmath>
+#include <numbers>
 #include <utility>
 
 namespace abalike
@@ -22,6 +23,11 @@ public:
           m_quadraticPerMass(model.quadraticDrag / model.massKg), m_windX(model.windX), m_windY(model.windY),
           m_gusts(model.gusts ? &*model.gusts : nullptr)
     {
+        if (m_gusts != nullptr && m_gusts->kind == GustDef::Kind::Sine)
+        {
+            m_sineGust = true;
+            m_gustOmega = 2.0 * std::numbers::pi / m_gusts->periodS;
+        }
     }
 
     void operator()(const FlightState& s, FlightState& dsdt, double t) const
@@ -35,19 +41,7 @@ public:
         if constexpr (kHasDrag)
         {
             // Drag acts on the velocity relative to the air.
-            double rx = s[2];
-            double ry = s[3];
-            if constexpr ((Terms & kWindTerm) != 0)
-            {
-                rx -= m_windX;
-                ry -= m_windY;
-            }
-            if constexpr ((Terms & kGustTerm) != 0)
-            {
-                const auto gust = m_gusts->windAt(t);
-                rx -= gust[0];
-                ry -= gust[1];
-            }
+            const auto [rx, ry] = relativeVelocity(s, t);
             if constexpr ((Terms & kLinearDragTerm) != 0)
             {
                 ax -= m_linearPerMass * rx;
@@ -84,32 +78,96 @@ public:
                 lambda += m_linearPerMass;
             if constexpr ((Terms & kQuadraticDragTerm) != 0)
             {
-                double rx = s[2];
-                double ry = s[3];
-                if constexpr ((Terms & kWindTerm) != 0)
-                {
-                    rx -= m_windX;
-                    ry -= m_windY;
-                }
-                if constexpr ((Terms & kGustTerm) != 0)
-                {
-                    const auto gust = m_gusts->windAt(t);
-                    rx -= gust[0];
-                    ry -= gust[1];
-                }
-                lambda += 2.0 * m_quadraticPerMass * std::sqrt(rx * rx + ry * ry);
+                const auto r = relativeVelocity(s, t);
+                lambda += 2.0 * m_quadraticPerMass * std::sqrt(r[0] * r[0] + r[1] * r[1]);
             }
             return lambda;
         }
     }
 
+    /// For implicit steppers: the Jacobian of the acceleration with respect to the velocity (row-major 2 x 2) and
+    /// the acceleration's explicit rate of change in time (non-zero only with smooth gusts).
+    void accelerationJacobian(const FlightState& s, double t, std::array<double, 4>& dadv,
+                              std::array<double, 2>& dadt) const
+    {
+        dadv = {0.0, 0.0, 0.0, 0.0};
+        dadt = {0.0, 0.0};
+        if constexpr (kHasDrag)
+        {
+            if constexpr ((Terms & kLinearDragTerm) != 0)
+            {
+                dadv[0] -= m_linearPerMass;
+                dadv[3] -= m_linearPerMass;
+            }
+            if constexpr ((Terms & kQuadraticDragTerm) != 0)
+            {
+                // a = -k |r| r  =>  da/dv = -k (|r| I + r r^T / |r|)
+                const auto r = relativeVelocity(s, t);
+                const double speed = std::sqrt(r[0] * r[0] + r[1] * r[1]);
+                if (speed > 0.0)
+                {
+                    dadv[0] -= m_quadraticPerMass * (speed + r[0] * r[0] / speed);
+                    dadv[1] -= m_quadraticPerMass * r[0] * r[1] / speed;
+                    dadv[2] -= m_quadraticPerMass * r[1] * r[0] / speed;
+                    dadv[3] -= m_quadraticPerMass * (speed + r[1] * r[1] / speed);
+                }
+            }
+            if constexpr ((Terms & kGustTerm) != 0)
+            {
+                // a depends on t only through r = v - w(t): da/dt = -(da/dv) w'(t).
+                const auto rate = m_gusts->rateAt(t);
+                dadt[0] = -(dadv[0] * rate[0] + dadv[1] * rate[1]);
+                dadt[1] = -(dadv[2] * rate[0] + dadv[3] * rate[1]);
+            }
+        }
+        else
+        {
+            (void)s;
+            (void)t;
+        }
+    }
+
 private:
+    /// Velocity relative to the air, v - w(t).
+    std::array<double, 2> relativeVelocity(const FlightState& s, double t) const
+    {
+        std::array<double, 2> r{s[2], s[3]};
+        if constexpr ((Terms & kWindTerm) != 0)
+        {
+            r[0] -= m_windX;
+            r[1] -= m_windY;
+        }
+        if constexpr ((Terms & kGustTerm) != 0)
+        {
+            if (m_sineGust)
+            {
+                // Inline rather than through GustDef::windAt: a returned pair costs a store-forwarding stall here.
+                const double sine = std::sin(m_gustOmega * t + m_gusts->phaseRad);
+                r[0] -= m_gusts->amplitudeX * sine;
+                r[1] -= m_gusts->amplitudeY * sine;
+            }
+            else
+            {
+                const auto gust = m_gusts->windAt(t);
+                r[0] -= gust[0];
+                r[1] -= gust[1];
+            }
+        }
+        else
+        {
+            (void)t;
+        }
+        return r;
+    }
+
     double m_gravity;
     double m_linearPerMass;
     double m_quadraticPerMass;
     double m_windX;
     double m_windY;
     const GustDef* m_gusts; // owned by the FlightModel, which must outlive this functor
+    bool m_sineGust = false;
+    double m_gustOmega = 0.0;
 };
 
 namespace detail

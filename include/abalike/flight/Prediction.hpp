@@ -1,7 +1,6 @@
 #pragma once
 
 #include <abalike/flight/FlightIntegrator.hpp>
-
 #include <functional>
 #include <optional>
 #include <vector>
@@ -32,9 +31,9 @@ using ContactQuery = std::function<std::optional<double>(const FlightState& a, c
 /// Why a predicted flight stopped.
 enum class FlightEnd
 {
-    Contact,  ///< touched geometry (ContactQuery)
-    Landed,   ///< came back down to the launch height
-    TimeUp,   ///< reached the requested end time
+    Contact, ///< touched geometry (ContactQuery)
+    Landed,  ///< came back down to the launch height
+    TimeUp,  ///< reached the requested end time
 };
 
 /// A predicted flight: the integrator's steps from launch to where it ended.
@@ -47,16 +46,17 @@ struct PredictedFlight
     std::size_t rhsEvaluations = 0;
     std::size_t substeps = 0;
     double maxStiffnessRatio = 0.0;
+    GuardAction guard = GuardAction::None; ///< what the stiffness guard did
     double maxHeightM = 0.0;
 };
 
 /// What ends a prediction.
 struct PredictionLimits
 {
-    double maxTimeS = 60.0;          ///< hard stop
-    bool stopOnLanding = false;      ///< stop where y comes back down to the launch height
+    double maxTimeS = 60.0;           ///< hard stop
+    bool stopOnLanding = false;       ///< stop where y comes back down to the launch height
     std::optional<double> untilTimeS; ///< stop exactly here (overrides landing)
-    ContactQuery contact;            ///< stop at the first contact, if set
+    ContactQuery contact;             ///< stop at the first contact, if set
 };
 
 /// Integrates a flight from s0 (at t = 0) until it ends by the given limits. Landing and the until-time are

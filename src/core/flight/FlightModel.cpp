@@ -1,5 +1,4 @@
 #include <abalike/flight/FlightModel.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -12,7 +11,9 @@ std::array<double, 2> GustDef::windAt(double t) const
 {
     if (kind == Kind::Sine)
     {
-        const double s = std::sin(2.0 * std::numbers::pi * t / periodS + phaseRad);
+        // Written as FlightRhs evaluates it (omega t + phase), so both give the same bits.
+        const double omega = 2.0 * std::numbers::pi / periodS;
+        const double s = std::sin(omega * t + phaseRad);
         return {amplitudeX * s, amplitudeY * s};
     }
     // Last step that has started; before the first one there is no gust.
@@ -22,6 +23,15 @@ std::array<double, 2> GustDef::windAt(double t) const
         return {0.0, 0.0};
     const Step& current = *(after - 1);
     return {current.windX, current.windY};
+}
+
+std::array<double, 2> GustDef::rateAt(double t) const
+{
+    if (kind != Kind::Sine)
+        return {0.0, 0.0};
+    const double omega = 2.0 * std::numbers::pi / periodS;
+    const double c = omega * std::cos(omega * t + phaseRad);
+    return {amplitudeX * c, amplitudeY * c};
 }
 
 unsigned activeTerms(const FlightModel& model)
@@ -54,7 +64,8 @@ std::vector<std::string> termNames(unsigned terms)
 std::string validateFlightModel(const FlightModel& model)
 {
     std::ostringstream problem;
-    auto check = [&](const char* name, double value, bool ok, const char* expected) {
+    auto check = [&](const char* name, double value, bool ok, const char* expected)
+    {
         if (!problem.str().empty())
             return;
         if (!std::isfinite(value))

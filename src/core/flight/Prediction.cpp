@@ -1,5 +1,4 @@
 #include <abalike/flight/Prediction.hpp>
-
 #include <algorithm>
 #include <cmath>
 
@@ -30,13 +29,14 @@ double locateCrossing(const FlightStep& step, std::size_t i, double level)
     return 0.5 * (lo + hi);
 }
 
-void trackApex(const FlightStep& step, double& maxHeight)
+/// Raises maxHeight to the highest point of the step up to time `until` (the apex if vy changes sign before it).
+void trackApex(const FlightStep& step, double& maxHeight, double until)
 {
-    maxHeight = std::max(maxHeight, step.s1[1]);
     if (step.s0[3] > 0.0 && step.s1[3] <= 0.0)
     {
         const double tApex = locateCrossing(step, 3, 0.0);
-        maxHeight = std::max(maxHeight, step.interpolate(tApex)[1]);
+        if (tApex <= until)
+            maxHeight = std::max(maxHeight, step.interpolate(tApex)[1]);
     }
 }
 
@@ -78,6 +78,7 @@ PredictedFlight predictFlight(const FlightModel& model, const IntegratorSettings
                 s[1] = step.s0[1] + a * (step.s1[1] - step.s0[1]);
                 flight.path.push_back({t, s});
                 flight.contact = ContactPoint{t, s[0], s[1]};
+                trackApex(step, flight.maxHeightM, t);
                 flight.maxHeightM = std::max(flight.maxHeightM, s[1]);
                 flight.end = FlightEnd::Contact;
                 break;
@@ -86,10 +87,8 @@ PredictedFlight predictFlight(const FlightModel& model, const IntegratorSettings
         if (step.t1 >= endTime)
         {
             const FlightState s = step.t1 == endTime ? step.s1 : step.interpolate(endTime);
-            FlightStep clipped = step;
-            clipped.t1 = endTime;
-            clipped.s1 = s;
-            trackApex(clipped, flight.maxHeightM);
+            trackApex(step, flight.maxHeightM, endTime);
+            flight.maxHeightM = std::max(flight.maxHeightM, s[1]);
             flight.path.push_back({endTime, s});
             flight.end = FlightEnd::TimeUp;
             break;
@@ -99,18 +98,20 @@ PredictedFlight predictFlight(const FlightModel& model, const IntegratorSettings
             const double t = locateCrossing(step, 1, y0);
             FlightState s = step.interpolate(t);
             s[1] = y0; // the crossing is where y == y0, by definition
-            trackApex(step, flight.maxHeightM);
+            trackApex(step, flight.maxHeightM, t);
             flight.path.push_back({t, s});
             flight.end = FlightEnd::Landed;
             break;
         }
-        trackApex(step, flight.maxHeightM);
+        trackApex(step, flight.maxHeightM, step.t1);
+        flight.maxHeightM = std::max(flight.maxHeightM, step.s1[1]);
         flight.path.push_back({step.t1, step.s1});
     }
 
     flight.rhsEvaluations = integrator.rhsEvaluations(); // counted from reset(), including the launch derivative
     flight.substeps = integrator.substeps();
     flight.maxStiffnessRatio = integrator.maxStiffnessRatio();
+    flight.guard = integrator.guardAction();
     return flight;
 }
 
