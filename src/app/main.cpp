@@ -5,6 +5,7 @@
 
 #include <iostream>
 #include <map>
+#include <string>
 
 int main(int argc, char** argv)
 {
@@ -16,6 +17,18 @@ int main(int argc, char** argv)
     commands["simulate"] = addSimulateCommand(app);
     commands["play"] = addPlayCommand(app);
     commands["bench"] = addBenchCommand(app);
+    commands["check"] = addCheckCommand(app);
+    commands["solve"] = addSolveCommand(app);
+
+    // CLI11 would only say "a subcommand is required" for `abalike fly`; name the word it did not know.
+    if (argc > 1 && argv[1][0] != '-' && commands.count(argv[1]) == 0)
+    {
+        std::string known;
+        for (const auto& entry : commands)
+            known += (known.empty() ? "" : ", ") + entry.first;
+        std::cerr << "abalike: error: unknown command \"" << argv[1] << "\" (expected one of: " << known << ")\n";
+        return kUsageExitCode;
+    }
 
     try
     {

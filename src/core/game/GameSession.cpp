@@ -226,6 +226,13 @@ void GameSession::updateBird()
 
 void GameSession::updatePhase()
 {
+    // A time-limited level is lost the moment its clock runs out with a pig still standing, whatever is flying.
+    if (m_level.timeLimitS && !finished() && m_world->time() >= *m_level.timeLimitS && m_world->pigsAlive() > 0)
+    {
+        m_world->removeAllBirds();
+        m_phase = Phase::Lost;
+        return;
+    }
     if (m_phase != Phase::Flying)
         return;
     const bool timeUp = m_world->time() - m_shotStartTime >= kShotTimeCapS;
