@@ -38,12 +38,23 @@ std::pair<double, double> parsePair(const std::string& text, const std::string& 
 
 ScriptedShot parseShot(const std::string& text)
 {
-    const auto [angle, speed] = parsePair(text, "--shot ANGLE,SPEED");
+    // ANGLE,SPEED or ANGLE,SPEED,ABILITY_AT_S (seconds after launch to use the bird's ability).
+    const auto second = text.find(',', text.find(',') + 1);
+    const std::string pair = second == std::string::npos ? text : text.substr(0, second);
+    const auto [angle, speed] = parsePair(pair, "--shot ANGLE,SPEED[,ABILITY_AT_S]");
     if (angle < -90.0 || angle > 90.0)
         throw UsageError("--shot: angle must be between -90 and 90 degrees, got " + text.substr(0, text.find(',')));
     if (speed < 0.0)
-        throw UsageError("--shot: speed must be >= 0 m/s, got " + text.substr(text.find(',') + 1));
-    return {angle, speed};
+        throw UsageError("--shot: speed must be >= 0 m/s, got " + pair.substr(pair.find(',') + 1));
+    ScriptedShot shot{angle, speed};
+    if (second != std::string::npos)
+    {
+        const double at = parseFinite(text.substr(second + 1), "--shot ANGLE,SPEED,ABILITY_AT_S");
+        if (at < 0.0)
+            throw UsageError("--shot: the ability time must be >= 0 s after launch, got " + text.substr(second + 1));
+        shot.abilityAtS = at;
+    }
+    return shot;
 }
 
 std::pair<unsigned, unsigned> parseSize(const std::string& text)

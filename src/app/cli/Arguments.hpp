@@ -15,7 +15,7 @@ double parseFinite(const std::string& text, const std::string& option);
 /// Throws UsageError unless value is finite; used for values CLI11 already converted.
 void requireFinite(double value, const std::string& option);
 
-/// "ANGLE,SPEED" -> shot; throws UsageError.
+/// "ANGLE,SPEED" or "ANGLE,SPEED,ABILITY_AT_S" -> shot; throws UsageError.
 ScriptedShot parseShot(const std::string& text);
 
 /// "A,B" -> two finite numbers; throws UsageError.

@@ -14,5 +14,7 @@ CommandRunner addPredictCommand(CLI::App& app);
 CommandRunner addSimulateCommand(CLI::App& app);
 CommandRunner addPlayCommand(CLI::App& app);
 CommandRunner addBenchCommand(CLI::App& app);
+CommandRunner addCheckCommand(CLI::App& app);
+CommandRunner addSolveCommand(CLI::App& app);
 
 } // namespace abalike::app

@@ -15,6 +15,41 @@ Json contactJson(const std::optional<ContactPoint>& c)
     return Json{{"t", c->t}, {"x", c->x}, {"y", c->y}};
 }
 
+Json abilityJson(const std::optional<AbilityUse>& use)
+{
+    if (!use)
+        return nullptr;
+    Json impulses = Json::array();
+    for (const AbilityImpulse& j : use->impulses)
+        impulses.push_back(
+            {{"t", j.tS}, {"x", j.x}, {"y", j.y}, {"jx", j.impulseX}, {"jy", j.impulseY}, {"target", j.target}});
+    return Json{{"name", use->ability},
+                {"t", use->tS},
+                {"x", use->x},
+                {"y", use->y},
+                {"before_contact", use->beforeContact},
+                {"changed_flight", use->changedFlight},
+                {"impulses", std::move(impulses)}};
+}
+
+const char* kindName(EntityKind kind)
+{
+    switch (kind)
+    {
+    case EntityKind::Ground:
+        return "ground";
+    case EntityKind::Terrain:
+        return "terrain";
+    case EntityKind::Block:
+        return "block";
+    case EntityKind::Pig:
+        return "pig";
+    case EntityKind::Bird:
+        return "bird";
+    }
+    return "unknown";
+}
+
 Json pathJson(const std::vector<std::array<double, 3>>& path)
 {
     Json out = Json::array();
@@ -39,6 +74,9 @@ nlohmann::ordered_json sessionToJson(const GameSession& session)
     out["score_breakdown"] = {{"block_points", score.blockPoints},       {"blocks_destroyed", score.blocksDestroyed},
                               {"pig_points", score.pigPoints},           {"pigs_defeated", score.pigsDefeated},
                               {"unused_bird_bonus", score.unusedBirdBonus}, {"accuracy_bonus", score.accuracyBonus}};
+    out["score_breakdown"]["unused_birds"] = score.unusedBirds;
+    out["score_breakdown"]["efficiency_bonus"] = score.efficiencyBonus;
+    out["score_breakdown"]["accurate_shots"] = score.accurateShots;
     Json shots = Json::array();
     for (const ShotRecord& shot : session.shots())
     {
@@ -51,6 +89,10 @@ nlohmann::ordered_json sessionToJson(const GameSession& session)
         s["deviation_m"] = shot.deviationM ? Json(*shot.deviationM) : Json(nullptr);
         s["predicted_path"] = pathJson(shot.predictedPath);
         s["actual_path"] = pathJson(shot.actualPath);
+        s["first_touched"] = shot.firstTouched ? Json(kindName(*shot.firstTouched)) : Json(nullptr);
+        s["pigs_defeated"] = shot.pigsDefeated;
+        s["accuracy_points"] = shot.accuracyPoints;
+        s["ability"] = abilityJson(shot.ability);
         shots.push_back(std::move(s));
     }
     out["shots"] = std::move(shots);

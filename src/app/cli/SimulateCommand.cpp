@@ -69,7 +69,9 @@ CommandRunner addSimulateCommand(CLI::App& app)
     auto args = std::make_shared<SimulateArgs>();
     CLI::App* cmd = app.add_subcommand("simulate", "Play shots on a level headless and report the outcome");
     cmd->add_option("level", args->level, "level JSON file")->required();
-    cmd->add_option("--shot", args->shots, "ANGLE,SPEED (degrees, m/s); repeat for more shots")
+    cmd->add_option("--shot", args->shots,
+                    "ANGLE,SPEED[,ABILITY_AT_S] (degrees, m/s, s after launch to use the bird's ability); repeat for "
+                    "more shots")
         ->required()
         ->allow_extra_args(false);
     cmd->add_flag("--json", args->json, "print one JSON object");
