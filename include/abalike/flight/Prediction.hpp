@@ -34,6 +34,7 @@ enum class FlightEnd
     Contact, ///< touched geometry (ContactQuery)
     Landed,  ///< came back down to the launch height
     TimeUp,  ///< reached the requested end time
+    Diverged, ///< the state left the range of double (e.g. drag so strong it overflows); the path stops before it
 };
 
 /// A predicted flight: the integrator's steps from launch to where it ended.

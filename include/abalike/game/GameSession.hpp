@@ -96,6 +96,11 @@ public:
     int stars() const;
     double simTime() const { return m_world->time(); }
 
+    /// A message for the player when the session had to act on its own (e.g. reset after a non-finite body state);
+    /// empty otherwise. clearNotice() once it has been shown.
+    const std::string& notice() const { return m_notice; }
+    void clearNotice() { m_notice.clear(); }
+
     const LevelDef& level() const { return m_level; }
     const GameWorld& world() const { return *m_world; }
     const Catalog& catalog() const { return m_catalog; }
@@ -113,6 +118,7 @@ private:
     int m_nextBird = 0;
     double m_shotStartTime = 0.0;
     std::vector<ShotRecord> m_shots;
+    std::string m_notice;
     ScoreBreakdown m_score;
 };
 

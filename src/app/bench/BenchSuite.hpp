@@ -17,5 +17,6 @@ int runAccuracyBench(const BenchOptions& options);  ///< integration error again
 int runStabilityBench(const BenchOptions& options); ///< stiff and extreme cases (flight issue)
 int runReferenceBench(const BenchOptions& options); ///< predicted vs actual first contact on the reference shots
 int runPerfBench(const BenchOptions& options);      ///< world step times and headless speed (world issue)
+int runSoakBench(const BenchOptions& options);      ///< 10 000 shots, resident memory start to end (reliability)
 
 } // namespace abalike::app

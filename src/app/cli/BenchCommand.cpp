@@ -43,6 +43,7 @@ CommandRunner addBenchCommand(CLI::App& app)
         {"stability", "stiff and extreme flights: what plain RK4 does and what the guard does", runStabilityBench},
         {"reference", "predicted vs actual first contact on the reference shots", runReferenceBench},
         {"perf", "world step times per level, overhead against raw Box2D, headless speed", runPerfBench},
+        {"soak", "10 000 random headless shots across the campaign; fails if resident memory grows > 5%", runSoakBench},
     };
     for (const auto& suite : suites)
     {

@@ -141,6 +141,9 @@ int runPredict(const PredictArgs& a)
         throw UsageError(e.what());
     }
     const PathPoint& last = flight.path.back();
+    if (flight.end == FlightEnd::Diverged)
+        throw UsageError("the flight left the range of a double at t = " + std::to_string(flight.path.back().t) +
+                         " s (the forces overflow: use a smaller speed, drag or a larger mass)");
     const bool landed = flight.end == FlightEnd::Landed;
 
     if (!a.json)

@@ -99,6 +99,13 @@ int PlayScreen::run()
         if (!handleEvents())
             break;
         pollLevelFile();
+        if (!m_session->notice().empty())
+        {
+            // The session reset itself (a body escaped to NaN): tell the player in the same panel as file errors.
+            std::cerr << "abalike: " << m_session->notice() << '\n';
+            m_reloadErrors = {m_session->notice()};
+            m_session->clearNotice();
+        }
         int steps = 0;
         if (offline)
         {

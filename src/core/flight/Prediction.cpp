@@ -65,6 +65,12 @@ PredictedFlight predictFlight(const FlightModel& model, const IntegratorSettings
         }
         const FlightStep& step = integrator.step();
         ++flight.steps;
+        if (!std::all_of(step.s1.begin(), step.s1.end(), [](double v) { return std::isfinite(v); }))
+        {
+            // Every input was finite, but the forces overflowed: stop at the last finite point and say so.
+            flight.end = FlightEnd::Diverged;
+            break;
+        }
 
         if (limits.contact)
         {

@@ -163,6 +163,13 @@ void GameSession::step()
     if (finished())
         return;
     m_world->step();
+    if (m_world->hasNonFiniteState())
+    {
+        // Box2D let a body escape to NaN or infinity: nothing after this step can be trusted, so start over.
+        restart();
+        m_notice = "The simulation produced an invalid number, so the level was reset.";
+        return;
+    }
     collectEvents();
     updateBird();
     updatePhase();

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <map>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace abalike
+{
+
+/// The best a player has done on one level.
+struct LevelRecord
+{
+    int bestScore = 0;
+    int stars = 0; ///< 0 to 3: the most stars ever earned, possibly in another play than bestScore
+
+    bool operator==(const LevelRecord&) const = default;
+};
+
+/// What a player has achieved: the best result per level and the levels they may play, keyed by level id.
+struct Progress
+{
+    std::map<std::string, LevelRecord> levels;
+    std::set<std::string> unlocked;
+
+    /// Keeps the better of the stored and the new score and stars; returns true when something improved.
+    bool record(const std::string& levelId, int score, int stars);
+    /// Returns true when the level was not unlocked before.
+    bool unlock(const std::string& levelId);
+    bool isUnlocked(const std::string& levelId) const { return unlocked.contains(levelId); }
+
+    bool operator==(const Progress&) const = default;
+};
+
+/// Opens the first level of the campaign and every level that follows a level won with at least one star.
+/// Returns true when a level was newly unlocked.
+bool unlockCampaign(Progress& progress, const std::vector<std::string>& levelIds);
+
+/// Parses the text of progress.json. Throws SaveFormatError saying what is wrong and where.
+Progress parseProgress(std::string_view text);
+
+/// The text of progress.json (stable key order, so saving unchanged progress writes the same bytes).
+std::string progressToJson(const Progress& progress);
+
+} // namespace abalike
