@@ -3,6 +3,8 @@
 #include "render/Font.hpp"
 #include "render/Screenshot.hpp"
 
+#include <abalike/save/DataDirectory.hpp>
+
 #include <SFML/System/Clock.hpp>
 #include <SFML/Window/Event.hpp>
 #include <abalike/level/LevelIO.hpp>
@@ -36,6 +38,16 @@ PlayScreen::PlayScreen(sf::RenderWindow& window, const PlayOptions& options, std
       m_overlay(font), m_hud(font), m_results(font), m_reloadNotice(font)
 {
     startLevel(0);
+    if (!options.frames && options.shots.empty())
+    {
+        m_store.emplace(defaultDataDirectory());
+        m_store->load();
+        for (const std::string& message : m_store->takeMessages())
+        {
+            std::cerr << "abalike: " << message << '\n';
+            m_reloadErrors.push_back(message);
+        }
+    }
 }
 
 void PlayScreen::startLevel(std::size_t index)
@@ -73,8 +85,29 @@ void PlayScreen::restartLevel()
     resetAim();
 }
 
+void PlayScreen::saveResultIfFinished()
+{
+    if (!m_store || m_resultSaved || !m_session->finished())
+        return;
+    m_resultSaved = true;
+    Progress progress = m_store->progress();
+    const bool improved = progress.record(m_session->level().id, m_session->score().total(), m_session->stars());
+    std::vector<std::string> ids;
+    for (const LevelDef& level : m_levels)
+        ids.push_back(level.id);
+    if (unlockCampaign(progress, ids) || improved)
+        m_store->saveProgress(std::move(progress));
+    for (const std::string& message : m_store->takeMessages())
+    {
+        // A folder that cannot be written only means no saving: say so and keep playing.
+        std::cerr << "abalike: " << message << '\n';
+        m_reloadErrors.push_back(message);
+    }
+}
+
 void PlayScreen::resetAim()
 {
+    m_resultSaved = false;
     ++m_generation;
     m_aim.reset();
     m_requestedLaunch.reset();
@@ -99,6 +132,7 @@ int PlayScreen::run()
         if (!handleEvents())
             break;
         pollLevelFile();
+        saveResultIfFinished();
         if (!m_session->notice().empty())
         {
             // The session reset itself (a body escaped to NaN): tell the player in the same panel as file errors.

@@ -14,6 +14,7 @@
 #include <SFML/Graphics/RenderWindow.hpp>
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/LevelWatcher.hpp>
+#include <abalike/save/SaveStore.hpp>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -46,6 +47,8 @@ private:
 
     void startLevel(std::size_t index);
     void restartLevel();
+    /// Records a finished level in the player's progress once per play (interactive play only).
+    void saveResultIfFinished();
     /// Forgets the aim, any pending launch and the preview (new level or restart).
     void resetAim();
     /// Polls window events; false when the player asked to quit.
@@ -70,6 +73,8 @@ private:
     std::vector<LevelDef> m_levels;
     std::size_t m_levelIndex = 0;
     std::unique_ptr<GameSession> m_session;
+    std::optional<SaveStore> m_store; ///< the player's progress; absent in scripted runs (--frames, --shot)
+    bool m_resultSaved = false;
     int m_generation = 0;
     Camera m_camera;
 
