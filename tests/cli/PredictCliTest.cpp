@@ -93,6 +93,8 @@ TEST(PredictCli, ReportsWhatTheStiffnessGuardDid)
     EXPECT_EQ(plain["guard"], "off");
     EXPECT_EQ(plain["substeps"], 0);
     EXPECT_FALSE(plain["landed"].get<bool>()); // it blew up instead
+    EXPECT_TRUE(plain["diverged"].get<bool>());
+    EXPECT_FALSE(guarded["diverged"].get<bool>());
     EXPECT_EQ(predictJson("--angle 45 --speed 50 --mass 0.0001 --linear-drag 1")["guard"], "rosenbrock4");
     EXPECT_EQ(predictJson("--angle 45 --speed 20")["guard"], "none");
 }

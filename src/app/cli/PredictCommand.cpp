@@ -141,7 +141,10 @@ int runPredict(const PredictArgs& a)
         throw UsageError(e.what());
     }
     const PathPoint& last = flight.path.back();
-    if (flight.end == FlightEnd::Diverged)
+    // Without the guard, blowing up is the behaviour being shown: report it. With the guard, only inputs beyond
+    // what a double can carry diverge, and that is an error.
+    const bool diverged = flight.end == FlightEnd::Diverged;
+    if (diverged && settings.guardStiffness)
         throw UsageError("the flight left the range of a double at t = " + std::to_string(flight.path.back().t) +
                          " s (the forces overflow: use a smaller speed, drag or a larger mass)");
     const bool landed = flight.end == FlightEnd::Landed;
@@ -165,6 +168,7 @@ int runPredict(const PredictArgs& a)
     out["rhs_evaluations"] = flight.rhsEvaluations;
     out["terms"] = termNames(activeTerms(model));
     out["landed"] = landed;
+    out["diverged"] = diverged; // the path stops at the last finite state
     out["range_m"] = last.s[0] - x0;
     out["flight_time_s"] = last.t;
     out["max_height_m"] = flight.maxHeightM;
