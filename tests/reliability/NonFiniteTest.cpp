@@ -1,6 +1,7 @@
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/world/Catalog.hpp>
+#include <box2d/box2d.h>
 #include <gtest/gtest.h>
 #include <limits>
 
@@ -75,6 +76,25 @@ TEST(NonFinite, LaunchRejectsNaNAndInfinity)
     while (session.phase() == Phase::Flying)
         session.step();
     EXPECT_FALSE(session.world().hasNonFiniteState());
+}
+
+TEST(NonFinite, AWorldThatGoesNonFiniteIsResetAndThePlayerIsTold)
+{
+    const LevelDef level = parseLevel(kLevel, "level.json", Catalog::builtin());
+    GameSession session(level);
+    session.launch(30.0, 10.0);
+    for (int i = 0; i < 10; ++i)
+        session.step();
+    // Stands in for a body Box2D lets escape: nothing in a valid level does this on its own.
+    for (const Entity& e : session.world().entities())
+        if (e.kind == EntityKind::Block && e.body != nullptr)
+            e.body->SetLinearVelocity(b2Vec2(std::numeric_limits<float>::quiet_NaN(), 0.0f));
+    session.step();
+    EXPECT_FALSE(session.world().hasNonFiniteState());
+    EXPECT_EQ(session.phase(), Phase::Aiming);
+    EXPECT_EQ(session.birdsUsed(), 0) << "the level starts over";
+    EXPECT_FALSE(session.notice().empty());
+    session.launch(30.0, 10.0); // and it plays on
 }
 
 TEST(NonFinite, SimulatedShotsRejectNaN)

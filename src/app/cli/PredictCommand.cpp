@@ -105,8 +105,8 @@ int runPredict(const PredictArgs& a)
     settings.guardStiffness = !a.noGuard;
     if (settings.dtS <= 0.0)
         throw UsageError("--dt: must be > 0 s, got " + a.dt);
-    if (settings.tolerance <= 0.0)
-        throw UsageError("--tol: must be > 0, got " + a.tol);
+    if (settings.tolerance < 1e-14)
+        throw UsageError("--tol: must be >= 1e-14 (finer is below double precision), got " + a.tol);
 
     const double angle = parseFinite(a.angle, "--angle");
     const double speed = parseFinite(a.speed, "--speed");

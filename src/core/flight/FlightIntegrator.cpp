@@ -66,6 +66,7 @@ public:
         if (settings.stepper == StepperKind::Dopri5)
         {
             m_dense.emplace(odeint::make_dense_output(settings.tolerance, settings.tolerance, Dopri()));
+            m_denseStepsTotal = 0;
             m_dense->initialize(state, time, settings.dtS);
         }
     }
@@ -229,6 +230,9 @@ private:
         return std::nullopt;
     }
 
+    static constexpr std::size_t kMaxDenseSteps = 1000000;
+    std::size_t m_denseStepsTotal = 0;
+
     void advanceDense(double target)
     {
         // The dense stepper caches the derivative at its current point (FSAL) between calls: it is only ever given
@@ -242,6 +246,12 @@ private:
         {
             m_dense->do_step(system);
             ++internal;
+            // An explicit adaptive method on a stiff flight shrinks its steps without end; stop with a clear answer
+            // instead of hanging. The guarded rk4 handles stiffness.
+            if (++m_denseStepsTotal > kMaxDenseSteps)
+                throw std::invalid_argument("dopri5 needed more than a million steps: the flight is too stiff for an "
+                                            "explicit adaptive method at this tolerance (use --stepper rk4, which "
+                                            "guards against stiffness)");
         }
         if (internal > 1)
             substeps += internal - 1;
@@ -268,8 +278,9 @@ FlightIntegrator::FlightIntegrator(const FlightModel& model, const IntegratorSet
 {
     if (!(settings.dtS > 0.0) || !std::isfinite(settings.dtS))
         throw std::invalid_argument("the time step must be a finite number > 0");
-    if (!(settings.tolerance > 0.0) || !std::isfinite(settings.tolerance))
-        throw std::invalid_argument("the tolerance must be a finite number > 0");
+    if (!(settings.tolerance >= 1e-14) || !std::isfinite(settings.tolerance))
+        throw std::invalid_argument("the tolerance must be a finite number >= 1e-14 (finer is below what a double "
+                                    "can resolve, and the adaptive step would shrink without end)");
     if (const std::string problem = validateFlightModel(model); !problem.empty())
         throw std::invalid_argument(problem);
     m_impl = visitFlightRhs(model,
