@@ -1,4 +1,5 @@
 #include <abalike/game/GameSession.hpp>
+#include <abalike/level/LevelFlight.hpp>
 #include <box2d/box2d.h>
 #include <cmath>
 #include <sstream>
@@ -73,14 +74,7 @@ std::array<double, 2> GameSession::launchPoint() const
 
 FlightModel GameSession::flightModelFor(const BirdType& bird) const
 {
-    FlightModel model;
-    model.gravity = m_level.environment.gravity;
-    model.massKg = bird.massKg;
-    model.quadraticDrag = quadraticDragCoefficient(m_level.environment.airDensity, bird.dragCoefficient, bird.radiusM);
-    model.windX = m_level.environment.windX;
-    model.windY = m_level.environment.windY;
-    model.gusts = m_level.environment.gusts;
-    return model;
+    return levelFlightModel(m_level.environment, bird); // the one definition the level checks use too
 }
 
 PredictedFlight GameSession::preview(double angleDeg, double speedMps) const
