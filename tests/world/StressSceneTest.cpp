@@ -25,15 +25,19 @@ TEST_P(StressSceneTest, StandsStillForThirtySeconds)
         << report.worstMassRatio.heavier << " on " << report.worstMassRatio.lighter;
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, StressSceneTest, testing::ValuesIn(stressScenes()),
-                         [](const testing::TestParamInfo<StressScene>& info)
-                         {
-                             std::string name = info.param.name;
-                             for (char& c : name)
-                                 if (c == '-')
-                                     c = '_';
-                             return name;
-                         });
+std::string sceneName(const testing::TestParamInfo<StressScene>& info)
+{
+    std::string name = info.param.name;
+    for (char& c : name)
+        if (c == '-')
+            c = '_';
+    return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, StressSceneTest, testing::ValuesIn(stressScenes()), sceneName);
+// Walls of bricks in side contact, towers whose columns change material storey by storey, packed ledges: each
+// its own ctest entry, so the 1 000-block wall (about 10 s) runs beside the others.
+INSTANTIATE_TEST_SUITE_P(Structures, StressSceneTest, testing::ValuesIn(structureScenes()), sceneName);
 
 TEST(StressScenes, StoneRestsOnIceAtLeastThreeTimesItsMass)
 {
@@ -48,6 +52,44 @@ TEST(StressScenes, HaveTheAdvertisedSizes)
     EXPECT_EQ(towerScene(20).blocks.size(), 20u);
     EXPECT_EQ(pyramidScene(15).blocks.size(), 120u);
     EXPECT_EQ(pyramidScene(40).blocks.size(), 820u);
+    WallSpec wall;
+    wall.columns = 20;
+    wall.rows = 50;
+    EXPECT_EQ(wallScene(wall).blocks.size(), 1000u); // the format's maximum
+    wall.staggered = true;
+    wall.rows = 10;
+    EXPECT_EQ(wallScene(wall).blocks.size(), 205u); // five shifted rows of 19 bricks and two halves
+    EXPECT_EQ(storeyTowerScene({8, {"stone"}, {"wood"}}).blocks.size(), 24u);
+}
+
+TEST(StressScenes, WallBricksTouchTheirNeighboursExactly)
+{
+    WallSpec spec;
+    spec.columns = 3;
+    spec.rows = 2;
+    spec.staggered = true;
+    const LevelDef wall = wallScene(spec);
+    // Row 0: three bricks; row 1: a half brick, two bricks, a half brick, edge to edge from x = 20 to 21.5.
+    ASSERT_EQ(wall.blocks.size(), 7u);
+    double right = 20.0;
+    for (std::size_t i = 3; i < 7; ++i)
+    {
+        EXPECT_DOUBLE_EQ(wall.blocks[i].x - wall.blocks[i].widthM / 2, right);
+        right = wall.blocks[i].x + wall.blocks[i].widthM / 2;
+        EXPECT_DOUBLE_EQ(wall.blocks[i].y - wall.blocks[i].heightM / 2, 0.25);
+    }
+    EXPECT_DOUBLE_EQ(right, 21.5);
+}
+
+TEST(StressScenes, StoreyTowersCycleTheirMaterials)
+{
+    const LevelDef tower = storeyTowerScene({3, {"stone", "wood", "ice"}, {"wood"}});
+    ASSERT_EQ(tower.blocks.size(), 9u);
+    EXPECT_EQ(tower.blocks[0].material, "stone");
+    EXPECT_EQ(tower.blocks[3].material, "wood");
+    EXPECT_EQ(tower.blocks[6].material, "ice");
+    EXPECT_EQ(tower.blocks[8].material, "wood");
+    EXPECT_DOUBLE_EQ(tower.pigs[0].y, 3 * 1.75 + 0.25); // on the top plank
 }
 
 } // namespace

@@ -91,6 +91,12 @@ public:
     double damageSpeedThresholdMps() const { return m_damageSpeedThreshold; }
     const AbilityParams& abilities() const { return m_abilities; }
     double groundFriction() const { return m_groundFriction; }
+    /// Rolling resistance coefficient of pigs and round blocks: the torque against rolling is at most this x the
+    /// normal force x the radius.
+    double rollingResistance() const { return m_rollingResistance; }
+    /// Fastest launch the game allows (m/s), whatever the slingshot: the measured speed up to which the world
+    /// neither tunnels nor leaves the preview (docs/world-physics.md, "Tunneling").
+    double maxLaunchSpeedMps() const { return m_maxLaunchSpeedMps; }
     /// Depth of the slab a 2D block stands for (m): areal density = bulk density x depth.
     double slabDepthM() const { return m_slabDepthM; }
 
@@ -103,6 +109,8 @@ private:
     double m_releaseTimeS = 0.1;
     double m_damageSpeedThreshold = 0.5;
     double m_groundFriction = 0.8;
+    double m_rollingResistance = 0.0;
+    double m_maxLaunchSpeedMps = 100.0;
     double m_slabDepthM = 0.1;
 };
 

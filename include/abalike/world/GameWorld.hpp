@@ -35,6 +35,22 @@ struct WorldSettings
     /// bodies stacked on each other, because Gauss-Seidel needs about depth^2 sweeps to carry the load of the top
     /// body down to the ground; 0: no settle step; more: that many.
     int settleIterations = kAutoSettle;
+    /// Box2D sub-steps per step for the level's stacks: ceil(depth / stackDepthPerSubstep), at most
+    /// maxStackSubsteps, depth being the most bodies resting on each other (stackDepth()). Sequential impulses
+    /// hold a deep stack only approximately; the error grows with depth and shrinks with the sub-step, and a tall
+    /// column under an off-centre load leans a little more every step unless the sub-step is short enough
+    /// (docs/world-physics.md, "Walls and mixed towers"). 1 turns it off.
+    int stackDepthPerSubstep = 5;
+    int maxStackSubsteps = 4;
+    /// Corners of polygon cores are cut by this much (m) so that blocks meeting only corner to corner, such as
+    /// diagonal neighbours in a wall, do not touch (Skin.hpp); 0 turns it off.
+    double cornerChamferM = 0.003;
+    /// A contact between two bodies (birds aside) acts only once their designed surfaces are closer than this (m).
+    /// Box2D makes every contact within its 1 cm skin rigid, which would let a pig near the edge of a block lean
+    /// on the rounded corner of the next one, 2 mm away; negative turns it off.
+    double contactGapM = 0.001;
+    /// Rolling resistance for pigs and round blocks (the catalog's "rolling" coefficient); false turns it off.
+    bool rollingResistance = true;
 
     static constexpr int kAutoSettle = -1;
 };
@@ -95,8 +111,13 @@ public:
     double time() const { return m_time; }
     double dt() const { return m_settings.dtS; }
     const WorldSettings& settings() const { return m_settings; }
-    /// Box2D sub-steps taken by the last step (see WorldSettings::maxSubsteps).
+    /// Box2D sub-steps taken by the last step (see WorldSettings::maxSubsteps and maxStackSubsteps).
     int lastSubsteps() const { return m_lastSubsteps; }
+    /// Box2D sub-steps every step takes for the level's stacks (WorldSettings::stackDepthPerSubstep).
+    int stackSubsteps() const { return m_stackSubsteps; }
+    /// Sub-steps of a step in which the fastest awake body moves at speedMps: enough to keep every sub-step under
+    /// Box2D's translation limit, and at least stackSubsteps().
+    int substepsFor(double speedMps) const;
     /// Fastest a body can move without Box2D capping its speed: 90 % of b2_maxTranslation per sub-step.
     double maxSpeedMps() const;
     /// The most bodies resting on each other at the start (1 for a block on the ground).
@@ -197,6 +218,7 @@ private:
     int m_stackDepth = 0;
     int m_settleIterations = 0;
     int m_lastSubsteps = 1;
+    int m_stackSubsteps = 1;
     std::array<double, 3> m_extent{}; ///< left, right, bottom: beyond these a body has left the world
 
     int m_birdIndex = -1;

@@ -43,11 +43,17 @@ struct RestReport
     int destroyedBodies = 0;
     bool settled = false;     ///< every body asleep at the end
     MassRatio worstMassRatio; ///< heaviest body resting on a lighter one
+    int stackDepth = 0;       ///< the most bodies resting on each other (GameWorld::stackDepth)
+    int stackSubsteps = 1;    ///< Box2D sub-steps per step the world gave the level for it
 
     /// Nothing moved more than the tolerance and nothing took damage.
     bool passed() const { return maxDisplacementM <= toleranceM && damagedBodies == 0 && destroyedBodies == 0; }
-    /// One line: "stands after 10 s: max move 0.40 mm (block 3, wood) of 5 mm allowed, no damage, ...".
+    /// One line: "stands after 10 s: max move 0.40 mm (block 3, wood) of 5 mm allowed, no damage, ...". A level
+    /// that does not stand and has a stack at least kDeepStack bodies deep also gets what to change.
     std::string summary() const;
+
+    /// From this depth on, a failed rest check names the stack depth as the likely cause.
+    static constexpr int kDeepStack = 8;
 };
 
 /// Leaves a level alone for the given time and reports how far things moved and whether anything took damage.

@@ -3,6 +3,7 @@
 
 #include <abalike/world/GameWorld.hpp>
 #include <box2d/b2_time_of_impact.h>
+#include <cmath>
 
 namespace abalike
 {
@@ -36,54 +37,66 @@ std::optional<double> GameWorld::castCircle(double radiusM, const FlightState& a
     query.entities = &m_entities;
     m_world->QueryAABB(&query, box);
 
-    // The same time-of-impact computation b2World::SolveTOI runs for a bullet against a resting body.
-    b2TOIInput input;
-    input.proxyA.Set(&circle, 0);
-    input.sweepA.localCenter.SetZero();
-    input.sweepA.c0 = pa;
-    input.sweepA.c = pb;
-    input.sweepA.a0 = input.sweepA.a = 0.0f;
-    input.sweepA.alpha0 = 0.0f;
-    input.tMax = 1.0f;
-
-    std::optional<double> earliest;
-    for (b2Fixture* fixture : query.fixtures)
+    // The world splits this step into as many Box2D steps as a bird this fast needs (substepsFor), moving the
+    // bird an equal share of the chord in each; Box2D starts a contact in two ways, and the preview must see both
+    // in every one of them: at the start of a sub-step when the shapes' skins already overlap (b2Contact::Update),
+    // or by time of impact inside it (b2World::SolveTOI).
+    const double chordM = std::hypot(b[0] - a[0], b[1] - a[1]);
+    const int pieces = substepsFor(chordM / m_settings.dtS);
+    for (int piece = 0; piece < pieces; ++piece)
     {
-        const b2Body* body = fixture->GetBody();
-        input.sweepB.localCenter = body->GetLocalCenter();
-        input.sweepB.c0 = input.sweepB.c = body->GetWorldCenter();
-        input.sweepB.a0 = input.sweepB.a = body->GetAngle();
-        input.sweepB.alpha0 = 0.0f;
-        const b2Shape* shape = fixture->GetShape();
-        for (int child = 0; child < shape->GetChildCount(); ++child)
+        const double s0 = static_cast<double>(piece) / pieces;
+        const double s1 = static_cast<double>(piece + 1) / pieces;
+        const b2Vec2 from(static_cast<float>(a[0] + (b[0] - a[0]) * s0), static_cast<float>(a[1] + (b[1] - a[1]) * s0));
+        const b2Vec2 to(static_cast<float>(a[0] + (b[0] - a[0]) * s1), static_cast<float>(a[1] + (b[1] - a[1]) * s1));
+        b2TOIInput input;
+        input.proxyA.Set(&circle, 0);
+        input.sweepA.localCenter.SetZero();
+        input.sweepA.c0 = from;
+        input.sweepA.c = to;
+        input.sweepA.a0 = input.sweepA.a = 0.0f;
+        input.sweepA.alpha0 = 0.0f;
+        input.tMax = 1.0f;
+
+        std::optional<double> earliest;
+        for (b2Fixture* fixture : query.fixtures)
         {
-            if (!b2TestOverlap(fixture->GetAABB(child), box))
-                continue;
-            input.proxyB.Set(shape, child);
-            // Box2D starts a contact in two ways, and the preview must see both: at the start of a step when
-            // the shapes' skins already overlap (b2Contact::Update), or by time of impact inside the step.
-            b2DistanceInput distanceInput;
-            distanceInput.proxyA = input.proxyA;
-            distanceInput.proxyB = input.proxyB;
-            distanceInput.transformA.Set(pa, 0.0f);
-            distanceInput.transformB = body->GetTransform();
-            distanceInput.useRadii = false;
-            b2SimplexCache cache;
-            cache.count = 0;
-            b2DistanceOutput distance;
-            b2Distance(&distance, &cache, &distanceInput);
-            if (distance.distance < input.proxyA.m_radius + input.proxyB.m_radius)
+            const b2Body* body = fixture->GetBody();
+            input.sweepB.localCenter = body->GetLocalCenter();
+            input.sweepB.c0 = input.sweepB.c = body->GetWorldCenter();
+            input.sweepB.a0 = input.sweepB.a = body->GetAngle();
+            input.sweepB.alpha0 = 0.0f;
+            const b2Shape* shape = fixture->GetShape();
+            for (int child = 0; child < shape->GetChildCount(); ++child)
             {
-                earliest = 0.0;
-                continue;
+                if (!b2TestOverlap(fixture->GetAABB(child), box))
+                    continue;
+                input.proxyB.Set(shape, child);
+                b2DistanceInput distanceInput;
+                distanceInput.proxyA = input.proxyA;
+                distanceInput.proxyB = input.proxyB;
+                distanceInput.transformA.Set(from, 0.0f);
+                distanceInput.transformB = body->GetTransform();
+                distanceInput.useRadii = false;
+                b2SimplexCache cache;
+                cache.count = 0;
+                b2DistanceOutput distance;
+                b2Distance(&distance, &cache, &distanceInput);
+                if (distance.distance < input.proxyA.m_radius + input.proxyB.m_radius)
+                {
+                    earliest = 0.0;
+                    continue;
+                }
+                b2TOIOutput output;
+                b2TimeOfImpact(&output, &input);
+                if (output.state == b2TOIOutput::e_touching && (!earliest || output.t < *earliest))
+                    earliest = output.t;
             }
-            b2TOIOutput output;
-            b2TimeOfImpact(&output, &input);
-            if (output.state == b2TOIOutput::e_touching && (!earliest || output.t < *earliest))
-                earliest = output.t;
         }
+        if (earliest)
+            return (piece + *earliest) / pieces;
     }
-    return earliest;
+    return std::nullopt;
 }
 
 } // namespace abalike

@@ -44,6 +44,7 @@ Catalog Catalog::fromJson(std::string_view text)
         const json root = json::parse(text);
         catalog.m_slabDepthM = root.contains("slab_depth_m") ? positive(root, "slab_depth_m", "catalog") : 0.1;
         catalog.m_releaseTimeS = positive(root.at("slingshot"), "release_time_s", "slingshot");
+        catalog.m_maxLaunchSpeedMps = positive(root.at("slingshot"), "max_launch_speed_mps", "slingshot");
         const json& scoring = root.at("scoring");
         catalog.m_scoring.pointsPerUnusedBird = scoring.at("points_per_unused_bird").get<int>();
         catalog.m_scoring.efficiencyPointsPerExtraPig = scoring.value("efficiency_points_per_extra_pig", 5000);
@@ -54,6 +55,12 @@ Catalog Catalog::fromJson(std::string_view text)
         catalog.m_damageSpeedThreshold = positive(root.at("damage"), "speed_threshold_mps", "damage");
         if (root.contains("ground"))
             catalog.m_groundFriction = root.at("ground").value("friction", 0.8);
+        if (root.contains("rolling"))
+        {
+            catalog.m_rollingResistance = root.at("rolling").at("resistance").get<double>();
+            if (!(catalog.m_rollingResistance >= 0.0 && catalog.m_rollingResistance < 1.0))
+                throw std::runtime_error("rolling.resistance must be in [0, 1)");
+        }
         for (const json& m : root.at("materials"))
         {
             const std::string where = "material " + m.at("name").get<std::string>();

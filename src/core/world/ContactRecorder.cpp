@@ -26,8 +26,24 @@ void GameWorld::ContactRecorder::PreSolve(b2Contact* contact, const b2Manifold* 
     contact->GetWorldManifold(&manifold);
     const b2Body* a = contact->GetFixtureA()->GetBody();
     const b2Body* b = contact->GetFixtureB()->GetBody();
+    const int points = contact->GetManifold()->pointCount;
+    if (m_contactGap >= 0.0f && !a->IsBullet() && !b->IsBullet())
+    {
+        // Box2D treats shapes as touching as soon as their skins overlap; resting surfaces sit b2_linearSlop into
+        // them (Skin.hpp). Closer than that plus the gap, the designed surfaces touch; further, they do not, and the
+        // contact would only prop one body on the rounded corner of the other. Birds keep Box2D's own rule, which
+        // the preview mirrors.
+        float deepest = manifold.separations[0];
+        for (int i = 1; i < points; ++i)
+            deepest = std::min(deepest, manifold.separations[i]);
+        if (deepest > m_contactGap - b2_linearSlop)
+        {
+            contact->SetEnabled(false);
+            return;
+        }
+    }
     float closing = 0.0f;
-    for (int i = 0; i < contact->GetManifold()->pointCount; ++i)
+    for (int i = 0; i < points; ++i)
     {
         const b2Vec2 va = a->GetLinearVelocityFromWorldPoint(manifold.points[i]);
         const b2Vec2 vb = b->GetLinearVelocityFromWorldPoint(manifold.points[i]);

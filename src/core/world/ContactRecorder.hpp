@@ -20,7 +20,11 @@ inline int entityIndexOf(b2Body* body)
 class GameWorld::ContactRecorder final : public b2ContactListener
 {
 public:
-    explicit ContactRecorder(float damageSpeedThreshold) : m_threshold(damageSpeedThreshold) {}
+    /// contactGap: see WorldSettings::contactGapM (negative: every touching contact acts, as in plain Box2D).
+    ContactRecorder(float damageSpeedThreshold, float contactGap)
+        : m_threshold(damageSpeedThreshold), m_contactGap(contactGap)
+    {
+    }
 
     /// The bird whose first touch should be recorded (null for none).
     void watchBird(const b2Body* bird)
@@ -48,6 +52,7 @@ public:
 
 private:
     float m_threshold;
+    float m_contactGap;
     const b2Body* m_bird = nullptr;
     std::optional<b2Vec2> m_birdTouch;
     int m_birdTouchOther = -1;

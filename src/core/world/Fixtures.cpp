@@ -14,9 +14,10 @@ b2BodyUserData userDataFor(int entityIndex)
     return data;
 }
 
-void addPolygonFixture(b2Body* body, const std::vector<b2Vec2>& outline, const b2FixtureDef& base)
+void addPolygonFixture(b2Body* body, const std::vector<b2Vec2>& outline, const b2FixtureDef& base, float chamferM,
+                       const std::vector<bool>& chamferCorners)
 {
-    const std::vector<b2Vec2> core = insetPolygon(outline);
+    const std::vector<b2Vec2> core = abalike::chamferCorners(insetPolygon(outline), chamferM, chamferCorners);
     b2PolygonShape shape;
     shape.Set(core.data(), static_cast<int>(core.size()));
     b2FixtureDef def = base;
@@ -24,13 +25,14 @@ void addPolygonFixture(b2Body* body, const std::vector<b2Vec2>& outline, const b
     body->CreateFixture(&def);
 }
 
-void addBoxFixture(b2Body* body, double w, double h, const b2FixtureDef& base, double cx, double cy)
+void addBoxFixture(b2Body* body, double w, double h, const b2FixtureDef& base, float chamferM, double cx, double cy,
+                   const std::vector<bool>& chamferCorners)
 {
     const auto x0 = static_cast<float>(cx - w / 2);
     const auto x1 = static_cast<float>(cx + w / 2);
     const auto y0 = static_cast<float>(cy - h / 2);
     const auto y1 = static_cast<float>(cy + h / 2);
-    addPolygonFixture(body, {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, base);
+    addPolygonFixture(body, {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, base, chamferM, chamferCorners);
 }
 
 void addCircleFixture(b2Body* body, double radius, const b2FixtureDef& base)
@@ -42,14 +44,14 @@ void addCircleFixture(b2Body* body, double radius, const b2FixtureDef& base)
     body->CreateFixture(&def);
 }
 
-void addBlockFixtures(b2Body* body, const BlockDef& block, const b2FixtureDef& base)
+void addBlockFixtures(b2Body* body, const BlockDef& block, const b2FixtureDef& base, float chamferM)
 {
     const double w = block.widthM;
     const double h = block.heightM;
     switch (block.shape)
     {
     case BlockShape::Box:
-        addBoxFixture(body, w, h, base);
+        addBoxFixture(body, w, h, base, chamferM);
         break;
     case BlockShape::Circle:
         addCircleFixture(body, w / 2, base);
@@ -58,19 +60,20 @@ void addBlockFixtures(b2Body* body, const BlockDef& block, const b2FixtureDef& b
     {
         const auto hw = static_cast<float>(w / 2);
         const auto hh = static_cast<float>(h / 2);
-        addPolygonFixture(body, {{-hw, -hh}, {hw, -hh}, {-hw, hh}}, base);
+        addPolygonFixture(body, {{-hw, -hh}, {hw, -hh}, {-hw, hh}}, base, chamferM);
         break;
     }
     case BlockShape::HollowBox:
     {
         // Four walls on one body. Top and bottom span the full width; the side walls reach into them by twice
-        // the skin inset so that the walls' cores meet exactly and the frame has no notch at its corners.
+        // the skin inset so that the walls' cores meet exactly and the frame has no notch at its corners. Only the
+        // frame's own four corners are chamfered: cutting where walls meet would notch the frame.
         const double t = block.wallM;
         const double sideH = h - 2 * t + 4 * kPolygonInset;
-        addBoxFixture(body, w, t, base, 0.0, h / 2 - t / 2);
-        addBoxFixture(body, w, t, base, 0.0, -(h / 2 - t / 2));
-        addBoxFixture(body, t, sideH, base, -(w / 2 - t / 2), 0.0);
-        addBoxFixture(body, t, sideH, base, w / 2 - t / 2, 0.0);
+        addBoxFixture(body, w, t, base, chamferM, 0.0, h / 2 - t / 2, {false, false, true, true});
+        addBoxFixture(body, w, t, base, chamferM, 0.0, -(h / 2 - t / 2), {true, true, false, false});
+        addBoxFixture(body, t, sideH, base, chamferM, -(w / 2 - t / 2), 0.0, {false, false, false, false});
+        addBoxFixture(body, t, sideH, base, chamferM, w / 2 - t / 2, 0.0, {false, false, false, false});
         break;
     }
     }

@@ -1,4 +1,5 @@
 #include "world/ContactRecorder.hpp"
+#include "world/RollingResistance.hpp"
 
 #include <abalike/world/GameWorld.hpp>
 #include <algorithm>
@@ -26,13 +27,17 @@ GameWorld::GameWorld(const LevelDef& level, const Catalog& catalog, const WorldS
 {
     if (!(settings.dtS > 0.0) || !std::isfinite(settings.dtS))
         throw std::invalid_argument("world time step must be a finite number > 0");
-    if (settings.velocityIterations < 1 || settings.positionIterations < 0 || settings.maxSubsteps < 1)
+    if (settings.velocityIterations < 1 || settings.positionIterations < 0 || settings.maxSubsteps < 1 ||
+        settings.stackDepthPerSubstep < 1 || settings.maxStackSubsteps < 1)
         throw std::invalid_argument("world iterations and sub-steps must be >= 1");
+    if (!(settings.cornerChamferM >= 0.0 && settings.cornerChamferM < 0.02) || !std::isfinite(settings.contactGapM))
+        throw std::invalid_argument("corner chamfer must be 0 to 2 cm and the contact gap finite");
     m_world = std::make_unique<b2World>(b2Vec2(0.0f, static_cast<float>(-level.environment.gravity)));
     m_world->SetAllowSleeping(settings.allowSleep);
     // Forces (drag on birds) are applied once per step and must act in every sub-step of it.
     m_world->SetAutoClearForces(false);
-    m_contacts = std::make_unique<ContactRecorder>(static_cast<float>(catalog.damageSpeedThresholdMps()));
+    m_contacts = std::make_unique<ContactRecorder>(static_cast<float>(catalog.damageSpeedThresholdMps()),
+                                                   static_cast<float>(settings.contactGapM));
     m_world->SetContactListener(m_contacts.get());
     buildLevel();
     measureStackDepth();
@@ -41,6 +46,8 @@ GameWorld::GameWorld(const LevelDef& level, const Catalog& catalog, const WorldS
             std::clamp(kSettlePerDepthSquared * m_stackDepth * m_stackDepth, kMinAutoSettle, kMaxAutoSettle);
     else
         m_settleIterations = std::max(0, settings.settleIterations);
+    m_stackSubsteps = std::clamp((m_stackDepth + settings.stackDepthPerSubstep - 1) / settings.stackDepthPerSubstep, 1,
+                                 std::min(settings.maxStackSubsteps, settings.maxSubsteps));
 }
 
 void GameWorld::measureStackDepth()
@@ -92,6 +99,13 @@ double GameWorld::maxSpeedMps() const
     return kSubstepTravelShare * b2_maxTranslation * m_settings.maxSubsteps / m_settings.dtS;
 }
 
+int GameWorld::substepsFor(double speedMps) const
+{
+    const double travel = speedMps * m_settings.dtS;
+    const double perSubstep = kSubstepTravelShare * b2_maxTranslation;
+    return std::clamp(static_cast<int>(std::ceil(travel / perSubstep)), m_stackSubsteps, m_settings.maxSubsteps);
+}
+
 int GameWorld::substepCount() const
 {
     if (m_settings.maxSubsteps <= 1)
@@ -100,9 +114,7 @@ int GameWorld::substepCount() const
     for (const b2Body* body = m_world->GetBodyList(); body != nullptr; body = body->GetNext())
         if (body->GetType() == b2_dynamicBody && body->IsAwake())
             fastest2 = std::max(fastest2, body->GetLinearVelocity().LengthSquared());
-    const double travel = std::sqrt(static_cast<double>(fastest2)) * m_settings.dtS;
-    const double perSubstep = kSubstepTravelShare * b2_maxTranslation;
-    return std::clamp(static_cast<int>(std::ceil(travel / perSubstep)), 1, m_settings.maxSubsteps);
+    return substepsFor(std::sqrt(static_cast<double>(fastest2)));
 }
 
 void GameWorld::step()
@@ -121,10 +133,17 @@ void GameWorld::step()
 
     m_lastSubsteps = substepCount();
     const auto h = static_cast<float>(m_settings.dtS / m_lastSubsteps);
-    const int velocityIterations =
-        m_steps == 0 ? std::max(m_settleIterations, m_settings.velocityIterations) : m_settings.velocityIterations;
+    const double rolling = m_settings.rollingResistance ? m_catalog.rollingResistance() : 0.0;
     for (int i = 0; i < m_lastSubsteps; ++i)
-        m_world->Step(h, velocityIterations, m_settings.positionIterations);
+    {
+        // The first step is the settle step (WorldSettings::settleIterations), in each of its sub-steps.
+        const bool settle = m_steps == 0;
+        m_world->Step(
+            h, settle ? std::max(m_settleIterations, m_settings.velocityIterations) : m_settings.velocityIterations,
+            m_settings.positionIterations);
+        if (rolling > 0.0)
+            resistRolling(m_entities, rolling);
+    }
     ++m_steps;
     m_world->ClearForces();
     m_time += m_settings.dtS;

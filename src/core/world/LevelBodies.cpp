@@ -83,7 +83,7 @@ void GameWorld::buildLevel()
         b2Body* body = m_world->CreateBody(&def);
         b2FixtureDef fixture;
         fixture.friction = static_cast<float>(m_catalog.groundFriction());
-        addBoxFixture(body, t.widthM, t.heightM, fixture);
+        addBoxFixture(body, t.widthM, t.heightM, fixture, static_cast<float>(m_settings.cornerChamferM));
         m_entities[static_cast<std::size_t>(index)].body = body;
     }
 
@@ -114,7 +114,7 @@ void GameWorld::buildLevel()
         fixture.density = static_cast<float>(material->densityKgPerM2);
         fixture.friction = static_cast<float>(material->friction);
         fixture.restitution = static_cast<float>(material->restitution);
-        addBlockFixtures(body, b, fixture);
+        addBlockFixtures(body, b, fixture, static_cast<float>(m_settings.cornerChamferM));
         setBodyMass(body, material->densityKgPerM2 * designedArea(b));
         m_entities[static_cast<std::size_t>(index)].body = body;
     }

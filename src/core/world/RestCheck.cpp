@@ -109,6 +109,8 @@ RestReport checkRest(const LevelDef& level, const Catalog& catalog, double secon
     RestReport report;
     report.seconds = seconds;
     report.toleranceM = toleranceM;
+    report.stackDepth = world.stackDepth();
+    report.stackSubsteps = world.stackSubsteps();
 
     std::vector<int> tracked; // entity index of each reported body
     std::vector<Pose> designed;
@@ -181,6 +183,11 @@ std::string RestReport::summary() const
     if (!worstMassRatio.heavier.empty())
         out << " (" << worstMassRatio.heavier << " on " << worstMassRatio.lighter << ")";
     out << (settled ? ", asleep" : ", still awake");
+    if (!passed() && maxDisplacementM > toleranceM && stackDepth >= kDeepStack)
+        out << "; the deepest stack is " << stackDepth << " bodies, solved in " << stackSubsteps
+            << " sub-steps per step: Box2D holds a stack that deep only approximately, and an off-centre load or a"
+               " heavy body high on a narrow column makes it lean; centre the load, widen the column or make it"
+               " shorter (docs/world-physics.md, \"What the world cannot hold\")";
     return out.str();
 }
 

@@ -27,4 +27,27 @@ std::vector<b2Vec2> insetPolygon(const std::vector<b2Vec2>& outline)
     return inset;
 }
 
+std::vector<b2Vec2> chamferCorners(const std::vector<b2Vec2>& polygon, float chamfer, const std::vector<bool>& cut)
+{
+    const std::size_t n = polygon.size();
+    std::vector<b2Vec2> out;
+    out.reserve(2 * n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const b2Vec2 here = polygon[i];
+        if (!(chamfer > 0.0f) || (!cut.empty() && !cut[i]))
+        {
+            out.push_back(here);
+            continue;
+        }
+        b2Vec2 toPrev = polygon[(i + n - 1) % n] - here;
+        b2Vec2 toNext = polygon[(i + 1) % n] - here;
+        toPrev.Normalize();
+        toNext.Normalize();
+        out.push_back(here + chamfer * toPrev);
+        out.push_back(here + chamfer * toNext);
+    }
+    return out;
+}
+
 } // namespace abalike
