@@ -67,6 +67,13 @@ def main():
         if sorted(names) != sorted(expected):
             failures.append(f"schema {table} {names} differ from assets/catalog.json {expected}")
 
+    # One launch-speed cap: the schema's largest reference-shot speed is the catalog's.
+    cap = catalog["slingshot"]["max_launch_speed_mps"]
+    schema_cap = item_props["reference_shot"]["prefixItems"][1]["maximum"]
+    if schema_cap != cap:
+        failures.append(f"schema reference_shot speed maximum {schema_cap} differs from the catalog's "
+                        f"slingshot.max_launch_speed_mps {cap}")
+
     malformed = root / "tests/level/malformed"
     semantic = set()
     listing = malformed / "schema-valid.txt"

@@ -73,7 +73,7 @@ public:
     double launchSpeedForForce(double forceN) const;
     /// The slingshot force F = m v0 / t_release that launches the current bird at a speed (for the HUD).
     double forceForLaunchSpeed(double speedMps) const;
-    /// Fastest launch of the current bird (the slingshot's maximum force).
+    /// Fastest launch of the current bird: the slingshot's maximum force, at most the catalog's launch-speed cap.
     double maxLaunchSpeed() const;
     /// Where a bird leaves the slingshot.
     std::array<double, 2> launchPoint() const;

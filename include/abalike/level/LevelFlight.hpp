@@ -11,9 +11,8 @@ namespace abalike
 /// the bird's size (absent in vacuum), and the wind and gusts that act through that drag.
 FlightModel levelFlightModel(const EnvironmentDef& environment, const BirdType& bird);
 
-/// Fastest launch of a bird from a slingshot, v0 = F t_release / m, capped a little below the speed at which
-/// Box2D's per-step translation limit (b2_maxTranslation per step of dtS) would slow it.
-double maxLaunchSpeed(const SlingshotDef& slingshot, const BirdType& bird, const Catalog& catalog,
-                      double dtS = 1.0 / 60.0);
+/// Fastest launch of a bird from a slingshot, v0 = F t_release / m, capped at the catalog's launch-speed cap
+/// (Catalog::maxLaunchSpeedMps): the one cap the game, the level checks, the solver and the HUD use.
+double maxLaunchSpeed(const SlingshotDef& slingshot, const BirdType& bird, const Catalog& catalog);
 
 } // namespace abalike

@@ -62,9 +62,8 @@ double GameSession::forceForLaunchSpeed(double speedMps) const
 
 double GameSession::maxLaunchSpeed() const
 {
-    const double bySlingshot = launchSpeedForForce(m_level.slingshot.maxForceN);
-    const double byBox2d = m_world->maxSpeedMps(); // Box2D would cap faster birds silently
-    return std::min(bySlingshot, byBox2d);
+    const BirdType* bird = currentBird();
+    return bird == nullptr ? 0.0 : abalike::maxLaunchSpeed(m_level.slingshot, *bird, m_catalog);
 }
 
 std::array<double, 2> GameSession::launchPoint() const

@@ -1,16 +1,9 @@
 #include <abalike/level/LevelFlight.hpp>
 
 #include <algorithm>
-#include <box2d/b2_common.h>
 
 namespace abalike
 {
-
-namespace
-{
-/// The same share of b2_maxTranslation the game session allows (GameSession::maxLaunchSpeed).
-constexpr double kMaxTranslationShare = 0.95;
-} // namespace
 
 FlightModel levelFlightModel(const EnvironmentDef& environment, const BirdType& bird)
 {
@@ -24,11 +17,10 @@ FlightModel levelFlightModel(const EnvironmentDef& environment, const BirdType& 
     return model;
 }
 
-double maxLaunchSpeed(const SlingshotDef& slingshot, const BirdType& bird, const Catalog& catalog, double dtS)
+double maxLaunchSpeed(const SlingshotDef& slingshot, const BirdType& bird, const Catalog& catalog)
 {
     const double bySlingshot = slingshot.maxForceN * catalog.slingshotReleaseTimeS() / bird.massKg;
-    const double byBox2d = kMaxTranslationShare * b2_maxTranslation / dtS;
-    return std::min(bySlingshot, byBox2d);
+    return std::min(bySlingshot, catalog.maxLaunchSpeedMps());
 }
 
 } // namespace abalike

@@ -238,13 +238,13 @@ void readHints(LevelReader& r, const json& root, LevelDef& level)
     }
 }
 
-void readReferenceShot(LevelReader& r, const json& root, LevelDef& level)
+void readReferenceShot(LevelReader& r, const json& root, LevelDef& level, const Catalog& catalog)
 {
     const auto it = root.find("reference_shot");
     if (it == root.end() || !r.array(*it, "/reference_shot", 2, 2, "numbers [angle_deg, speed_mps]"))
         return;
     const auto angle = r.numberAt((*it)[0], "/reference_shot/0", NumberRange{-90.0, 90.0, "degrees"});
-    const auto speed = r.numberAt((*it)[1], "/reference_shot/1", NumberRange{0.0, kMaxLaunchSpeedMps, "m/s"});
+    const auto speed = r.numberAt((*it)[1], "/reference_shot/1", NumberRange{0.0, catalog.maxLaunchSpeedMps(), "m/s"});
     if (angle && speed)
         level.referenceShot = ReferenceShotDef{*angle, *speed};
 }
@@ -314,7 +314,7 @@ LevelDef parseLevel(std::string_view text, const std::string& fileName, const Ca
     readTerrain(r, root, level);
     readEnvironment(r, root, level);
     readStars(r, root, level);
-    readReferenceShot(r, root, level);
+    readReferenceShot(r, root, level, catalog);
 
     // Geometry and reach only mean something once every field read cleanly; a fallback value would only add
     // confusing follow-on errors.

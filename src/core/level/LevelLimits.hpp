@@ -27,7 +27,6 @@ inline constexpr double kMaxGustPeriodS = 3600.0;
 inline constexpr double kMaxGustTimeS = 3600.0;
 inline constexpr double kMinTimeLimitS = 1.0;
 inline constexpr double kMaxTimeLimitS = 3600.0;
-inline constexpr double kMaxLaunchSpeedMps = 1000.0;
 inline constexpr long long kMaxStarScore = 100000000;
 
 inline constexpr std::size_t kMaxBirds = 20;
