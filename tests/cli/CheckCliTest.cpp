@@ -36,6 +36,17 @@ TEST(CheckCli, AGoodLevelPasses)
     EXPECT_TRUE(r.err.empty()) << r.err;
 }
 
+TEST(CheckCli, WallsAndMixedTowersPass)
+{
+    // Bricks side by side, and a tower whose columns change material storey by storey (issue 9).
+    const std::string wall = sourcePath("levels/structures/wall-10x20.json");
+    const std::string tower = sourcePath("levels/structures/tower-8-mixed.json");
+    const RunResult r = runAbalike("check " + wall + " " + tower);
+    EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("PASS " + wall), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("PASS " + tower), std::string::npos) << r.out;
+}
+
 class CheckCliMalformed : public ::testing::TestWithParam<std::string>
 {
 };

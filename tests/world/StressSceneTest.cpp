@@ -1,3 +1,4 @@
+#include <abalike/level/LevelIO.hpp>
 #include <abalike/world/RestCheck.hpp>
 #include <abalike/world/StressScenes.hpp>
 #include <gtest/gtest.h>
@@ -90,6 +91,38 @@ TEST(StressScenes, StoreyTowersCycleTheirMaterials)
     EXPECT_EQ(tower.blocks[6].material, "ice");
     EXPECT_EQ(tower.blocks[8].material, "wood");
     EXPECT_DOUBLE_EQ(tower.pigs[0].y, 3 * 1.75 + 0.25); // on the top plank
+}
+
+TEST(StressScenes, TheStructureLevelFilesAreTheScenes)
+{
+    // levels/structures/NAME.json is each structure scene as a level file, for `abalike check` and for designers
+    // to start from; it must not drift from the scene the tests and the bench use.
+    for (const StressScene& scene : structureScenes())
+    {
+        const LevelDef file = loadLevel(std::string(ABALIKE_SOURCE_DIR) + "/levels/structures/" + scene.name + ".json",
+                                        Catalog::builtin());
+        const LevelDef& level = scene.level;
+        ASSERT_EQ(file.blocks.size(), level.blocks.size()) << scene.name;
+        for (std::size_t i = 0; i < level.blocks.size(); ++i)
+        {
+            const BlockDef& a = file.blocks[i];
+            const BlockDef& b = level.blocks[i];
+            EXPECT_TRUE(a.material == b.material && a.shape == b.shape && a.x == b.x && a.y == b.y &&
+                        a.widthM == b.widthM && a.heightM == b.heightM && a.angleDeg == b.angleDeg)
+                << scene.name << " block " << i;
+        }
+        ASSERT_EQ(file.pigs.size(), level.pigs.size()) << scene.name;
+        for (std::size_t i = 0; i < level.pigs.size(); ++i)
+            EXPECT_TRUE(file.pigs[i].type == level.pigs[i].type && file.pigs[i].x == level.pigs[i].x &&
+                        file.pigs[i].y == level.pigs[i].y)
+                << scene.name << " pig " << i;
+        ASSERT_EQ(file.terrain.size(), level.terrain.size()) << scene.name;
+        for (std::size_t i = 0; i < level.terrain.size(); ++i)
+            EXPECT_TRUE(file.terrain[i].x == level.terrain[i].x && file.terrain[i].y == level.terrain[i].y &&
+                        file.terrain[i].widthM == level.terrain[i].widthM &&
+                        file.terrain[i].heightM == level.terrain[i].heightM)
+                << scene.name << " terrain " << i;
+    }
 }
 
 } // namespace

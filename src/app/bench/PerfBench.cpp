@@ -16,9 +16,9 @@ namespace abalike::app
 namespace
 {
 
-constexpr double kMinRealTimeFactor = 200.0; ///< headless speed target per campaign level
-constexpr double kMaxOverhead = 1.2;         ///< our world's step time over raw Box2D's
-constexpr int kPyramidRows = 40;             ///< 820 boxes
+constexpr double kMinRealTimeFactor = 1000.0; ///< headless speed target per campaign level
+constexpr double kMaxOverhead = 1.2;          ///< our world's step time over raw Box2D's
+constexpr int kPyramidRows = 40;              ///< 820 boxes
 
 /// How much work each part does: the full run for figures, the quick one as a smoke test.
 struct PerfPlan
@@ -26,6 +26,8 @@ struct PerfPlan
     int levelRuns = 5;
     int pyramidSteps = 600; ///< 10 s of game time
     int pyramidRuns = 5;
+    int wallRestSteps = 600; ///< the 1 000-block wall: 10 s at rest, then 10 s after a blast
+    int wallFallSteps = 600;
     double sweepSeconds = 30.0;
     double settleSeconds = 10.0;
 };
@@ -48,12 +50,20 @@ int runPerfBench(const BenchOptions& options)
 {
     PerfPlan plan;
     if (options.quick)
-        plan = {1, 60, 1, 2.0, 2.0};
+        plan = {1, 60, 1, 60, 60, 2.0, 2.0};
 
     std::vector<std::string> levelPaths;
     std::vector<LevelDef> sweepScenes;
     for (const StressScene& scene : stressScenes())
         sweepScenes.push_back(scene.level);
+    // Walls, mixed towers, ledges (issue 9); a quick run leaves out the 1 000-block wall (its settle step alone
+    // takes seconds), which the full run and the wall section below time.
+    for (const StressScene& scene : structureScenes())
+        if (!options.quick || scene.level.blocks.size() < 1000)
+        {
+            sweepScenes.push_back(scene.level);
+            sweepScenes.back().id = scene.name;
+        }
     try
     {
         levelPaths = loadCampaign(campaignManifest());
@@ -76,6 +86,7 @@ int runPerfBench(const BenchOptions& options)
     settleScenes.push_back(pyramidScene(kPyramidRows));
     if (!options.quick)
         sweepScenes.push_back(pyramidScene(kPyramidRows));
+    const WallPerf wall = measureWall(plan.wallRestSteps, plan.wallFallSteps);
     const std::vector<SettingsRow> sweep = sweepSettings(sweepScenes, plan.sweepSeconds);
     const std::vector<SettleRow> settle = settleTable(settleScenes, plan.settleSeconds);
 
@@ -102,7 +113,9 @@ int runPerfBench(const BenchOptions& options)
     md << "\n## " << kPyramidRows << "-row pyramid (" << pyramids[0].bodies
        << " boxes): our world against raw Box2D\n\n"
        << "The same bodies, fixtures and settings (8 velocity and 3 position iterations, the automatic settle step "
-          "first) stepped through `GameWorld::step()` and "
+          "first, the same Box2D sub-steps per step: "
+       << GameWorld(pyramidScene(kPyramidRows), Catalog::builtin()).stackSubsteps()
+       << " for a stack 40 deep) stepped through `GameWorld::step()` and "
        << "through a plain `b2World::Step()` with no listener; " << plan.pyramidSteps << " steps, " << plan.pyramidRuns
        << " run(s) each, alternating which goes first. The first (settle) step is reported "
        << "apart. Overhead: the best run of ours over the best run of raw Box2D (the median of the per-run ratios "
@@ -122,39 +135,77 @@ int runPerfBench(const BenchOptions& options)
            << (ok ? "yes" : "NO") << " |\n";
     }
 
+    const auto stats = [](const StepStats& st)
+    {
+        return fixed(st.medianUs, 1) + " / " + fixed(st.meanUs, 1);
+    };
+    md << "\n## The 1 000-block wall: our world against raw Box2D\n\n"
+       << "`wall-20x50-mixed` (" << wall.bodies
+       << " bodies: 20 x 50 bricks of 0.5 x 0.25 m, wood, ice and stone in turn, a pig on top) stepped "
+       << plan.wallRestSteps << " times at rest (sleep on, as played: the settle step took "
+       << fixed(wall.settleOursMs, 0) << " ms), then " << plan.wallFallSteps
+       << " times after a black bird's blast (250 N s within 3 m) at the foot of its middle, which brings "
+       << wall.fallenOurs << " blocks down in our world. Three worlds with the same bodies: ours (8/3 iterations, "
+       << wall.substeps
+       << " Box2D sub-steps per step for a stack 51 deep, settle step, contact rule, rolling resistance), a plain "
+          "`b2World` with the same iterations, sub-steps and settle step, and a plain `b2World` with Box2D's "
+          "defaults (8/3, one step, no settle step). Microseconds per game step (1/60 s), median / mean.\n\n"
+       << "| Phase | Ours | Raw Box2D, our settings | Raw Box2D, its defaults | Ours / raw, our settings (mean) |\n"
+       << "|---|---:|---:|---:|---:|\n"
+       << "| at rest | " << stats(wall.restOurs) << " | " << stats(wall.restRaw) << " | " << stats(wall.restDefault)
+       << " | " << fixed(wall.restOurs.meanUs / wall.restRaw.meanUs, 2) << " |\n"
+       << "| collapsing | " << stats(wall.fallOurs) << " | " << stats(wall.fallRaw) << " | " << stats(wall.fallDefault)
+       << " | " << fixed(wall.fallOurs.meanUs / wall.fallRaw.meanUs, 2) << " |\n";
+
     md << "\n## Box2D settings: drift at rest against cost\n\n"
-       << "Every stress scene (" << stressScenes().size() << "), campaign level (" << levelPaths.size() << ")"
-       << (options.quick ? "" : " and the 40-row pyramid") << " left alone for " << plan.sweepSeconds
-       << " s through `checkRest()`; drift is the largest move of any "
+       << "Every stress scene (" << stressScenes().size() << "), structure scene ("
+       << structureScenes().size() - (options.quick ? 1 : 0) << (options.quick ? ", without the 1 000-block wall" : "")
+       << "), campaign level (" << levelPaths.size() << ")" << (options.quick ? "" : " and the 40-row pyramid")
+       << " left alone for " << plan.sweepSeconds
+       << " s through `checkRest()`; a scene fails when a body moves more than 5 mm or takes damage; drift is the "
+          "largest move of any "
        << "corner of any body from where it was designed. Cost: wall time per game step (1/60 s) of those checks "
           "(sleep on, so mostly resting bodies), and per game step of the 15-row pyramid kept awake.\n\n"
-       << "| Settings | Velocity / position iterations | Settle step | Sub-steps | Sleep | Max drift (mm) | Worst "
-          "scene | us per step at rest | us per step, pyramid awake |\n"
-       << "|---|---:|---:|---:|---|---:|---|---:|---:|\n";
+       << "| Settings | Velocity / position iterations | Settle step | Sub-steps | Sleep | Scenes failing | Max "
+          "drift (mm) | Worst scene | us per step at rest | us per step, pyramid awake |\n"
+       << "|---|---:|---:|---:|---|---:|---:|---|---:|---:|\n";
     for (const SettingsRow& r : sweep)
         md << "| " << r.label << " | " << r.settings.velocityIterations << " / " << r.settings.positionIterations
            << " | "
            << (r.settings.settleIterations == WorldSettings::kAutoSettle ? std::string("auto")
                                                                          : std::to_string(r.settings.settleIterations))
-           << " | " << r.substeps << " | " << (r.settings.allowSleep ? "on" : "off") << " | " << fixed(r.maxDriftMm, 3)
+           << " | " << (r.settings.maxStackSubsteps > 1 ? "by depth" : std::to_string(r.substeps)) << " | "
+           << (r.settings.allowSleep ? "on" : "off") << " | " << r.failingScenes << " | " << fixed(r.maxDriftMm, 3)
            << " | " << r.worstScene << " | " << fixed(r.usPerStep, 1) << " | " << fixed(r.pyramidUsPerStep, 1)
            << " |\n";
 
-    md << "\n## The automatic settle step per scene\n\n"
-       << "Depth: the most bodies resting on each other; settle iterations: 5 x depth^2, at least 2000, at most "
-          "10 000; then the rest check of "
+    md << "\n## The automatic settle step and stack sub-steps per scene\n\n"
+       << "Depth: the most bodies resting on each other; sub-steps: Box2D steps per game step for the stacks, "
+          "ceil(depth / 5), at most 4; settle iterations: 5 x depth^2, at least 2000, at most 10 000, in each "
+          "sub-step of the first step; then the rest check of "
        << plan.settleSeconds << " s with the default settings.\n\n"
-       << "| Scene | Bodies | Depth | Settle iterations | Settle step (ms) | Max drift (mm) | Stands |\n"
-       << "|---|---:|---:|---:|---:|---:|---|\n";
+       << "| Scene | Bodies | Depth | Sub-steps | Settle iterations | Settle step (ms) | Max drift (mm) | Stands |\n"
+       << "|---|---:|---:|---:|---:|---:|---:|---|\n";
     for (const SettleRow& r : settle)
-        md << "| " << r.scene << " | " << r.bodies << " | " << r.depth << " | " << r.iterations << " | "
-           << fixed(r.firstStepMs, 1) << " | " << fixed(r.maxDriftMm, 3) << " | " << (r.stands ? "yes" : "NO")
+        md << "| " << r.scene << " | " << r.bodies << " | " << r.depth << " | " << r.substeps << " | " << r.iterations
+           << " | " << fixed(r.firstStepMs, 1) << " | " << fixed(r.maxDriftMm, 3) << " | " << (r.stands ? "yes" : "NO")
            << " |\n";
     md << "\nResult: " << (pass ? "every target met" : "a target was MISSED") << ".\n";
 
     const std::filesystem::path out(options.outDir);
     std::ofstream csv(out / "perf.csv");
     csv << "section,case,runs,steps,median_us,p95_us,mean_us,value,target,pass\n";
+    const auto wallCsv = [&](const std::string& name, int steps, const StepStats& st)
+    {
+        csv << "wall," << name << ",1," << steps << ',' << st.medianUs << ',' << st.p95Us << ',' << st.meanUs
+            << ",,,\n";
+    };
+    wallCsv("rest-ours", plan.wallRestSteps, wall.restOurs);
+    wallCsv("rest-raw", plan.wallRestSteps, wall.restRaw);
+    wallCsv("rest-default", plan.wallRestSteps, wall.restDefault);
+    wallCsv("collapse-ours", plan.wallFallSteps, wall.fallOurs);
+    wallCsv("collapse-raw", plan.wallFallSteps, wall.fallRaw);
+    wallCsv("collapse-default", plan.wallFallSteps, wall.fallDefault);
     for (const LevelPerf& l : levels)
         csv << "level," << l.file << ',' << l.runs << ',' << l.stepsPerRun << ',' << l.steps.medianUs << ','
             << l.steps.p95Us << ',' << l.steps.meanUs << ',' << l.realTimeFactor << ",>=" << kMinRealTimeFactor << ','

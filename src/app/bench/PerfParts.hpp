@@ -2,8 +2,11 @@
 
 #include <abalike/level/LevelDef.hpp>
 #include <abalike/world/GameWorld.hpp>
+#include <memory>
 #include <string>
 #include <vector>
+
+class b2World;
 
 namespace abalike::app
 {
@@ -57,6 +60,32 @@ struct PyramidPerf
 
 PyramidPerf measurePyramid(int rows, int steps, int runs, bool allowSleep);
 
+/// A plain b2World with the same bodies, fixtures and settings as `from`, created in the same order (Box2D lists
+/// bodies and fixtures newest first), so that both worlds compute the same thing and only our layer differs.
+std::unique_ptr<b2World> cloneWorld(const b2World& from, bool allowSleep);
+
+/// One step of a plain b2World as `like` takes it: the same Box2D sub-steps (GameWorld::stackSubsteps) and
+/// iterations, the settle iterations when `settle`; no contact listener, no rolling resistance.
+void stepRawLike(b2World& world, const GameWorld& like, bool settle);
+
+/// The 1 000-block wall (structureScenes "wall-20x50-mixed") at rest and while it collapses, stepped through our
+/// world and through plain b2Worlds holding the same bodies: one with our settings, one with Box2D's defaults.
+struct WallPerf
+{
+    int bodies = 0;
+    int substeps = 0; ///< our Box2D sub-steps per step
+    double settleOursMs = 0.0;
+    StepStats restOurs;    ///< sleep on, the steps after the settle step
+    StepStats restRaw;     ///< plain Box2D, our iterations and sub-steps
+    StepStats restDefault; ///< plain Box2D, 8/3 iterations, one step, no settle step
+    StepStats fallOurs;    ///< after a blast at the wall's foot, every body awake
+    StepStats fallRaw;
+    StepStats fallDefault;
+    int fallenOurs = 0; ///< blocks more than 0.5 m from where they were built at the end
+};
+
+WallPerf measureWall(int restSteps, int fallSteps);
+
 /// One row of the iteration sweep: how far the stress scenes and campaign levels drift at rest, and the cost.
 struct SettingsRow
 {
@@ -65,6 +94,7 @@ struct SettingsRow
     int substeps = 1;        ///< the step split in this many Box2D steps of dt / substeps
     double maxDriftMm = 0.0; ///< worst displacement of any body over all scenes
     std::string worstScene;
+    int failingScenes = 0;         ///< scenes that moved more than 5 mm or took damage
     double usPerStep = 0.0;        ///< mean over all scenes' steps (sleep on unless said)
     double pyramidUsPerStep = 0.0; ///< mean over the 15-row pyramid's awake first second
 };
@@ -77,6 +107,7 @@ struct SettleRow
     std::string scene;
     int bodies = 0;
     int depth = 0;
+    int substeps = 1; ///< Box2D sub-steps per step for its stacks
     int iterations = 0;
     double firstStepMs = 0.0;
     double maxDriftMm = 0.0; ///< over the rest check

@@ -5,6 +5,7 @@
 #include <box2d/box2d.h>
 #include <chrono>
 #include <memory>
+#include <vector>
 
 namespace abalike::app
 {
@@ -13,52 +14,6 @@ namespace
 {
 
 using Clock = std::chrono::steady_clock;
-
-/// A plain b2World with the same bodies, fixtures and settings as `from`, created in the same order (Box2D lists
-/// bodies and fixtures newest first), so that both worlds compute the same thing and only our layer differs.
-std::unique_ptr<b2World> cloneWorld(const b2World& from, bool allowSleep)
-{
-    auto world = std::make_unique<b2World>(from.GetGravity());
-    world->SetAllowSleeping(allowSleep);
-    std::vector<const b2Body*> bodies;
-    for (const b2Body* b = from.GetBodyList(); b != nullptr; b = b->GetNext())
-        bodies.push_back(b);
-    std::reverse(bodies.begin(), bodies.end());
-    for (const b2Body* b : bodies)
-    {
-        b2BodyDef def;
-        def.type = b->GetType();
-        def.position = b->GetPosition();
-        def.angle = b->GetAngle();
-        def.linearVelocity = b->GetLinearVelocity();
-        def.angularVelocity = b->GetAngularVelocity();
-        def.linearDamping = b->GetLinearDamping();
-        def.angularDamping = b->GetAngularDamping();
-        def.allowSleep = b->IsSleepingAllowed();
-        def.awake = b->IsAwake();
-        def.fixedRotation = b->IsFixedRotation();
-        def.bullet = b->IsBullet();
-        def.gravityScale = b->GetGravityScale();
-        b2Body* body = world->CreateBody(&def);
-        std::vector<const b2Fixture*> fixtures;
-        for (const b2Fixture* f = b->GetFixtureList(); f != nullptr; f = f->GetNext())
-            fixtures.push_back(f);
-        std::reverse(fixtures.begin(), fixtures.end());
-        for (const b2Fixture* f : fixtures)
-        {
-            b2FixtureDef fd;
-            fd.shape = f->GetShape();
-            fd.friction = f->GetFriction();
-            fd.restitution = f->GetRestitution();
-            fd.restitutionThreshold = f->GetRestitutionThreshold();
-            fd.density = f->GetDensity();
-            fd.isSensor = f->IsSensor();
-            fd.filter = f->GetFilterData();
-            body->CreateFixture(&fd);
-        }
-    }
-    return world;
-}
 
 double seconds(Clock::time_point since)
 {
@@ -107,13 +62,10 @@ PyramidPerf measurePyramid(int rows, int steps, int runs, bool allowSleep)
         };
         const auto runRaw = [&]
         {
-            const auto h = static_cast<float>(settings.dtS);
             for (int i = 0; i < steps; ++i)
             {
-                const int velocityIterations = i == 0 ? std::max(world.settleIterations(), settings.velocityIterations)
-                                                      : settings.velocityIterations;
                 const auto t0 = Clock::now();
-                plain->Step(h, velocityIterations, settings.positionIterations);
+                stepRawLike(*plain, world, i == 0);
                 const double dt = seconds(t0);
                 (i == 0 ? firstRaw : raw).push_back(dt);
                 rawTotal += i == 0 ? 0.0 : dt;
