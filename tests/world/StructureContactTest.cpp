@@ -69,7 +69,7 @@ TEST(StructureContacts, ChamferedBricksStillRestExactlyOnTheirDesignedSurfaces)
 }
 
 /// A row of 0.25 m bricks with a small pig 0.1 m right of the seam between bricks 1 and 2: it rests on brick 2
-/// only, 35 mm from the seam, 1.2 mm above the corner of brick 1.
+/// only, 35 mm from the seam, 2.5 mm above the corner of brick 1 (inside Box2D's skin).
 LevelDef pigNearASeam()
 {
     LevelDef level;
