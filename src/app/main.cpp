@@ -12,6 +12,7 @@ int main(int argc, char** argv)
     using namespace abalike::app;
     CLI::App app{"Angry Birds Alike: a slingshot physics game and physics teaching tool", "abalike"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", "abalike " ABALIKE_VERSION);
     std::map<std::string, CommandRunner> commands;
     commands["predict"] = addPredictCommand(app);
     commands["simulate"] = addSimulateCommand(app);
@@ -42,6 +43,11 @@ int main(int argc, char** argv)
     catch (const CLI::CallForAllHelp&)
     {
         std::cout << app.help("", CLI::AppFormatMode::All);
+        return 0;
+    }
+    catch (const CLI::CallForVersion& e)
+    {
+        std::cout << e.what() << '\n';
         return 0;
     }
     catch (const CLI::ParseError& e)
