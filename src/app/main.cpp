@@ -2,6 +2,7 @@
 #include "cli/UsageError.hpp"
 
 #include <abalike/level/LevelIO.hpp>
+#include <abalike/level/SafeText.hpp>
 
 #include <iostream>
 #include <map>
@@ -27,7 +28,8 @@ int main(int argc, char** argv)
         std::string known;
         for (const auto& entry : commands)
             known += (known.empty() ? "" : ", ") + entry.first;
-        std::cerr << "abalike: error: unknown command \"" << argv[1] << "\" (expected one of: " << known << ")\n";
+        std::cerr << "abalike: error: unknown command \"" << abalike::escapeForTerminal(argv[1])
+                  << "\" (expected one of: " << known << ")\n";
         return kUsageExitCode;
     }
 
@@ -52,7 +54,7 @@ int main(int argc, char** argv)
     }
     catch (const CLI::ParseError& e)
     {
-        std::cerr << "abalike: error: " << e.what() << " (see abalike --help)\n";
+        std::cerr << "abalike: error: " << abalike::escapeForTerminal(e.what()) << " (see abalike --help)\n";
         return kUsageExitCode;
     }
 
@@ -64,7 +66,8 @@ int main(int argc, char** argv)
     }
     catch (const UsageError& e)
     {
-        std::cerr << "abalike: error: " << e.what() << '\n';
+        // Messages may quote file names and arguments: escape what would act on a terminal.
+        std::cerr << "abalike: error: " << abalike::escapeForTerminal(e.what()) << '\n';
         return kUsageExitCode;
     }
     catch (const abalike::LevelLoadError& e)
@@ -76,7 +79,7 @@ int main(int argc, char** argv)
     }
     catch (const std::exception& e)
     {
-        std::cerr << "abalike: error: " << e.what() << '\n';
+        std::cerr << "abalike: error: " << abalike::escapeForTerminal(e.what()) << '\n';
         return 1;
     }
     return 0;

@@ -3,6 +3,7 @@
 #include "render/Font.hpp"
 #include "render/Screenshot.hpp"
 
+#include <abalike/level/SafeText.hpp>
 #include <abalike/save/DataDirectory.hpp>
 
 #include <SFML/System/Clock.hpp>
@@ -387,12 +388,12 @@ int runPlay(const PlayOptions& options)
             for (const LevelIssue& issue : error.issues())
                 std::cerr << issue.format() << "\n";
             if (error.issues().empty())
-                std::cerr << path << ": error: " << error.what() << "\n";
+                std::cerr << escapeForTerminal(path) << ": error: " << error.what() << "\n";
             return 2;
         }
         catch (const std::exception& error)
         {
-            std::cerr << path << ": error: " << error.what() << "\n";
+            std::cerr << escapeForTerminal(path) << ": error: " << escapeForTerminal(error.what()) << "\n";
             return 2;
         }
     }
