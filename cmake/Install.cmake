@@ -15,15 +15,17 @@ set(ABALIKE_MAINTAINER "the Angry Birds Alike authors <abalike@users.noreply.inv
 # copied build needs no checkout.
 file(RELATIVE_PATH _data_from_bin "/prefix/${ABALIKE_INSTALL_BINDIR}" "/prefix/${ABALIKE_INSTALL_DATADIR}")
 set(ABALIKE_STAGED_DATA_DIR "${CMAKE_BINARY_DIR}/${ABALIKE_INSTALL_DATADIR}")
-target_compile_definitions(abalike PRIVATE ABALIKE_VERSION="${PROJECT_VERSION}"
-                                           ABALIKE_DATA_FROM_INSTALLED_EXE="${_data_from_bin}"
-                                           ABALIKE_DATA_FROM_BUILD_EXE="${ABALIKE_INSTALL_DATADIR}")
+target_compile_definitions(abalike PRIVATE ABALIKE_VERSION="${PROJECT_VERSION}")
+target_compile_definitions(abalike_app PRIVATE ABALIKE_DATA_FROM_INSTALLED_EXE="${_data_from_bin}"
+                                               ABALIKE_DATA_FROM_BUILD_EXE="${ABALIKE_INSTALL_DATADIR}")
 
 # Debian's hardening for the shipped program (dpkg-buildflags' defaults plus bindnow); sanitizer builds keep
 # their own checks, which fortified libc calls would get in the way of.
 if(NOT ABALIKE_SANITIZE AND NOT ABALIKE_FUZZ)
-    target_compile_definitions(abalike PRIVATE $<$<NOT:$<CONFIG:Debug>>:_FORTIFY_SOURCE=2>)
-    target_compile_options(abalike PRIVATE -fstack-protector-strong)
+    foreach(_target abalike abalike_app abalike_plot)
+        target_compile_definitions(${_target} PRIVATE $<$<NOT:$<CONFIG:Debug>>:_FORTIFY_SOURCE=2>)
+        target_compile_options(${_target} PRIVATE -fstack-protector-strong)
+    endforeach()
     target_link_options(abalike PRIVATE -Wl,-z,relro -Wl,-z,now)
 endif()
 

@@ -2,7 +2,6 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <stdexcept>
 
 namespace abalike::app
 {
@@ -40,9 +39,9 @@ std::string gameDataDirectory()
         for (const fs::path& candidate : {installed, staged})
             if (hasCampaign(candidate))
                 return candidate.string();
-    throw std::runtime_error("cannot find the game's data (levels/campaign.json) in " + installed.string() + " or " +
-                             staged.string() +
-                             "; reinstall abalike, or set ABALIKE_SHARE_DIR to the folder that holds levels/");
+    // Neither has it: the installed place is where it should be, and reading the campaign there fails with a
+    // message naming it. Not an error here, so a designer can still play a level file given by path.
+    return installed.string();
 }
 
 std::string levelsDirectory()
