@@ -1,0 +1,128 @@
+#include "cli/Arguments.hpp"
+#include "cli/Commands.hpp"
+#include "cli/UsageError.hpp"
+
+#include <abalike/teach/RangeChart.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace abalike::app
+{
+
+namespace
+{
+
+struct RangeArgs
+{
+    std::string speed, y0 = "0", from = "-90", to = "90", step = "1", maxT = "60", dt;
+    FlightModelArgs model;
+    std::string out;
+    bool json = false;
+};
+
+RangeLaunch parseLaunch(const RangeArgs& a)
+{
+    RangeLaunch launch;
+    launch.model = parseFlightModel(a.model);
+    launch.speedMps = parseFinite(a.speed, "--speed");
+    if (launch.speedMps < 0.0)
+        throw UsageError("--speed: must be >= 0 m/s, got " + a.speed);
+    launch.heightM = parseFinite(a.y0, "--y0");
+    if (launch.heightM < 0.0)
+        throw UsageError("--y0: the launch must be at or above the ground (y = 0), got " + a.y0);
+    launch.maxTimeS = parseFinite(a.maxT, "--max-t");
+    if (launch.maxTimeS <= 0.0)
+        throw UsageError("--max-t: must be > 0 s, got " + a.maxT);
+    launch.settings.dtS = a.dt.empty() ? 1.0 / 60.0 : parseFinite(a.dt, "--dt");
+    if (launch.settings.dtS <= 0.0)
+        throw UsageError("--dt: must be > 0 s, got " + a.dt);
+    // The same bound on work as predict: every angle may integrate up to --max-t.
+    if (launch.maxTimeS / launch.settings.dtS > 2.0e6)
+        throw UsageError("--dt " + a.dt + " over --max-t " + a.maxT +
+                         " s is more than 2 million steps per angle; use a larger --dt or a shorter --max-t");
+    return launch;
+}
+
+void printTable(const RangeChart& chart, const RangeLaunch& launch)
+{
+    std::printf("Range on flat ground (y = 0) at %g m/s from %g m up, by launch angle:\n\n", launch.speedMps,
+                launch.heightM);
+    std::printf("%10s  %14s\n", "angle deg", "range m");
+    for (std::size_t i = 0; i < chart.anglesDeg.size(); ++i)
+    {
+        if (chart.rangesM[i])
+            std::printf("%10.4g  %14.6f\n", chart.anglesDeg[i], *chart.rangesM[i]);
+        else
+            std::printf("%10.4g  %14s\n", chart.anglesDeg[i], "no landing");
+    }
+    if (chart.bestAngleDeg)
+        std::printf("\nbest angle %.2f deg: range %.6f m\n", *chart.bestAngleDeg, *chart.bestRangeM);
+    else
+        std::printf("\nno angle lands within --max-t\n");
+}
+
+int runRange(const RangeArgs& a)
+{
+    const RangeLaunch launch = parseLaunch(a);
+    const double from = parseFinite(a.from, "--from");
+    const double to = parseFinite(a.to, "--to");
+    const double step = parseFinite(a.step, "--step");
+    if (from < -90.0 || to > 90.0 || from > to)
+        throw UsageError("--from/--to: expected -90 <= from <= to <= 90 degrees, got " + a.from + " and " + a.to);
+    if (step <= 0.0)
+        throw UsageError("--step: must be > 0 degrees, got " + a.step);
+    RangeChart chart;
+    try
+    {
+        chart = rangeChart(launch, from, to, step);
+    }
+    catch (const std::invalid_argument& e)
+    {
+        throw UsageError(e.what());
+    }
+    if (!a.json)
+    {
+        printTable(chart, launch);
+        return 0;
+    }
+    using Json = nlohmann::ordered_json;
+    Json out;
+    out["angles_deg"] = chart.anglesDeg;
+    Json ranges = Json::array();
+    for (const auto& r : chart.rangesM)
+        ranges.push_back(r ? Json(*r) : Json(nullptr));
+    out["ranges_m"] = std::move(ranges);
+    out["best_angle_deg"] = chart.bestAngleDeg ? Json(*chart.bestAngleDeg) : Json(nullptr);
+    out["best_range_m"] = chart.bestRangeM ? Json(*chart.bestRangeM) : Json(nullptr);
+    std::cout << out.dump() << '\n';
+    return 0;
+}
+
+} // namespace
+
+CommandRunner addChartCommand(CLI::App& app)
+{
+    CLI::App* chart = app.add_subcommand("chart", "Charts of flight physics");
+    chart->require_subcommand(1);
+    auto args = std::make_shared<RangeArgs>();
+    CLI::App* cmd = chart->add_subcommand("range", "Range on flat ground against launch angle, and the best angle");
+    cmd->add_option("--speed", args->speed, "launch speed in m/s")->required();
+    cmd->add_option("--y0", args->y0, "launch height above the ground in m (default 0)");
+    addFlightModelOptions(*cmd, args->model);
+    cmd->add_option("--from", args->from, "first angle in degrees (default -90)");
+    cmd->add_option("--to", args->to, "last angle in degrees (default 90)");
+    cmd->add_option("--step", args->step, "angle step in degrees (default 1)");
+    cmd->add_option("--max-t", args->maxT, "a flight not down by then has no range (default 60 s)");
+    cmd->add_option("--dt", args->dt, "RK4 step in s (default 1/60)");
+    cmd->add_flag("--json", args->json, "print one JSON object");
+    return [args]
+    {
+        return runRange(*args);
+    };
+}
+
+} // namespace abalike::app
