@@ -1,9 +1,10 @@
 #include "bench/AccuracySweep.hpp"
 #include "bench/BenchSuite.hpp"
-#include "bench/LogLogPlot.hpp"
 #include "bench/PerfParts.hpp"
 #include "bench/ReportTable.hpp"
 #include "bench/RhsCost.hpp"
+#include "plot/PlotError.hpp"
+#include "plot/PlotPng.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -44,14 +45,16 @@ std::string orderText(double order)
     return std::isnan(order) ? "exact (error at rounding level)" : formatSignificant(order, 3);
 }
 
-LogLogPlot plotOf(const ProblemSweep& sweep)
+Plot plotOf(const ProblemSweep& sweep)
 {
-    LogLogPlot plot;
+    Plot plot;
     plot.title = "Flight integration: error against run time";
     plot.subtitle = sweep.problem.label + ", " + formatSignificant(sweep.problem.durationS, 2) +
                     " s flight, median of repeated runs";
-    plot.xLabel = "wall time per integration (µs)";
-    plot.yLabel = "max position error along the path (m)";
+    plot.x.label = "wall time per integration (µs)";
+    plot.x.scale = AxisScale::Log10;
+    plot.y.label = "max position error along the path (m)";
+    plot.y.scale = AxisScale::Log10;
     const Marker markers[] = {Marker::Square, Marker::Diamond, Marker::Disc, Marker::Disc, Marker::Square};
     std::size_t index = 0;
     for (const StepperKind method : kMethods)
@@ -70,7 +73,7 @@ LogLogPlot plotOf(const ProblemSweep& sweep)
     }
     for (const SweepPoint& p : sweep.points)
         if (p.stepper == StepperKind::Rk4 && std::lround(1.0 / p.dtS) == 60)
-            plot.notes.push_back({1e6 * p.seconds, p.maxError, "the preview: RK4 at 60 Hz"});
+            plot.callouts.push_back({1e6 * p.seconds, p.maxError, "the preview: RK4 at 60 Hz"});
     return plot;
 }
 
@@ -136,7 +139,15 @@ int runAccuracyBench(const BenchOptions& options)
 
         const std::string png =
             problem.name == "wind-quadratic-drag" ? "accuracy.png" : "accuracy-" + problem.name + ".png";
-        ok &= saveLogLogPlot(plotOf(sweep), ABALIKE_FONT_FILE, (std::filesystem::path(options.outDir) / png).string());
+        try
+        {
+            savePlotPng(plotOf(sweep), (std::filesystem::path(options.outDir) / png).string());
+        }
+        catch (const PlotError& e)
+        {
+            std::cerr << "abalike: " << e.what() << '\n';
+            ok = false;
+        }
     }
     std::cout << "Measured orders of convergence (error at the end against dt):\n" << orders.text() << "\n";
 
