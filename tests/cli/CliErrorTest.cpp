@@ -82,6 +82,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInvocation{"ChartTooManyAngles", "chart range --speed 10 --step 1e-6 --json", "more than 100000 angles"},
         BadInvocation{"ChartZeroMaxT", "chart range --speed 10 --max-t 0 --json", "--max-t"},
         BadInvocation{"ChartTooManySteps", "chart range --speed 10 --max-t 1e6 --json", "2 million steps"},
+        BadInvocation{"ChartUnwritableOut", "chart range --speed 10 --out /nonexistent/dir/range.png --json",
+                      "--out /nonexistent/dir/range.png"},
         BadInvocation{"ChartInfGravity", "chart range --speed 10 --gravity inf --json", "--gravity"},
         BadInvocation{"ChartNegativeGravity", "chart range --speed 10 --gravity=-9.81 --json", "gravity must be >= 0"}),
     [](const ::testing::TestParamInfo<BadInvocation>& info) { return std::string(info.param.name); });

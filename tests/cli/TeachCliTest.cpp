@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <unistd.h>
 
 namespace abalike::test
 {
@@ -120,6 +123,20 @@ TEST(ChartRangeCli, WithoutJsonPrintsATable)
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("best angle 45.00 deg"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("40.774720"), std::string::npos) << r.out;
+}
+
+TEST(ChartRangeCli, OutDrawsAPng)
+{
+    const auto path = std::filesystem::temp_directory_path() / ("abalike-range-" + std::to_string(::getpid()) + ".png");
+    const auto doc = jsonOf("chart range --speed 27 --mass 4 --quadratic-drag 0.055 --from 0 --to 90 --out " +
+                            path.string() + " --json");
+    EXPECT_FALSE(doc["best_angle_deg"].is_null()); // --out adds the picture, the JSON is still printed
+    std::ifstream png(path, std::ios::binary);
+    std::string signature(8, '\0');
+    png.read(signature.data(), 8);
+    EXPECT_EQ(signature, "\x89PNG\r\n\x1a\n");
+    EXPECT_GT(std::filesystem::file_size(path), 10000u);
+    std::filesystem::remove(path);
 }
 
 // ------------------------------------------------------------------ simulate: energy and impact

@@ -1,9 +1,12 @@
 #include "cli/Arguments.hpp"
 #include "cli/Commands.hpp"
 #include "cli/UsageError.hpp"
+#include "plot/PlotError.hpp"
+#include "plot/PlotPng.hpp"
 
 #include <abalike/teach/RangeChart.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -65,6 +68,75 @@ void printTable(const RangeChart& chart, const RangeLaunch& launch)
         std::printf("\nno angle lands within --max-t\n");
 }
 
+/// The chart as a PNG: range against angle, the best angle called out with guides to both axes.
+void saveRangePng(const RangeChart& chart, const RangeLaunch& launch, const std::string& path)
+{
+    Plot plot;
+    plot.title = "Range by launch angle";
+    char text[160];
+    std::snprintf(text, sizeof text, "%g m/s from %g m above flat ground, g = %g m/s\u00B2, m = %g kg", launch.speedMps,
+                  launch.heightM, launch.model.gravity, launch.model.massKg);
+    plot.subtitle = text;
+    const unsigned terms = activeTerms(launch.model);
+    if ((terms & kQuadraticDragTerm) != 0)
+        plot.subtitle += (std::snprintf(text, sizeof text, ", c = %g kg/m", launch.model.quadraticDrag), text);
+    if ((terms & kLinearDragTerm) != 0)
+        plot.subtitle += (std::snprintf(text, sizeof text, ", b = %g kg/s", launch.model.linearDrag), text);
+    if ((terms & kWindTerm) != 0)
+        plot.subtitle +=
+            (std::snprintf(text, sizeof text, ", wind (%g, %g) m/s", launch.model.windX, launch.model.windY), text);
+    if ((terms & kGustTerm) != 0)
+        plot.subtitle += ", gusts";
+    if ((terms & (kLinearDragTerm | kQuadraticDragTerm)) == 0)
+        plot.subtitle += ", no air";
+    plot.x.label = "launch angle (\u00B0)";
+    plot.x.min = chart.anglesDeg.front();
+    plot.x.max = chart.anglesDeg.back();
+    plot.y.label = "range (m)";
+    PlotSeries series;
+    series.label = "range on flat ground (RK4)";
+    series.colour = plotColour(0);
+    series.marker = chart.anglesDeg.size() > 60 ? Marker::None : Marker::Disc;
+    for (std::size_t i = 0; i < chart.anglesDeg.size(); ++i)
+        series.points.emplace_back(chart.anglesDeg[i], chart.rangesM[i] ? *chart.rangesM[i] : NAN);
+    plot.series.push_back(std::move(series));
+    if ((terms & (kLinearDragTerm | kQuadraticDragTerm)) != 0)
+    {
+        // The same launches without air, for comparison: what drag costs at each angle.
+        RangeLaunch vacuum = launch;
+        vacuum.model.linearDrag = vacuum.model.quadraticDrag = 0.0;
+        PlotSeries airless;
+        airless.label = "the same launch in vacuum";
+        airless.colour = plotColour(2);
+        airless.marker = Marker::None;
+        airless.dashed = true;
+        for (const double angle : chart.anglesDeg)
+            airless.points.emplace_back(angle, rangeAtAngle(vacuum, angle).value_or(NAN));
+        plot.series.push_back(std::move(airless));
+    }
+    if (chart.bestAngleDeg)
+    {
+        char text[96];
+        std::snprintf(text, sizeof text, "best %.2f\u00B0: %.2f m", *chart.bestAngleDeg, *chart.bestRangeM);
+        PlotCallout best;
+        best.x = *chart.bestAngleDeg;
+        best.y = *chart.bestRangeM;
+        best.text = text;
+        best.style = CalloutStyle::Highlight;
+        best.colour = plotColour(1);
+        best.guides = true;
+        plot.callouts.push_back(best);
+    }
+    try
+    {
+        savePlotPng(plot, path);
+    }
+    catch (const PlotError& e)
+    {
+        throw UsageError("--out " + path + ": " + e.what());
+    }
+}
+
 int runRange(const RangeArgs& a)
 {
     const RangeLaunch launch = parseLaunch(a);
@@ -84,6 +156,8 @@ int runRange(const RangeArgs& a)
     {
         throw UsageError(e.what());
     }
+    if (!a.out.empty())
+        saveRangePng(chart, launch, a.out);
     if (!a.json)
     {
         printTable(chart, launch);
@@ -118,6 +192,7 @@ CommandRunner addChartCommand(CLI::App& app)
     cmd->add_option("--step", args->step, "angle step in degrees (default 1)");
     cmd->add_option("--max-t", args->maxT, "a flight not down by then has no range (default 60 s)");
     cmd->add_option("--dt", args->dt, "RK4 step in s (default 1/60)");
+    cmd->add_option("--out", args->out, "also draw the chart into this PNG file");
     cmd->add_flag("--json", args->json, "print one JSON object");
     return [args]
     {

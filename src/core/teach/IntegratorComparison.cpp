@@ -13,7 +13,8 @@ IntegratorSettings ComparisonMethod::settings(double physicsDtS) const
     s.stepper = stepper;
     s.guardStiffness = false;
     s.dtS = stepper == StepperKind::Dopri5 ? physicsDtS : dtS;
-    s.tolerance = tolerance;
+    if (stepper == StepperKind::Dopri5)
+        s.tolerance = tolerance; // the fixed-step methods never use it
     return s;
 }
 
