@@ -145,16 +145,17 @@ sf::FloatRect ComparisonView::drawPanel(sf::RenderTarget& target, const sf::Font
     rows.push_back({method().label(), "", teach::kComparison});
     if (m_result)
     {
-        rows.push_back({"largest distance from the real path", formatDistance(m_result->maxErrorM)});
+        rows.push_back({"largest error against the real path", formatDistance(m_result->maxErrorM)});
         if (m_result->contactErrorM)
             rows.push_back({"first contact off by", formatDistance(*m_result->contactErrorM)});
         else if (!m_result->flight.contact)
             rows.push_back({"first contact", "none within 15 s"});
         char cost[96];
-        std::snprintf(cost, sizeof cost, "%.1f \u00B5s, %zu evaluations", m_costUs, m_result->flight.rhsEvaluations);
-        rows.push_back({"cost of this flight", cost});
-        std::snprintf(cost, sizeof cost, "%.1f \u00B5s, %zu evaluations", m_realCostUs, m_realEvaluations);
-        rows.push_back({"real preview, RK4 at 1/60 s", cost});
+        std::snprintf(cost, sizeof cost, "%.1f \u00B5s (%zu force evaluations)", m_costUs,
+                      m_result->flight.rhsEvaluations);
+        rows.push_back({"cost", cost});
+        std::snprintf(cost, sizeof cost, "%.1f \u00B5s (%zu)", m_realCostUs, m_realEvaluations);
+        rows.push_back({"the real preview: RK4 at 1/60 s", cost});
     }
     else
         rows.push_back({"aim to compare it with the preview", ""});

@@ -70,33 +70,16 @@ void drawForceArrows(sf::RenderTarget& target, const sf::Font& font, const Camer
     for (const Arrow& arrow : arrows)
         addArrow(mesh, centre, arrow.tip, arrow.width, arrow.colour, 1.0f * scale);
     mesh.draw(target);
-    // Each arrow named just beyond its tip; a name that would cover an earlier one moves down a line.
-    std::vector<sf::FloatRect> placed;
-    const float lineHeight = font.getLineSpacing(labelSize);
+    // Each arrow named just beyond its tip, the names kept apart.
+    LabelPlacer labels;
     for (const Arrow& arrow : arrows)
     {
         const sf::Vector2f d = arrow.tip - centre;
         const float len = std::hypot(d.x, d.y);
         if (len < 6.0f * scale)
             continue; // too short to name without covering the bird
-        const sf::Vector2f at = arrow.tip + (8.0f * scale / len) * d;
-        const float textWidth = measureText(font, utf8(arrow.name), labelSize).x;
-        const Align align = d.x < -0.3f * len ? Align::Right : (d.x > 0.3f * len ? Align::Left : Align::Centre);
-        const float left =
-            align == Align::Right ? at.x - textWidth : (align == Align::Left ? at.x : at.x - 0.5f * textWidth);
-        const sf::FloatRect first(left, at.y - 0.5f * lineHeight, textWidth, lineHeight);
-        sf::FloatRect box = first;
-        // Try the spot itself, then a line below, above, two below, two above.
-        for (const float shift : {0.0f, 1.0f, -1.0f, 2.0f, -2.0f})
-        {
-            box = first;
-            box.top += shift * lineHeight;
-            if (std::none_of(placed.begin(), placed.end(),
-                             [&](const sf::FloatRect& other) { return other.intersects(box); }))
-                break;
-        }
-        placed.push_back(box);
-        drawLabel(target, font, utf8(arrow.name), {box.left, box.top}, labelSize, arrow.colour);
+        labels.draw(target, font, arrow.name, arrow.tip + (8.0f * scale / len) * d, d.x < 0.0f, labelSize,
+                    arrow.colour);
     }
 }
 

@@ -68,7 +68,7 @@ sf::FloatRect RangeChartView::draw(sf::RenderTarget& target, const sf::Font& fon
     const sf::FloatRect rect(topRight.x - width, topRight.y, width, height);
     drawTeachPanel(target, rect, scale);
     drawLabel(target, font,
-              utf8("Range by angle at " + formatFixed(m_launch.speedMps, 1) + " m/s (" + m_key.bird + ")"),
+              utf8("Range to the ground by angle, " + formatFixed(m_launch.speedMps, 1) + " m/s (" + m_key.bird + ")"),
               {rect.left + pad, rect.top + pad}, titleSize, palette::kStar);
 
     // Plot area, with room for the axis labels.
@@ -113,12 +113,6 @@ sf::FloatRect RangeChartView::draw(sf::RenderTarget& target, const sf::Font& fon
         line.push_back(toPixel(chart.anglesDeg[i], *chart.rangesM[i]));
     }
     flush();
-    if (chart.bestAngleDeg)
-    {
-        const sf::Vector2f best = toPixel(*chart.bestAngleDeg, *chart.bestRangeM);
-        mesh.addCircle(best, 6.0f * scale, palette::kStar);
-        mesh.addRing(best, 6.0f * scale, 1.5f * scale, palette::kPreviewOutline);
-    }
     if (m_aimRangeM)
     {
         const sf::Vector2f aim = toPixel(*m_aimDeg, *m_aimRangeM);
@@ -126,6 +120,12 @@ sf::FloatRect RangeChartView::draw(sf::RenderTarget& target, const sf::Font& fon
                      faded(teach::kAcceleration, 0.7f));
         mesh.addCircle(aim, 6.5f * scale, teach::kAcceleration);
         mesh.addRing(aim, 6.5f * scale, 1.5f * scale, palette::kText);
+    }
+    if (chart.bestAngleDeg)
+    {
+        const sf::Vector2f best = toPixel(*chart.bestAngleDeg, *chart.bestRangeM);
+        // A ring, drawn over the aim's dot, so both show when the player aims at the best angle.
+        mesh.addRing(best, 9.0f * scale, 3.0f * scale, palette::kStar);
     }
     mesh.draw(target);
 

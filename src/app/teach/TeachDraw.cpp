@@ -118,6 +118,25 @@ sf::FloatRect TextPanel::draw(sf::RenderTarget& target, const sf::Font& font, sf
     return rect;
 }
 
+void LabelPlacer::draw(sf::RenderTarget& target, const sf::Font& font, const std::string& text, sf::Vector2f at,
+                       bool alignRight, unsigned size, sf::Color colour)
+{
+    const float lineHeight = font.getLineSpacing(size);
+    const float width = measureText(font, utf8(text), size).x;
+    const sf::FloatRect first(alignRight ? at.x - width : at.x, at.y - 0.5f * lineHeight, width, lineHeight);
+    sf::FloatRect box = first;
+    for (const float shift : {0.0f, 1.0f, -1.0f, 2.0f, -2.0f})
+    {
+        box = first;
+        box.top += shift * lineHeight;
+        if (std::none_of(m_placed.begin(), m_placed.end(),
+                         [&](const sf::FloatRect& other) { return other.intersects(box); }))
+            break;
+    }
+    m_placed.push_back(box);
+    drawLabel(target, font, utf8(text), {box.left, box.top}, size, colour);
+}
+
 std::string withUnit(double value, int decimals, const char* unit)
 {
     return formatFixed(value, decimals) + " " + unit;

@@ -62,6 +62,19 @@ private:
     std::vector<PanelRow> m_rows;
 };
 
+/// Places short labels near points without covering each other: a label that would overlap an earlier one moves a
+/// line down, up, two down or two up.
+class LabelPlacer
+{
+public:
+    /// Draws `text` with its left edge at x (right edge when alignRight) centred on y, moved off earlier labels.
+    void draw(sf::RenderTarget& target, const sf::Font& font, const std::string& text, sf::Vector2f at, bool alignRight,
+              unsigned size, sf::Color colour);
+
+private:
+    std::vector<sf::FloatRect> m_placed;
+};
+
 /// A number with a fixed count of decimals and a unit, e.g. "12.3 m/s".
 std::string withUnit(double value, int decimals, const char* unit);
 

@@ -140,6 +140,9 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
             }
         }
     }
+    // While aiming, the aim readout sits at the top centre: the chart and the comparison go below its line.
+    if (aiming)
+        right.y = std::max(right.y, 88.0f * scale);
     if (m_showChart && aiming)
         below(m_chart.draw(target, *font, right, titleSize, rowSize, scale));
     if (aiming)
@@ -150,7 +153,7 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
         drawWhyPanel(target, *font, {margin, 160.0f * scale}, session, view.preview(), titleSize, rowSize, scale);
 
     if (m_walkthrough.active())
-        m_walkthrough.drawPanel(target, *font, 96.0f * scale, titleSize, rowSize, scale);
+        m_walkthrough.drawPanel(target, *font, 152.0f * scale, titleSize, rowSize, scale);
 
     // Feedback on the last shot, above the level's hint and the app's notices at the bottom.
     if (!m_walkthrough.active())

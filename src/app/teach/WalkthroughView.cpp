@@ -275,12 +275,13 @@ void WalkthroughView::drawPanel(sf::RenderTarget& target, const sf::Font& font, 
     }
     addArrow(mesh, toInset(position(w.state)), toInset(position(w.next)), 3.0f * scale, kAverage);
     mesh.draw(target);
-    drawLabel(target, font, utf8("one step, magnified: k \u00D7 dt from each point"),
+    drawLabel(target, font, utf8("magnified: dt \u00D7 k from each point"),
               {inset.left + 0.5f * inset.width, inset.top + 4.0f * scale}, rowSize, palette::kTextDim, Align::Centre);
     static const char* const kLabels[] = {"k1", "k2", "k3", "k4"};
+    LabelPlacer labels;
     for (std::size_t i = 0; i < 4; ++i)
-        drawLabel(target, font, utf8(kLabels[i]), toInset(points[2 * i + 1]) + sf::Vector2f(3, -6), rowSize,
-                  kStageColours[i]);
+        labels.draw(target, font, kLabels[i], toInset(points[2 * i + 1]) + sf::Vector2f(4.0f * scale, 0.0f), false,
+                    rowSize, kStageColours[i]);
 }
 
 } // namespace abalike::app
