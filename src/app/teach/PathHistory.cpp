@@ -188,6 +188,7 @@ bool PathHistory::handleEvent(const sf::Event& event, const Camera& camera, cons
             (*m_tape)[1] = snap(pixel, camera, preview);
         if (!m_pinned)
             m_hover = pick(pixel, camera, preview, kPickRadiusPx);
+        m_used = m_used || m_hover.has_value();
         return false; // aiming follows the mouse too
     }
     if (event.type == sf::Event::MouseButtonPressed && event.mouseButton.button == sf::Mouse::Right)
@@ -196,6 +197,7 @@ bool PathHistory::handleEvent(const sf::Event& event, const Camera& camera, cons
         const sf::Vector2f start = snap(pixel, camera, preview);
         m_tape = std::array<sf::Vector2f, 2>{start, start};
         m_taping = true;
+        m_used = true;
         return true;
     }
     if (event.type == sf::Event::MouseButtonReleased && event.mouseButton.button == sf::Mouse::Right && m_taping)

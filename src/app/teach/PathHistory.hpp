@@ -59,6 +59,8 @@ public:
                    unsigned rowSize, float scale) const;
 
     const std::deque<MeasuredPath>& paths() const { return m_paths; }
+    /// True once a path point was read or the tape used.
+    bool used() const { return m_used; }
 
 private:
     struct Pick
@@ -81,6 +83,7 @@ private:
     bool m_pinned = false;
     std::optional<std::array<sf::Vector2f, 2>> m_tape; ///< ends in world metres
     bool m_taping = false;
+    bool m_used = false;
 };
 
 /// Samples of a flown path (t, x, y per step) with velocities from central differences.

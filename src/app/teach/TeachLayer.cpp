@@ -53,6 +53,21 @@ bool TeachLayer::handleEvent(const sf::Event& event, PlayView& view)
 
 void TeachLayer::onLevelStart(PlayView& view)
 {
+    const std::string& id = view.session().level().id;
+    if (id != m_guideLevel)
+    {
+        m_guideLevel = id;
+        std::optional<Guide> guide = guideFor(id);
+        // A first run (no progress at all) starts the campaign with the tutorial; scripted runs never do.
+        const Campaign& campaign = m_app.campaign();
+        if (!guide && !m_app.scripted() && m_app.progress().levels.empty() && !campaign.levels.empty() &&
+            campaign.levels.front().level.id == id)
+            guide = tutorialGuide();
+        if (guide)
+            m_guide.start(std::move(*guide));
+        else
+            m_guide.stop();
+    }
     m_walkthrough.stop(view);
     m_follower.reset();
     m_paths.onLevelStart(view.session());
@@ -71,6 +86,15 @@ void TeachLayer::frameUpdate(PlayView& view, double frameS)
     m_paths.update(session);
     m_feedback.update(session, view.aim());
     m_comparison.update(session, view.preview());
+    GuideContext context;
+    context.session = &session;
+    context.aim = view.aim();
+    context.overlayOn = overlayOn();
+    context.chartOn = m_showChart;
+    context.comparisonOn = m_comparison.active();
+    context.walkthroughOn = m_walkthrough.active();
+    context.measured = m_paths.used();
+    m_guide.update(context);
     if (m_showChart)
         m_chart.update(session, view.aim());
 }
@@ -148,9 +172,17 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     if (aiming)
         below(m_comparison.drawPanel(target, *font, right, titleSize, rowSize, scale));
 
-    // Left column, under the level's status and air: why preview and world can differ.
+    // Left column, under the level's status and air: a tutorial's or lesson's step, why preview and world can differ.
+    float left = 152.0f * scale;
+    if (m_guide.active() && !m_walkthrough.active())
+    {
+        const sf::FloatRect card =
+            m_guide.draw(target, *font, {margin, left}, std::min(440.0f * scale, window.x - 2.0f * margin),
+                         m_app.textSize(17.0f), m_app.textSize(15.0f), scale);
+        left = card.top + card.height + gap;
+    }
     if (overlayOn() && !m_walkthrough.active())
-        drawWhyPanel(target, *font, {margin, 160.0f * scale}, session, view.preview(), titleSize, rowSize, scale);
+        drawWhyPanel(target, *font, {margin, left}, session, view.preview(), titleSize, rowSize, scale);
 
     if (m_walkthrough.active())
         m_walkthrough.drawPanel(target, *font, 152.0f * scale, titleSize, rowSize, scale);

@@ -4,6 +4,7 @@
 #include "teach/BirdReadout.hpp"
 #include "teach/ComparisonView.hpp"
 #include "teach/FeedbackView.hpp"
+#include "teach/Guide.hpp"
 #include "teach/PathHistory.hpp"
 #include "teach/RangeChartView.hpp"
 #include "teach/WalkthroughView.hpp"
@@ -14,7 +15,8 @@ namespace abalike::app
 /// The teaching aids on the play screen (issue 11). T (or the teaching_overlay setting) shows the force arrows and
 /// energy bars on the flying bird, the first impact in numbers, the timing dots on the last shots' paths with the
 /// measuring tools, and why the preview and the world can differ; G the range-by-angle chart; I the integrator
-/// comparison; K the RK4 walkthrough; C clears the kept paths. The feedback sentences after a shot are always on.
+/// comparison; K the RK4 walkthrough; C clears the kept paths. The feedback sentences after a shot are always on, and
+/// so is the guide of a tutorial or lesson level.
 class TeachLayer : public PlayLayer
 {
 public:
@@ -39,6 +41,8 @@ private:
     RangeChartView m_chart;
     WalkthroughView m_walkthrough;
     FeedbackView m_feedback;
+    GuideRunner m_guide;
+    std::string m_guideLevel; ///< the level the guide was started for: a restart keeps its progress
     bool m_showChart = false;
 };
 
