@@ -70,6 +70,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInvocation{"WalkNegativeDrag", "walkthrough --vx 1 --vy 1 --quadratic-drag=-1 --json", "quadratic drag"},
         BadInvocation{"WalkBadWind", "walkthrough --vx 1 --vy 1 --wind 3 --json", "--wind"},
         BadInvocation{"WalkOverflow", "walkthrough --vx 1e200 --vy 1e200 --quadratic-drag 1 --json", "overflow"},
+        BadInvocation{"WalkStepOverflow", "walkthrough --vx 1e300 --vy 1 --dt 1e10 --json", "overflow"},
         BadInvocation{"WalkUnknownOption", "walkthrough --vx 1 --vy 1 --angle 3 --json", "--angle"},
         BadInvocation{"ChartNoSpeed", "chart range --json", "--speed"},
         BadInvocation{"ChartNoKind", "chart --speed 3", "subcommand"},

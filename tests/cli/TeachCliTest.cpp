@@ -139,6 +139,13 @@ TEST(ChartRangeCli, OutDrawsAPng)
     std::filesystem::remove(path);
 }
 
+TEST(LessonLevelsCli, EveryLessonPassesCheckAndIsSolvable)
+{
+    const RunResult r = runAbalike("check --solve " + sourcePath("levels/lessons/") + "*.json");
+    EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 7) << r.out; // one PASS line per lesson
+}
+
 // ------------------------------------------------------------------ simulate: energy and impact
 
 TEST(SimulateTeachCli, EnergyAndImpactPerShot)

@@ -1,5 +1,6 @@
 #include "cli/Arguments.hpp"
 #include "cli/Commands.hpp"
+#include "cli/Print.hpp"
 #include "cli/UsageError.hpp"
 #include "plot/PlotError.hpp"
 #include "plot/PlotPng.hpp"
@@ -52,20 +53,19 @@ RangeLaunch parseLaunch(const RangeArgs& a)
 
 void printTable(const RangeChart& chart, const RangeLaunch& launch)
 {
-    std::printf("Range on flat ground (y = 0) at %g m/s from %g m up, by launch angle:\n\n", launch.speedMps,
-                launch.heightM);
-    std::printf("%10s  %14s\n", "angle deg", "range m");
+    print("Range on flat ground (y = 0) at %g m/s from %g m up, by launch angle:\n\n", launch.speedMps, launch.heightM);
+    print("%10s  %14s\n", "angle deg", "range m");
     for (std::size_t i = 0; i < chart.anglesDeg.size(); ++i)
     {
         if (chart.rangesM[i])
-            std::printf("%10.4g  %14.6f\n", chart.anglesDeg[i], *chart.rangesM[i]);
+            print("%10.4g  %14.6f\n", chart.anglesDeg[i], *chart.rangesM[i]);
         else
-            std::printf("%10.4g  %14s\n", chart.anglesDeg[i], "no landing");
+            print("%10.4g  %14s\n", chart.anglesDeg[i], "no landing");
     }
     if (chart.bestAngleDeg)
-        std::printf("\nbest angle %.2f deg: range %.6f m\n", *chart.bestAngleDeg, *chart.bestRangeM);
+        print("\nbest angle %.2f deg: range %.6f m\n", *chart.bestAngleDeg, *chart.bestRangeM);
     else
-        std::printf("\nno angle lands within --max-t\n");
+        print("\nno angle lands within --max-t\n");
 }
 
 /// The chart as a PNG: range against angle, the best angle called out with guides to both axes.

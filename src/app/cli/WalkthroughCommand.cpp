@@ -1,9 +1,12 @@
 #include "cli/Arguments.hpp"
 #include "cli/Commands.hpp"
+#include "cli/Print.hpp"
 #include "cli/UsageError.hpp"
 
 #include <abalike/teach/Rk4Walkthrough.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -31,17 +34,17 @@ nlohmann::ordered_json stateJson(const FlightState& s)
 /// One row of the readable table: a label, four numbers and a note.
 void printRow(const char* label, const FlightState& values, const std::string& note)
 {
-    std::printf("%-8s %14.10g %14.10g %14.10g %14.10g  %s\n", label, values[0], values[1], values[2], values[3],
-                note.c_str());
+    print("%-8s %14.10g %14.10g %14.10g %14.10g  %s\n", label, values[0], values[1], values[2], values[3],
+          note.c_str());
 }
 
 void printTable(const Rk4Walkthrough& walk)
 {
     const double h = walk.dtS;
-    std::printf("One RK4 step from t0 = %g s with dt = %g s. The k are slopes f(t, state) = d(x, y, vx, vy)/dt, not "
-                "increments.\n\n",
-                walk.t0S, h);
-    std::printf("%-8s %14s %14s %14s %14s  %s\n", "", "x", "y", "vx", "vy", "");
+    print("One RK4 step from t0 = %g s with dt = %g s. The k are slopes f(t, state) = d(x, y, vx, vy)/dt, not "
+          "increments.\n\n",
+          walk.t0S, h);
+    print("%-8s %14s %14s %14s %14s  %s\n", "", "x", "y", "vx", "vy", "");
     printRow("state", walk.state, "(m, m, m/s, m/s)");
     static const char* const kNames[] = {"k1", "k2", "k3", "k4"};
     static const char* const kWhere[] = {"f(t0, state)", "f(t0 + dt/2, state + dt/2 k1)",
@@ -59,8 +62,8 @@ void printTable(const Rk4Walkthrough& walk)
         printRow("error", error, "next - exact");
     }
     else
-        std::printf("%-8s no closed form with quadratic drag or gusts\n", "exact");
-    std::printf("\nEach k is evaluated at the point printed here:\n");
+        print("%-8s no closed form with quadratic drag or gusts\n", "exact");
+    print("\nEach k is evaluated at the point printed here:\n");
     for (std::size_t i = 0; i < walk.stages.size(); ++i)
         printRow(kNames[i], walk.stages[i].at, "at t = " + std::to_string(walk.stages[i].tS) + " s");
 }
@@ -83,10 +86,16 @@ int runWalkthrough(const WalkthroughArgs& a)
     {
         throw UsageError(e.what());
     }
+    // Every input was finite, but the forces or the step can still overflow a double: refuse rather than print inf.
+    const auto finite = [](const FlightState& s)
+    {
+        return std::all_of(s.begin(), s.end(), [](double v) { return std::isfinite(v); });
+    };
+    bool ok = finite(walk.next) && finite(walk.averageSlope) && (!walk.exact || finite(*walk.exact));
     for (const Rk4Stage& stage : walk.stages)
-        for (const double v : stage.slope)
-            if (!std::isfinite(v))
-                throw UsageError("the forces overflow a double at this state; use a smaller speed or drag");
+        ok = ok && finite(stage.slope) && finite(stage.at);
+    if (!ok)
+        throw UsageError("the forces or the step overflow a double at this state; use a smaller speed, drag or step");
     if (!a.json)
     {
         printTable(walk);
