@@ -85,6 +85,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInvocation{"ChartTooManySteps", "chart range --speed 10 --max-t 1e6 --json", "2 million steps"},
         BadInvocation{"ChartUnwritableOut", "chart range --speed 10 --out /nonexistent/dir/range.png --json",
                       "--out /nonexistent/dir/range.png"},
+        BadInvocation{"ChartTooMuchWork", "chart range --speed 10 --step 0.01 --dt 0.001 --json", "100 million steps"},
         BadInvocation{"ChartInfGravity", "chart range --speed 10 --gravity inf --json", "--gravity"},
         BadInvocation{"ChartNegativeGravity", "chart range --speed 10 --gravity=-9.81 --json", "gravity must be >= 0"}),
     [](const ::testing::TestParamInfo<BadInvocation>& info) { return std::string(info.param.name); });

@@ -20,6 +20,9 @@ namespace abalike::app
 namespace
 {
 
+/// Most integration steps a chart may need if no angle lands before --max-t: about 10 s on the development machine.
+constexpr double kMaxChartSteps = 1e8;
+
 struct RangeArgs
 {
     std::string speed, y0 = "0", from = "-90", to = "90", step = "1", maxT = "60", dt;
@@ -147,6 +150,15 @@ int runRange(const RangeArgs& a)
         throw UsageError("--from/--to: expected -90 <= from <= to <= 90 degrees, got " + a.from + " and " + a.to);
     if (step <= 0.0)
         throw UsageError("--step: must be > 0 degrees, got " + a.step);
+    // Bound the worst case (no angle lands before --max-t) so that no input makes the command run for minutes; the
+    // golden-section search adds about 20 flights.
+    const double angles = std::floor((to - from) / step + 1e-6) + 1.0;
+    if (angles > static_cast<double>(kMaxRangeChartAngles))
+        throw UsageError("--step: the chart would have more than " + std::to_string(kMaxRangeChartAngles) +
+                         " angles; use a larger step");
+    if ((angles + 20.0) * (launch.maxTimeS / launch.settings.dtS) > kMaxChartSteps)
+        throw UsageError("--from/--to/--step with --max-t and --dt could take more than 100 million steps in all; use "
+                         "fewer angles, a shorter --max-t or a larger --dt");
     RangeChart chart;
     try
     {
