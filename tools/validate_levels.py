@@ -6,12 +6,16 @@
   * the schema's material, bird and pig names must be the catalog's (assets/catalog.json);
   * every file of the malformed suite must be rejected by the schema, except those listed in
     schema-valid.txt: their errors are geometric or semantic, which no schema can express, and the
-    schema must accept them (so loader and schema agree on everything a schema can say).
+    schema must accept them (so loader and schema agree on everything a schema can say);
+  * text: both schemas reject every C0/C1 control, DEL and bidirectional control (U+202A-U+202E,
+    U+2066-U+2069) in any string or key, at any depth, and accept every other character, as the
+    loader does (tests/level/SafeTextTest.cpp checks the loader against the same rule).
 
 Usage: validate_levels.py SOURCE_DIR
 """
 import importlib.metadata
 import json
+import re
 import pathlib
 import sys
 
@@ -35,6 +39,46 @@ def strict_load(path):
 
     text = path.read_bytes().decode("utf-8")
     return json.loads(text, parse_constant=no_constants, object_pairs_hook=no_duplicates)
+
+
+def unsafe(code_point):
+    """The rule as the issue states it, independently of the schema's pattern."""
+    return (code_point <= 0x1F or 0x7F <= code_point <= 0x9F or 0x202A <= code_point <= 0x202E
+            or 0x2066 <= code_point <= 0x2069)
+
+
+def check_text_rule(level_validator, campaign_validator, level_schema):
+    failures = []
+    # The pattern itself, over every code point (surrogates cannot occur in decoded JSON text).
+    pattern = re.compile(level_schema["$defs"]["text"]["not"]["pattern"])
+    for code_point in range(0x110000):
+        if 0xD800 <= code_point <= 0xDFFF:
+            continue
+        if bool(pattern.search("a" + chr(code_point) + "b")) != unsafe(code_point):
+            failures.append(f"schema text pattern disagrees with the rule at U+{code_point:04X}")
+    # Whole documents: every unsafe character, and a sample of safe ones, in each kind of place.
+    level = {"format": 1, "id": "t", "title": "T", "slingshot": {"x": 0, "y": 1.5}, "birds": ["red"],
+             "pigs": [{"type": "small", "x": 10, "y": 0.25}]}
+    campaign = {"format": 1, "episodes": [{"id": "1", "title": "E", "levels": ["a.json"]}]}
+    safe_sample = [0x20, 0x7E, 0xA0, 0xB5, 0xE9, 0x200E, 0x200F, 0x2028, 0x2065, 0x206A, 0xFEFF, 0x1F426]
+    for code_point in [c for c in range(0x206A) if unsafe(c)] + safe_sample:
+        text = "x" + chr(code_point) + "y"
+        documents = [
+            (level_validator, {**level, "title": text}),
+            (level_validator, {**level, "hints": [text]}),
+            (level_validator, {**level, "slingshot": {"x": 0, "y": 1.5, text: 1}}),
+            (level_validator, {**level, "pigs": [{"type": text, "x": 10, "y": 0.25}]}),
+            (campaign_validator, {**campaign, "episodes": [{"id": "1", "title": text, "levels": ["a.json"]}]}),
+            (campaign_validator, {**campaign, "episodes": [{"id": "1", "levels": [text]}]}),
+        ]
+        for index, (validator, document) in enumerate(documents):
+            errors = list(validator.iter_errors(document))
+            text_errors = [e for e in errors if "should not be valid" in e.message]
+            if unsafe(code_point) and not text_errors:
+                failures.append(f"text rule: U+{code_point:04X} accepted in document {index}")
+            if not unsafe(code_point) and text_errors:
+                failures.append(f"text rule: U+{code_point:04X} rejected in document {index}")
+    return failures
 
 
 def main():
@@ -89,6 +133,8 @@ def main():
             failures.append(f"{path.name}: listed in schema-valid.txt but the schema rejects it ({reason})")
         elif path.stem not in semantic and valid:
             failures.append(f"{path.name}: the loader rejects it but the schema accepts it")
+
+    failures += check_text_rule(validator, jsonschema.Draft202012Validator(campaign_schema), schema)
 
     for failure in failures:
         print(failure)

@@ -2,6 +2,7 @@
 #include "cli/UsageError.hpp"
 
 #include <abalike/level/LevelIO.hpp>
+#include <abalike/level/SafeText.hpp>
 
 #include <iostream>
 #include <map>
@@ -12,6 +13,7 @@ int main(int argc, char** argv)
     using namespace abalike::app;
     CLI::App app{"Angry Birds Alike: a slingshot physics game and physics teaching tool", "abalike"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", "abalike " ABALIKE_VERSION);
     std::map<std::string, CommandRunner> commands;
     commands["predict"] = addPredictCommand(app);
     commands["simulate"] = addSimulateCommand(app);
@@ -28,7 +30,8 @@ int main(int argc, char** argv)
         std::string known;
         for (const auto& entry : commands)
             known += (known.empty() ? "" : ", ") + entry.first;
-        std::cerr << "abalike: error: unknown command \"" << argv[1] << "\" (expected one of: " << known << ")\n";
+        std::cerr << "abalike: error: unknown command \"" << abalike::escapeForTerminal(argv[1])
+                  << "\" (expected one of: " << known << ")\n";
         return kUsageExitCode;
     }
 
@@ -46,9 +49,14 @@ int main(int argc, char** argv)
         std::cout << app.help("", CLI::AppFormatMode::All);
         return 0;
     }
+    catch (const CLI::CallForVersion& e)
+    {
+        std::cout << e.what() << '\n';
+        return 0;
+    }
     catch (const CLI::ParseError& e)
     {
-        std::cerr << "abalike: error: " << e.what() << " (see abalike --help)\n";
+        std::cerr << "abalike: error: " << abalike::escapeForTerminal(e.what()) << " (see abalike --help)\n";
         return kUsageExitCode;
     }
 
@@ -60,7 +68,8 @@ int main(int argc, char** argv)
     }
     catch (const UsageError& e)
     {
-        std::cerr << "abalike: error: " << e.what() << '\n';
+        // Messages may quote file names and arguments: escape what would act on a terminal.
+        std::cerr << "abalike: error: " << abalike::escapeForTerminal(e.what()) << '\n';
         return kUsageExitCode;
     }
     catch (const abalike::LevelLoadError& e)
@@ -72,7 +81,7 @@ int main(int argc, char** argv)
     }
     catch (const std::exception& e)
     {
-        std::cerr << "abalike: error: " << e.what() << '\n';
+        std::cerr << "abalike: error: " << abalike::escapeForTerminal(e.what()) << '\n';
         return 1;
     }
     return 0;

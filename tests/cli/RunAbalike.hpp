@@ -19,13 +19,13 @@ struct RunResult
     std::string err;
 };
 
-/// Runs `abalike ARGS` through the shell (args are passed as written) and captures stdout, stderr and the exit code.
-inline RunResult runAbalike(const std::string& args)
+/// Runs a shell command line and captures stdout, stderr and the exit code.
+inline RunResult runCommand(const std::string& commandLine)
 {
     static int counter = 0;
     const auto errFile = std::filesystem::temp_directory_path() /
                          ("abalike-cli-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".err");
-    const std::string command = std::string(ABALIKE_EXECUTABLE) + " " + args + " 2>" + errFile.string();
+    const std::string command = commandLine + " 2>" + errFile.string();
     RunResult result;
     FILE* pipe = ::popen(command.c_str(), "r");
     if (pipe == nullptr)
@@ -42,6 +42,12 @@ inline RunResult runAbalike(const std::string& args)
     result.err = text.str();
     std::filesystem::remove(errFile);
     return result;
+}
+
+/// Runs `abalike ARGS` through the shell (args are passed as written) and captures stdout, stderr and the exit code.
+inline RunResult runAbalike(const std::string& args)
+{
+    return runCommand(std::string(ABALIKE_EXECUTABLE) + " " + args);
 }
 
 /// Path of a file in the source tree, e.g. sourcePath("levels/campaign.json").

@@ -5,6 +5,7 @@
 
 #include <abalike/design/Solver.hpp>
 #include <abalike/level/LevelIO.hpp>
+#include <abalike/level/SafeText.hpp>
 #include <abalike/world/RestCheck.hpp>
 
 #include <filesystem>
@@ -240,7 +241,7 @@ int runCheck(const CheckArgs& a)
     {
         for (const FileReport& r : reports)
         {
-            std::cout << summaryLine(r) << '\n';
+            std::cout << escapeForTerminal(summaryLine(r)) << '\n';
             // Every problem in the FILE:LINE:COL form editors jump to, on stderr like a compiler's.
             for (const LevelIssue& issue : r.issues)
                 std::cerr << issue.format() << '\n';

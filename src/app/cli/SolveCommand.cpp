@@ -5,6 +5,7 @@
 
 #include <abalike/design/Difficulty.hpp>
 #include <abalike/level/LevelIO.hpp>
+#include <abalike/level/SafeText.hpp>
 
 #include <iomanip>
 #include <iostream>
@@ -69,7 +70,8 @@ int runSolve(const SolveArgs& a)
               << ", score " << solution.outcome.score << ", " << solution.outcome.stars << " star(s), "
               << solution.shots.size() << " shot(s), " << solution.simulations << " simulations in " << std::fixed
               << std::setprecision(1) << solution.seconds << " s\n";
-    std::cout << "  replay: abalike simulate " << a.level << ' ' << shotArguments(solution.shots) << '\n';
+    std::cout << "  replay: abalike simulate " << escapeForTerminal(a.level) << ' ' << shotArguments(solution.shots)
+              << '\n';
     if (difficulty)
         std::cout << "  random play: " << difficulty->wins << " of " << difficulty->samples << " random sequences won ("
                   << std::setprecision(1) << 100.0 * difficulty->winShare << "%), " << std::setprecision(0)

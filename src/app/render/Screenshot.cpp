@@ -1,5 +1,7 @@
 #include "render/Screenshot.hpp"
 
+#include <abalike/level/SafeText.hpp>
+
 #include <SFML/Graphics/Image.hpp>
 #include <SFML/Graphics/Texture.hpp>
 #include <SFML/System/Err.hpp>
@@ -21,7 +23,7 @@ bool saveScreenshot(const sf::RenderWindow& window, const std::string& path)
     }
     sf::err().rdbuf(sfmlErrors);
     if (!saved)
-        std::cerr << "abalike: cannot save the screenshot to " << path << "\n";
+        std::cerr << "abalike: cannot save the screenshot to " << escapeForTerminal(path) << "\n";
     return saved;
 }
 

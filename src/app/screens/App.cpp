@@ -8,6 +8,8 @@
 #include "screens/PlayScreen.hpp"
 #include "screens/TitleScreen.hpp"
 
+#include <abalike/level/SafeText.hpp>
+
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/System/Clock.hpp>
 #include <algorithm>
@@ -36,7 +38,7 @@ App::App(AppOptions options, Campaign campaign, SaveStore store, std::unique_ptr
         m_store->saveProgress(m_progress);
     takeStoreMessages();
     if (!m_options.tracePath.empty() && !m_trace.open(m_options.tracePath))
-        std::cerr << "abalike: cannot write the trace to " << m_options.tracePath << "\n";
+        std::cerr << "abalike: cannot write the trace to " << escapeForTerminal(m_options.tracePath) << "\n";
     m_screens.setObserver(
         [this](std::string_view change, std::string_view screen) {
             m_trace.write(std::string(change), {{"screen", std::string(screen)}});

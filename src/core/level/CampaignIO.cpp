@@ -34,6 +34,7 @@ std::vector<CampaignEpisode> loadCampaignEpisodes(const std::string& manifestPat
     const JsonLocator locator(text);
     LevelReader r(manifestPath, locator);
     r.duplicateKeys();
+    r.safeText(root);
     std::vector<CampaignEpisode> out;
     const auto folder = std::filesystem::path(manifestPath).parent_path();
     if (r.object(root, "", {"$schema", "format", "title", "episodes"}))

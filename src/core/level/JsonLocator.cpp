@@ -1,5 +1,7 @@
 #include "level/JsonLocator.hpp"
 
+#include <cstdlib>
+
 namespace abalike
 {
 
@@ -8,7 +10,33 @@ namespace
 /// Deeper than any level file needs; the loader rejects deeper nesting before parsing.
 constexpr int kMaxDepth = 256;
 
-std::string escapePointerToken(const std::string& key)
+/// Appends a code point as UTF-8.
+void appendUtf8(std::string& out, unsigned long c)
+{
+    if (c < 0x80)
+        out += static_cast<char>(c);
+    else if (c < 0x800)
+    {
+        out += static_cast<char>(0xC0 | (c >> 6));
+        out += static_cast<char>(0x80 | (c & 0x3F));
+    }
+    else if (c < 0x10000)
+    {
+        out += static_cast<char>(0xE0 | (c >> 12));
+        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (c & 0x3F));
+    }
+    else
+    {
+        out += static_cast<char>(0xF0 | (c >> 18));
+        out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (c & 0x3F));
+    }
+}
+} // namespace
+
+std::string jsonPointerToken(const std::string& key)
 {
     std::string out;
     for (char c : key)
@@ -22,7 +50,6 @@ std::string escapePointerToken(const std::string& key)
     }
     return out;
 }
-} // namespace
 
 JsonLocator::JsonLocator(std::string_view text) : m_text(text)
 {
@@ -81,23 +108,61 @@ void JsonLocator::skipSpace()
 
 std::string JsonLocator::scanString()
 {
-    // Keys are compared with the parsed document's keys; escapes other than \" and \\ are kept raw, which
-    // only matters for keys no level uses.
+    // Decoded as the parser decodes it, so a key's pointer here is the pointer of the parsed document's key.
     std::string out;
     ++m_pos; // opening quote
     while (m_pos < m_text.size() && m_text[m_pos] != '"')
     {
-        if (m_text[m_pos] == '\\' && m_pos + 1 < m_text.size())
+        if (m_text[m_pos] != '\\' || m_pos + 1 >= m_text.size())
         {
-            ++m_pos;
-            out += m_text[m_pos] == '"' || m_text[m_pos] == '\\' ? m_text[m_pos] : '?';
+            out += m_text[m_pos++];
+            continue;
         }
-        else
-            out += m_text[m_pos];
+        const char e = m_text[++m_pos];
         ++m_pos;
+        switch (e)
+        {
+        case 'b':
+            out += '\b';
+            break;
+        case 'f':
+            out += '\f';
+            break;
+        case 'n':
+            out += '\n';
+            break;
+        case 'r':
+            out += '\r';
+            break;
+        case 't':
+            out += '\t';
+            break;
+        case 'u':
+        {
+            unsigned long c = hex4();
+            // A high surrogate followed by an escaped low one is one character beyond U+FFFF.
+            if (c >= 0xD800 && c <= 0xDBFF && m_text.substr(m_pos, 2) == "\\u")
+            {
+                m_pos += 2;
+                const unsigned long low = hex4();
+                c = 0x10000 + ((c - 0xD800) << 10) + (low - 0xDC00);
+            }
+            appendUtf8(out, c);
+            break;
+        }
+        default: // '"', '\\' and '/' stand for themselves
+            out += e;
+        }
     }
     ++m_pos; // closing quote
     return out;
+}
+
+unsigned long JsonLocator::hex4()
+{
+    const std::string digits(m_text.substr(m_pos, 4));
+    m_pos += digits.size();
+    return std::strtoul(digits.c_str(), nullptr, 16);
 }
 
 void JsonLocator::scanValue(const std::string& pointer)
@@ -114,7 +179,7 @@ void JsonLocator::scanValue(const std::string& pointer)
         {
             const std::size_t keyPos = m_pos + 1; // a key's errors point at its name, inside the quotes
             const std::string key = scanString();
-            const std::string child = pointer + "/" + escapePointerToken(key);
+            const std::string child = pointer + "/" + jsonPointerToken(key);
             skipSpace();
             ++m_pos; // ':'
             skipSpace();

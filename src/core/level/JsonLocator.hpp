@@ -34,6 +34,7 @@ private:
     void scanValue(const std::string& pointer);
     void skipSpace();
     std::string scanString();
+    unsigned long hex4(); ///< the four hex digits of a \u escape at m_pos
 
     std::string_view m_text;
     std::size_t m_pos = 0;
@@ -41,5 +42,8 @@ private:
     std::unordered_map<std::string, std::size_t> m_offsets;
     std::vector<std::string> m_duplicates;
 };
+
+/// A key as one token of a JSON pointer (RFC 6901: "~" as "~0", "/" as "~1").
+std::string jsonPointerToken(const std::string& key);
 
 } // namespace abalike

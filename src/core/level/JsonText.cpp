@@ -113,24 +113,6 @@ std::size_t tokenStart(std::string_view text, std::size_t byteAfter)
     return i;
 }
 
-/// Control characters in a parser message (it quotes what it read) would garble a terminal: escape them.
-std::string printable(const std::string& message)
-{
-    std::string out;
-    for (const char c : message)
-    {
-        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F)
-        {
-            char escaped[8];
-            std::snprintf(escaped, sizeof escaped, "\\x%02X", static_cast<unsigned>(static_cast<unsigned char>(c)));
-            out += escaped;
-        }
-        else
-            out += c;
-    }
-    return out;
-}
-
 /// The usual reason behind a syntax error at offset, in a designer's words; empty if none fits.
 std::string syntaxHint(std::string_view text, std::size_t at, std::size_t parserByte, const std::string& reason)
 {
@@ -234,7 +216,7 @@ nlohmann::json parseJsonText(std::string_view text, const std::string& fileName,
         const std::size_t at = tokenStart(text, e.byte);
         const std::string hint = syntaxHint(text, at, e.byte, what);
         fail(fileName, JsonLocator::lineColumn(text, at),
-             "invalid JSON: " + (hint.empty() ? printable(what) : hint + "; parser: " + printable(what)));
+             "invalid JSON: " + (hint.empty() ? what : hint + "; parser: " + what));
     }
     catch (const nlohmann::json::out_of_range& e)
     {
@@ -249,7 +231,7 @@ nlohmann::json parseJsonText(std::string_view text, const std::string& fileName,
     }
     catch (const nlohmann::json::exception& e)
     {
-        fail(fileName, {1, 1}, "invalid JSON: " + printable(e.what()));
+        fail(fileName, {1, 1}, std::string("invalid JSON: ") + e.what());
     }
 }
 

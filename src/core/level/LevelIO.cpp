@@ -5,6 +5,7 @@
 #include "level/LevelSections.hpp"
 
 #include <abalike/level/LevelIO.hpp>
+#include <abalike/level/SafeText.hpp>
 #include <abalike/world/Catalog.hpp>
 
 #include <cmath>
@@ -281,8 +282,10 @@ void readHeader(LevelReader& r, const json& root, LevelDef& level)
 
 std::string LevelIssue::format() const
 {
+    // File names, keys and names echoed in messages come from anyone's files: escape what would act on a terminal.
     std::ostringstream out;
-    out << file << ':' << line << ':' << column << ": error: " << (pointer.empty() ? "/" : pointer) << ": " << message;
+    out << escapeForTerminal(file) << ':' << line << ':' << column
+        << ": error: " << escapeForTerminal(pointer.empty() ? "/" : pointer) << ": " << escapeForTerminal(message);
     return out.str();
 }
 
@@ -298,6 +301,7 @@ LevelDef parseLevel(std::string_view text, const std::string& fileName, const Ca
     const JsonLocator locator(text);
     LevelReader r(fileName, locator);
     r.duplicateKeys();
+    r.safeText(root);
     LevelDef level;
     level.sourcePath = fileName;
     if (!r.object(root, "",

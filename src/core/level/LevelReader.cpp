@@ -1,5 +1,7 @@
 #include "level/LevelReader.hpp"
 
+#include <abalike/level/SafeText.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -82,7 +84,8 @@ bool LevelReader::object(const json& value, const std::string& pointer, std::ini
     const std::vector<std::string> names(allowed.begin(), allowed.end());
     for (const auto& [key, child] : value.items())
     {
-        if (std::find(names.begin(), names.end(), key) != names.end())
+        // A key with a control character is reported by safeText; calling it unknown as well would only repeat it.
+        if (std::find(names.begin(), names.end(), key) != names.end() || findUnsafeCharacter(key))
             continue;
         std::string message = "unknown key \"" + key + "\"";
         if (const auto suggestion = closestMatch(key, names))
@@ -94,7 +97,7 @@ bool LevelReader::object(const json& value, const std::string& pointer, std::ini
                 message += " " + n;
             message += ")";
         }
-        keyError(pointer + "/" + key, message);
+        keyError(pointer + "/" + jsonPointerToken(key), message);
     }
     return true;
 }
@@ -143,6 +146,45 @@ void LevelReader::duplicateKeys()
     for (const std::string& pointer : m_locator.duplicateKeys())
         keyError(pointer, "duplicate key \"" + pointer.substr(pointer.rfind('/') + 1) +
                               "\" (expected each key once in an object; a JSON reader would silently keep the last)");
+}
+
+namespace
+{
+
+std::string unsafeMessage(const char* what, const UnsafeCharacter& bad)
+{
+    return std::string("unsafe character in ") + what +
+           " (expected text without control or bidirectional characters, got " + describeCharacter(bad.codePoint) +
+           " at character " + std::to_string(bad.index + 1) + ")";
+}
+
+} // namespace
+
+void LevelReader::safeText(const json& root)
+{
+    // Iterative, so document depth never becomes stack depth.
+    std::vector<std::pair<const json*, std::string>> pending{{&root, ""}};
+    while (!pending.empty())
+    {
+        const auto [value, pointer] = pending.back();
+        pending.pop_back();
+        if (value->is_string())
+        {
+            if (const auto bad = findUnsafeCharacter(value->get_ref<const std::string&>()))
+                error(pointer, unsafeMessage("a string", *bad));
+        }
+        else if (value->is_object())
+            for (const auto& [key, child] : value->items())
+            {
+                const std::string childPointer = pointer + "/" + jsonPointerToken(key);
+                if (const auto bad = findUnsafeCharacter(key))
+                    keyError(childPointer, unsafeMessage("a key", *bad));
+                pending.emplace_back(&child, childPointer);
+            }
+        else if (value->is_array())
+            for (std::size_t i = 0; i < value->size(); ++i)
+                pending.emplace_back(&(*value)[i], pointer + "/" + std::to_string(i));
+    }
 }
 
 double LevelReader::number(const json& object, const std::string& pointer, const char* key, double fallback,

@@ -55,6 +55,11 @@ public:
     /// Reports every key the document repeats inside one object.
     void duplicateKeys();
 
+    /// Reports every string and every key in the document that holds a character text from files may not
+    /// (control and bidirectional characters, see SafeText.hpp), wherever it is: the one place that rule is applied,
+    /// so a field added later is covered without asking.
+    void safeText(const json& root);
+
     /// The problems found, in the order they appear in the file.
     std::vector<LevelIssue> take();
     bool ok() const { return m_issues.empty(); }
