@@ -31,9 +31,9 @@ using ContactQuery = std::function<std::optional<double>(const FlightState& a, c
 /// Why a predicted flight stopped.
 enum class FlightEnd
 {
-    Contact, ///< touched geometry (ContactQuery)
-    Landed,  ///< came back down to the launch height
-    TimeUp,  ///< reached the requested end time
+    Contact,  ///< touched geometry (ContactQuery)
+    Landed,   ///< came back down to the launch height (or PredictionLimits::landingY)
+    TimeUp,   ///< reached the requested end time
     Diverged, ///< the state left the range of double (e.g. drag so strong it overflows); the path stops before it
 };
 
@@ -56,6 +56,7 @@ struct PredictionLimits
 {
     double maxTimeS = 60.0;           ///< hard stop
     bool stopOnLanding = false;       ///< stop where y comes back down to the launch height
+    std::optional<double> landingY;   ///< with stopOnLanding: stop where y comes down to this height instead
     std::optional<double> untilTimeS; ///< stop exactly here (overrides landing)
     ContactQuery contact;             ///< stop at the first contact, if set
 };

@@ -3,6 +3,7 @@
 #include <abalike/flight/Prediction.hpp>
 #include <abalike/game/Score.hpp>
 #include <abalike/level/LevelDef.hpp>
+#include <abalike/teach/FlightEnergy.hpp>
 #include <abalike/world/GameWorld.hpp>
 #include <array>
 #include <memory>
@@ -38,6 +39,10 @@ struct ShotRecord
     std::vector<std::array<double, 3>> predictedPath; ///< (t, x, y)
     std::vector<std::array<double, 3>> actualPath;    ///< (t, x, y)
     std::optional<AbilityUse> ability; ///< the ability, if used: when, where, and every impulse it applied
+    /// The energy balance at the first contact, along the RK4 flight the bird flew; none when an ability fired
+    /// before the first contact or the bird touched nothing.
+    std::optional<FlightEnergy> energy;
+    std::optional<FirstImpact> impact; ///< the first contact, when it was with a block or a pig
     int pigsDefeated = 0;              ///< pigs defeated while this shot was under way
     int accuracyPoints = 0;            ///< this shot's share of ScoreBreakdown::accuracyBonus
 };

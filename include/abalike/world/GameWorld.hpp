@@ -5,6 +5,7 @@
 #include <abalike/level/LevelDef.hpp>
 #include <abalike/world/Ability.hpp>
 #include <abalike/world/Catalog.hpp>
+#include <abalike/world/FirstImpact.hpp>
 #include <array>
 #include <memory>
 #include <optional>
@@ -141,6 +142,8 @@ public:
     const std::optional<ContactPoint>& birdContact() const { return m_birdContact; }
     /// What the bird first touched, once it has.
     const std::optional<EntityKind>& birdContactKind() const { return m_birdContactKind; }
+    /// The bird's first contact with a block or a pig, once it has had one (not for the ground or terrain).
+    const std::optional<FirstImpact>& birdImpact() const { return m_birdImpact; }
     /// The bird's path since launch, one point (t since launch, x, y) per step.
     const std::vector<std::array<double, 3>>& birdPath() const { return m_birdPath; }
 
@@ -192,6 +195,8 @@ private:
     void applyFlightForces(b2Body* body, const FlightIntegrator& model, double sinceLaunchS);
     void finishBirdStep(const std::array<double, 2>& stepStart);
     void retireBirds();
+    void snapshotImpactVelocities();
+    void recordFirstImpact(int otherIndex, double tS);
     void removeProjectile(std::size_t slot);
     void applyDamage();
     void damageEntity(int index, double impulseNs);
@@ -232,6 +237,8 @@ private:
     std::optional<ContactPoint> m_birdContact;
     std::optional<EntityKind> m_birdContactKind;
     std::vector<std::array<double, 3>> m_birdPath;
+    std::vector<BodyVelocity> m_stepStartVelocities; ///< per entity, at the start of a step in free flight
+    std::optional<FirstImpact> m_birdImpact;
     std::vector<Projectile> m_projectiles;
 };
 

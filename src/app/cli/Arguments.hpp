@@ -2,6 +2,8 @@
 
 #include <abalike/game/GameSession.hpp>
 
+#include <CLI/CLI.hpp>
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,5 +25,23 @@ std::pair<double, double> parsePair(const std::string& text, const std::string& 
 
 /// "WxH" -> window size in pixels; throws UsageError.
 std::pair<unsigned, unsigned> parseSize(const std::string& text);
+
+/// "A,B,C" -> three finite numbers; throws UsageError naming the option and the expected form.
+std::array<double, 3> parseTriple(const std::string& text, const std::string& option);
+
+/// The flight-model options as written on the command line (predict, walkthrough, chart range share them).
+struct FlightModelArgs
+{
+    std::string gravity = "9.81", mass = "1", linearDrag = "0", quadraticDrag = "0", wind;
+    std::string gustSine;
+    std::vector<std::string> gustSteps;
+};
+
+/// Registers --gravity --mass --linear-drag --quadratic-drag --wind --gust-sine --gust-step on a command; with
+/// gusts false, only the first five.
+void addFlightModelOptions(CLI::App& command, FlightModelArgs& args, bool gusts = true);
+
+/// The flight model the options describe; throws UsageError naming the option for anything invalid.
+FlightModel parseFlightModel(const FlightModelArgs& args);
 
 } // namespace abalike::app

@@ -16,5 +16,7 @@ CommandRunner addPlayCommand(CLI::App& app);
 CommandRunner addBenchCommand(CLI::App& app);
 CommandRunner addCheckCommand(CLI::App& app);
 CommandRunner addSolveCommand(CLI::App& app);
+CommandRunner addWalkthroughCommand(CLI::App& app);
+CommandRunner addChartCommand(CLI::App& app);
 
 } // namespace abalike::app

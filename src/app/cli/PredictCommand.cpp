@@ -24,75 +24,16 @@ constexpr double kMaxSteps = 2.0e6;
 
 struct PredictArgs
 {
-    std::string angle, speed, x0 = "0", y0 = "0", gravity = "9.81", mass = "1", dt, untilT, maxT = "60";
-    std::string linearDrag = "0", quadraticDrag = "0", wind, stepper = "rk4", tol = "1e-9";
-    std::string gustSine;
-    std::vector<std::string> gustSteps;
+    std::string angle, speed, x0 = "0", y0 = "0", dt, untilT, maxT = "60";
+    std::string stepper = "rk4", tol = "1e-9";
+    FlightModelArgs model;
     bool json = false;
     bool noGuard = false;
 };
 
-/// "A,B,C" -> three finite numbers; throws UsageError naming the option and the expected form.
-std::array<double, 3> parseTriple(const std::string& text, const std::string& option)
-{
-    std::array<double, 3> values{};
-    std::stringstream parts(text);
-    std::string part;
-    std::size_t count = 0;
-    while (std::getline(parts, part, ','))
-    {
-        if (count == values.size())
-            throw UsageError(option + ": expected three numbers, got \"" + text + "\"");
-        values[count++] = parseFinite(part, option);
-    }
-    if (count != values.size())
-        throw UsageError(option + ": expected three numbers, got \"" + text + "\"");
-    return values;
-}
-
-/// Gusts from --gust-sine AX,AY,PERIOD or repeated --gust-step T,WX,WY; nullopt when neither is given.
-std::optional<GustDef> parseGusts(const PredictArgs& a)
-{
-    if (!a.gustSine.empty() && !a.gustSteps.empty())
-        throw UsageError("--gust-sine and --gust-step cannot be combined: a flight has one kind of gust");
-    if (!a.gustSine.empty())
-    {
-        const auto [ax, ay, period] = parseTriple(a.gustSine, "--gust-sine AX,AY,PERIOD");
-        if (period <= 0.0)
-            throw UsageError("--gust-sine: the period must be > 0 s, got " + std::to_string(period));
-        GustDef gusts;
-        gusts.kind = GustDef::Kind::Sine;
-        gusts.amplitudeX = ax;
-        gusts.amplitudeY = ay;
-        gusts.periodS = period;
-        return gusts;
-    }
-    if (a.gustSteps.empty())
-        return std::nullopt;
-    GustDef gusts;
-    gusts.kind = GustDef::Kind::Steps;
-    for (const std::string& text : a.gustSteps)
-    {
-        const auto [start, wx, wy] = parseTriple(text, "--gust-step T,WX,WY");
-        gusts.steps.push_back({start, wx, wy});
-    }
-    std::sort(gusts.steps.begin(), gusts.steps.end(),
-              [](const GustDef::Step& x, const GustDef::Step& y) { return x.startS < y.startS; });
-    return gusts;
-}
-
 int runPredict(const PredictArgs& a)
 {
-    FlightModel model;
-    model.gravity = parseFinite(a.gravity, "--gravity");
-    model.massKg = parseFinite(a.mass, "--mass");
-    model.linearDrag = parseFinite(a.linearDrag, "--linear-drag");
-    model.quadraticDrag = parseFinite(a.quadraticDrag, "--quadratic-drag");
-    if (!a.wind.empty())
-        std::tie(model.windX, model.windY) = parsePair(a.wind, "--wind WX,WY");
-    model.gusts = parseGusts(a);
-    if (const std::string problem = validateFlightModel(model); !problem.empty())
-        throw UsageError(problem);
+    const FlightModel model = parseFlightModel(a.model);
 
     IntegratorSettings settings;
     const auto stepper = parseStepper(a.stepper);
@@ -192,14 +133,7 @@ CommandRunner addPredictCommand(CLI::App& app)
     cmd->add_option("--speed", args->speed, "launch speed in m/s")->required();
     cmd->add_option("--x0", args->x0, "launch x in m (default 0)");
     cmd->add_option("--y0", args->y0, "launch y in m (default 0)");
-    cmd->add_option("--gravity", args->gravity, "magnitude of g along -y in m/s^2 (default 9.81)");
-    cmd->add_option("--mass", args->mass, "bird mass in kg (default 1)");
-    cmd->add_option("--linear-drag", args->linearDrag, "b in F = -b (v - w), kg/s (default 0)");
-    cmd->add_option("--quadratic-drag", args->quadraticDrag, "c in F = -c |v - w| (v - w), kg/m (default 0)");
-    cmd->add_option("--wind", args->wind, "constant wind WX,WY in m/s (acts through drag)");
-    cmd->add_option("--gust-sine", args->gustSine,
-                    "gusts w(t) = A sin(2 pi t / PERIOD) added to the wind: AX,AY,PERIOD");
-    cmd->add_option("--gust-step", args->gustSteps, "a gust step T,WX,WY: wind added from T s on (repeatable)");
+    addFlightModelOptions(*cmd, args->model);
     cmd->add_option("--stepper", args->stepper, "euler, semi-implicit-euler, rk4 (default), dopri5, analytic");
     cmd->add_option("--dt", args->dt, "step in s (default 1/60)");
     cmd->add_option("--tol", args->tol, "tolerance of dopri5 and of the guard's rosenbrock4 (default 1e-9)");

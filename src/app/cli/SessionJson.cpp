@@ -50,6 +50,49 @@ const char* kindName(EntityKind kind)
     return "unknown";
 }
 
+Json energyJson(const std::optional<FlightEnergy>& energy)
+{
+    if (!energy)
+        return nullptr;
+    return Json{{"kinetic_j", energy->kineticJ},
+                {"potential_j", energy->potentialJ},
+                {"drag_loss_j", energy->dragLossJ},
+                {"launch_kinetic_j", energy->launchKineticJ},
+                {"launch_potential_j", energy->launchPotentialJ}};
+}
+
+Json impactJson(const std::optional<FirstImpact>& impact)
+{
+    if (!impact)
+        return nullptr;
+    const auto linear = [](const BodyVelocity& v)
+    {
+        return Json{v.vx, v.vy};
+    };
+    const auto full = [](const BodyVelocity& v)
+    {
+        return Json{v.vx, v.vy, v.omegaRadPerS};
+    };
+    const auto pair = [](const std::array<double, 2>& p)
+    {
+        return Json{p[0], p[1]};
+    };
+    Json out;
+    out["t"] = impact->tS;
+    out["body"] = {{"kind", kindName(impact->bodyKind)}, {"index", impact->bodyIndex}};
+    out["bird_before"] = linear(impact->birdBefore);
+    out["bird_after"] = linear(impact->birdAfter);
+    out["body_before"] = full(impact->bodyBefore);
+    out["body_after"] = full(impact->bodyAfter);
+    out["body_mass_kg"] = impact->bodyMassKg;
+    out["momentum_before"] = pair(impact->momentumBefore());
+    out["momentum_after"] = pair(impact->momentumAfter());
+    out["kinetic_before_j"] = impact->kineticBeforeJ();
+    out["kinetic_after_j"] = impact->kineticAfterJ();
+    out["damage_ns"] = impact->damageNs;
+    return out;
+}
+
 Json pathJson(const std::vector<std::array<double, 3>>& path)
 {
     Json out = Json::array();
@@ -71,9 +114,12 @@ nlohmann::ordered_json sessionToJson(const GameSession& session)
     out["pigs_remaining"] = session.pigsRemaining();
     out["birds_used"] = session.birdsUsed();
     out["sim_time_s"] = session.simTime();
-    out["score_breakdown"] = {{"block_points", score.blockPoints},       {"blocks_destroyed", score.blocksDestroyed},
-                              {"pig_points", score.pigPoints},           {"pigs_defeated", score.pigsDefeated},
-                              {"unused_bird_bonus", score.unusedBirdBonus}, {"accuracy_bonus", score.accuracyBonus}};
+    out["score_breakdown"] = {{"block_points", score.blockPoints},
+                              {"blocks_destroyed", score.blocksDestroyed},
+                              {"pig_points", score.pigPoints},
+                              {"pigs_defeated", score.pigsDefeated},
+                              {"unused_bird_bonus", score.unusedBirdBonus},
+                              {"accuracy_bonus", score.accuracyBonus}};
     out["score_breakdown"]["unused_birds"] = score.unusedBirds;
     out["score_breakdown"]["efficiency_bonus"] = score.efficiencyBonus;
     out["score_breakdown"]["accurate_shots"] = score.accurateShots;
@@ -93,6 +139,8 @@ nlohmann::ordered_json sessionToJson(const GameSession& session)
         s["pigs_defeated"] = shot.pigsDefeated;
         s["accuracy_points"] = shot.accuracyPoints;
         s["ability"] = abilityJson(shot.ability);
+        s["energy"] = energyJson(shot.energy);
+        s["impact"] = impactJson(shot.impact);
         shots.push_back(std::move(s));
     }
     out["shots"] = std::move(shots);

@@ -4,6 +4,7 @@
 #include "cli/UsageError.hpp"
 
 #include <abalike/level/LevelIO.hpp>
+#include <abalike/teach/ShotFeedback.hpp>
 
 #include <iostream>
 #include <memory>
@@ -58,6 +59,8 @@ int runSimulate(const SimulateArgs& a)
                       << "), predicted-actual " << *shot.deviationM * 1000.0 << " mm\n";
         else
             std::cout << "no contact\n";
+        for (const std::string& sentence : shotFeedback(level, Catalog::builtin(), shot))
+            std::cout << "    " << sentence << '\n';
     }
     return 0;
 }
@@ -75,7 +78,10 @@ CommandRunner addSimulateCommand(CLI::App& app)
         ->required()
         ->allow_extra_args(false);
     cmd->add_flag("--json", args->json, "print one JSON object");
-    return [args] { return runSimulate(*args); };
+    return [args]
+    {
+        return runSimulate(*args);
+    };
 }
 
 } // namespace abalike::app

@@ -1,13 +1,14 @@
 #include "screens/PlayLayer.hpp"
+#include "teach/TeachLayer.hpp"
 
 namespace abalike::app
 {
 
 std::vector<std::unique_ptr<PlayLayer>> makePlayLayers(App& app)
 {
-    (void)app;
     std::vector<std::unique_ptr<PlayLayer>> layers;
     // Bottom first: layers drawn later are drawn over earlier ones and see input first.
+    layers.push_back(std::make_unique<TeachLayer>(app));
     return layers;
 }
 

@@ -6,6 +6,7 @@
 #include "screens/HelpScreen.hpp"
 #include "screens/LevelSelectScreen.hpp"
 #include "screens/Navigation.hpp"
+#include "teach/LessonSelectScreen.hpp"
 #include "ui/Card.hpp"
 
 namespace abalike::app
@@ -32,6 +33,8 @@ TitleScreen::TitleScreen(App& app)
     m_menu.setItems({
         {"play", started ? "Continue" : "Play", hasCampaign},
         {"levels", "Level select", hasCampaign},
+        {"tutorial", "Tutorial", hasCampaign},
+        {"lessons", "Lessons", true},
         {"help", "Controls", true},
         {"quit", "Quit", true},
     });
@@ -49,6 +52,10 @@ void TitleScreen::activate(const std::string& id)
         playCampaignLevel(m_app, continueLevel(m_app));
     else if (id == "levels")
         m_app.screens().push(std::make_unique<LevelSelectScreen>(m_app));
+    else if (id == "tutorial")
+        playTutorial(m_app);
+    else if (id == "lessons")
+        m_app.screens().push(std::make_unique<LessonSelectScreen>(m_app));
     else if (id == "help")
         m_app.screens().push(std::make_unique<HelpScreen>(m_app));
     else if (id == "quit")

@@ -8,13 +8,11 @@ namespace abalike
 namespace
 {
 
-/// Time in [step.t0, step.t1] where component i of the interpolated state crosses `level`, by bisection on the
-/// Hermite interpolant. The caller guarantees a sign change between the step's ends.
-double locateCrossing(const FlightStep& step, std::size_t i, double level)
+/// Time in [lo, hi] (inside the step) where component i of the interpolated state crosses `level`, by bisection on
+/// the Hermite interpolant. The caller guarantees a sign change between lo and hi.
+double locateCrossing(const FlightStep& step, std::size_t i, double level, double lo, double hi)
 {
-    double lo = step.t0;
-    double hi = step.t1;
-    const bool risingAtLo = step.s0[i] - level < 0.0;
+    const bool risingAtLo = step.interpolate(lo)[i] - level < 0.0;
     for (int iteration = 0; iteration < 200 && hi - lo > 0.0; ++iteration)
     {
         const double mid = 0.5 * (lo + hi);
@@ -27,6 +25,13 @@ double locateCrossing(const FlightStep& step, std::size_t i, double level)
             hi = mid;
     }
     return 0.5 * (lo + hi);
+}
+
+/// Time in [step.t0, step.t1] where component i of the interpolated state crosses `level`, by bisection on the
+/// Hermite interpolant. The caller guarantees a sign change between the step's ends.
+double locateCrossing(const FlightStep& step, std::size_t i, double level)
+{
+    return locateCrossing(step, i, level, step.t0, step.t1);
 }
 
 /// Raises maxHeight to the highest point of the step up to time `until` (the apex if vy changes sign before it).
@@ -51,7 +56,7 @@ PredictedFlight predictFlight(const FlightModel& model, const IntegratorSettings
     PredictedFlight flight;
     flight.path.push_back({0.0, s0});
     flight.maxHeightM = s0[1];
-    const double y0 = s0[1];
+    const double landingY = limits.landingY.value_or(s0[1]);
     const double endTime = limits.untilTimeS ? *limits.untilTimeS : limits.maxTimeS;
     // A step count limit as well as a time limit, so a rounding step never leaves the loop spinning.
     const auto maxSteps = static_cast<std::size_t>(std::ceil(endTime / settings.dtS)) + 1;
@@ -99,11 +104,25 @@ PredictedFlight predictFlight(const FlightModel& model, const IntegratorSettings
             flight.end = FlightEnd::TimeUp;
             break;
         }
-        if (limits.stopOnLanding && !limits.untilTimeS && step.s0[1] - y0 > 0.0 && step.s1[1] - y0 <= 0.0)
+        std::optional<double> landing;
+        if (limits.stopOnLanding && !limits.untilTimeS && step.s1[1] - landingY <= 0.0)
         {
-            const double t = locateCrossing(step, 1, y0);
+            if (step.s0[1] - landingY > 0.0)
+                landing = locateCrossing(step, 1, landingY);
+            else if (step.s0[1] == landingY && step.f0[1] > 0.0 && step.s1[3] <= 0.0)
+            {
+                // Launched upwards from the landing height and already back below it at the step's end (a slow
+                // launch): both ends are at or below it, so bracket the descent from the apex inside the step.
+                const double apex = locateCrossing(step, 3, 0.0);
+                if (step.interpolate(apex)[1] > landingY)
+                    landing = locateCrossing(step, 1, landingY, apex, step.t1);
+            }
+        }
+        if (landing)
+        {
+            const double t = *landing;
             FlightState s = step.interpolate(t);
-            s[1] = y0; // the crossing is where y == y0, by definition
+            s[1] = landingY; // the crossing is where y == landingY, by definition
             trackApex(step, flight.maxHeightM, t);
             flight.path.push_back({t, s});
             flight.end = FlightEnd::Landed;

@@ -205,6 +205,17 @@ void GameSession::updateBird()
         return;
     shot.actualContact = m_world->birdContact();
     shot.firstTouched = m_world->birdContactKind();
+    shot.impact = m_world->birdImpact();
+    if (!(shot.ability && shot.ability->beforeContact))
+    {
+        // The world flew the bird along exactly this RK4 flight until the contact: replay it for its energy.
+        const BirdType& bird = *m_catalog.findBird(shot.bird);
+        const auto p = launchPoint();
+        IntegratorSettings settings;
+        settings.dtS = m_settings.dtS;
+        shot.energy = flightEnergyAt(flightModelFor(bird), settings,
+                                     launchState(p[0], p[1], shot.speedMps, shot.angleDeg), shot.actualContact->t);
+    }
     // The prediction made at launch is only a claim about the flight that was launched: once an ability changed
     // that flight, the distance between the two contacts measures the ability, not the prediction.
     const bool flightChanged = shot.ability && shot.ability->changedFlight;

@@ -70,6 +70,7 @@ int GameWorld::launchBird(const BirdType& bird, const FlightModel& model, const 
     m_abilityUsed = false;
     m_birdContact.reset();
     m_birdContactKind.reset();
+    m_birdImpact.reset();
     m_birdPath.assign(1, {0.0, s0[0], s0[1]});
     m_contacts->watchBird(body);
     return m_birdIndex;
@@ -210,6 +211,8 @@ void GameWorld::finishBirdStep(const std::array<double, 2>& stepStart)
         const int other = m_contacts->birdTouchOther();
         if (other >= 0)
             m_birdContactKind = m_entities[static_cast<std::size_t>(other)].kind;
+        if (m_birdFlight)
+            recordFirstImpact(other, t);
         m_birdPath.push_back({t, touch.x, touch.y});
         m_birdFlight.reset();
         body->SetGravityScale(1.0f);

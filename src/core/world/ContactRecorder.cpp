@@ -16,6 +16,10 @@ void GameWorld::ContactRecorder::BeginContact(b2Contact* contact)
     {
         m_birdTouch = m_bird->GetPosition();
         m_birdTouchOther = entityIndexOf(a == m_bird ? b : a);
+        // The manifold's normal points from fixture A to fixture B.
+        b2WorldManifold manifold;
+        contact->GetWorldManifold(&manifold);
+        m_birdTouchNormal = a == m_bird ? manifold.normal : -manifold.normal;
     }
 }
 

@@ -37,6 +37,8 @@ public:
     const std::optional<b2Vec2>& birdTouch() const { return m_birdTouch; }
     /// Entity index of what the watched bird first touched (-1 if none or not an entity).
     int birdTouchOther() const { return m_birdTouchOther; }
+    /// Unit normal of that first contact, pointing from the bird into what it touched.
+    const b2Vec2& birdTouchNormal() const { return m_birdTouchNormal; }
 
     /// Impact impulses (N s) per entity index during the last step.
     const std::unordered_map<int, double>& impulses() const { return m_impulses; }
@@ -56,6 +58,7 @@ private:
     const b2Body* m_bird = nullptr;
     std::optional<b2Vec2> m_birdTouch;
     int m_birdTouchOther = -1;
+    b2Vec2 m_birdTouchNormal{0.0f, 0.0f};
     std::unordered_map<const b2Contact*, float> m_closingSpeed; ///< only contacts closing above the threshold
     std::unordered_map<int, double> m_impulses;
 };

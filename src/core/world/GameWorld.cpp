@@ -131,6 +131,8 @@ void GameWorld::step()
         applyFlightForces(m_entities[static_cast<std::size_t>(projectile.index)].body, *projectile.model,
                           m_time - projectile.shotStartS);
 
+    if (m_birdFlight)
+        snapshotImpactVelocities();
     m_lastSubsteps = substepCount();
     const auto h = static_cast<float>(m_settings.dtS / m_lastSubsteps);
     const double rolling = m_settings.rollingResistance ? m_catalog.rollingResistance() : 0.0;

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+
+namespace abalike
+{
+
+enum class EntityKind; // GameWorld.hpp
+
+/// A body's velocity at one moment: linear (m/s) and angular (rad/s, counter-clockwise).
+struct BodyVelocity
+{
+    double vx = 0.0;
+    double vy = 0.0;
+    double omegaRadPerS = 0.0;
+};
+
+/// The launched bird's first contact with a block or a pig, from Box2D's own velocities: "before" is the start of the
+/// world step in which the contact began, "after" the end of that step.
+struct FirstImpact
+{
+    double tS = 0.0; ///< time since launch of the first touch
+    EntityKind bodyKind{};
+    int bodyIndex = -1;   ///< index in the level's blocks or pigs
+    std::string bodyType; ///< material or pig type
+    double birdMassKg = 0.0;
+    double birdInertiaKgM2 = 0.0; ///< about the centre of mass
+    double bodyMassKg = 0.0;
+    double bodyInertiaKgM2 = 0.0;
+    BodyVelocity birdBefore;
+    BodyVelocity birdAfter;
+    BodyVelocity bodyBefore;
+    BodyVelocity bodyAfter;
+    std::array<double, 2> birdCentre{}; ///< the bird's centre when it touched (m)
+    std::array<double, 2> bodyCentre{}; ///< the body's centre of mass then
+    std::array<double, 2> normal{};     ///< unit contact normal, from the bird into the body
+    std::array<double, 2> point{};      ///< where they touched (m)
+    double damageNs = 0.0;              ///< impulse the body took as damage during that step (N s)
+
+    /// Linear momentum of bird and body together (kg m/s).
+    std::array<double, 2> momentumBefore() const;
+    std::array<double, 2> momentumAfter() const;
+    /// Kinetic energy of bird and body together, translation and rotation (J).
+    double kineticBeforeJ() const;
+    double kineticAfterJ() const;
+    /// Coefficient of restitution of the impact: the speed at which the contact points separate along the normal
+    /// after the step over the speed at which they closed before it; nullopt if they were not closing.
+    std::optional<double> restitution() const;
+};
+
+} // namespace abalike

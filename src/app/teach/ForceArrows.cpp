@@ -1,0 +1,176 @@
+#include "teach/ForceArrows.hpp"
+
+#include "render/Label.hpp"
+#include "render/Palette.hpp"
+#include "render/TextFormat.hpp"
+#include "teach/TeachDraw.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace abalike::app
+{
+
+namespace
+{
+
+/// Gravity's arrow is this long (pixels at scale 1); every force and the acceleration share its scale.
+constexpr float kGravityArrowPx = 70.0f;
+/// Velocity arrows: pixels per m/s at scale 1.
+constexpr float kVelocityPxPerMps = 3.0f;
+
+sf::Vector2f screenDirection(const std::array<double, 2>& v)
+{
+    return {static_cast<float>(v[0]), -static_cast<float>(v[1])}; // y up in the world, down on the screen
+}
+
+double length(const std::array<double, 2>& v)
+{
+    return std::hypot(v[0], v[1]);
+}
+
+/// "2.1e-07": how small the balance's residual is.
+std::string scientific(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1e", std::abs(value));
+    return text;
+}
+
+} // namespace
+
+void drawForceArrows(sf::RenderTarget& target, const sf::Font& font, const Camera& camera, const BirdReadout& bird,
+                     unsigned labelSize, float scale)
+{
+    const sf::Vector2f centre = camera.toScreen({static_cast<float>(bird.state[0]), static_cast<float>(bird.state[1])});
+    // Forces in newtons, scaled so that the bird's weight is kGravityArrowPx long (in vacuum at 9.81 if g is 0).
+    const double weight = std::max(length(bird.gravityN), bird.massKg * 9.81);
+    const float pxPerN = kGravityArrowPx * scale / static_cast<float>(weight);
+    const float width = 3.0f * scale;
+    struct Arrow
+    {
+        sf::Vector2f tip;
+        float width;
+        sf::Color colour;
+        const char* name;
+    };
+    const std::array<double, 2> v{bird.state[2], bird.state[3]};
+    // a = sum of the forces / m, on the same scale: the thin arrow is the sum of the thick force arrows.
+    const std::array<double, 2> ma{bird.massKg * bird.accelerationMps2[0], bird.massKg * bird.accelerationMps2[1]};
+    // Velocity first, so that a force pointing along it (a tailwind's push) is drawn over it.
+    const Arrow arrows[] = {
+        {centre + kVelocityPxPerMps * scale * screenDirection(v), width, teach::kVelocity, "v"},
+        {centre + pxPerN * screenDirection(bird.gravityN), width, teach::kGravity, "mg"},
+        {centre + pxPerN * screenDirection(bird.dragN), width, teach::kDrag, "drag"},
+        {centre + pxPerN * screenDirection(bird.windN), width, teach::kWind, "wind"},
+        {centre + pxPerN * screenDirection(ma), 1.8f * scale, teach::kAcceleration, "ma"},
+    };
+    Mesh mesh;
+    for (const Arrow& arrow : arrows)
+        addArrow(mesh, centre, arrow.tip, arrow.width, arrow.colour, 1.0f * scale);
+    mesh.draw(target);
+    // Each arrow named just beyond its tip, the names kept apart.
+    LabelPlacer labels;
+    for (const Arrow& arrow : arrows)
+    {
+        const sf::Vector2f d = arrow.tip - centre;
+        const float len = std::hypot(d.x, d.y);
+        if (len < 6.0f * scale)
+            continue; // too short to name without covering the bird
+        labels.draw(target, font, arrow.name, arrow.tip + (8.0f * scale / len) * d, d.x < 0.0f, labelSize,
+                    arrow.colour);
+    }
+}
+
+sf::FloatRect drawForceLegend(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topRight,
+                              const BirdReadout& bird, bool hasDrag, bool hasWind, unsigned titleSize, unsigned rowSize,
+                              float scale)
+{
+    std::vector<PanelRow> rows;
+    rows.push_back({"t " + withUnit(bird.tS, 2, "s") + "   x " + withUnit(bird.state[0], 1, "m") + "   y " +
+                        withUnit(bird.state[1], 1, "m"),
+                    "", sf::Color::Transparent, false});
+    rows.push_back({"velocity v", withUnit(std::hypot(bird.state[2], bird.state[3]), 1, "m/s"), teach::kVelocity});
+    rows.push_back({"acceleration a = \u03A3F / m", withUnit(length(bird.accelerationMps2), 2, "m/s\u00B2"),
+                    teach::kAcceleration});
+    rows.push_back({"gravity m g", withUnit(length(bird.gravityN), 1, "N"), teach::kGravity});
+    if (hasDrag)
+        rows.push_back({"air drag (still air)", withUnit(length(bird.dragN), 1, "N"), teach::kDrag});
+    if (hasWind)
+        rows.push_back({"wind's push (through drag)", withUnit(length(bird.windN), 1, "N"), teach::kWind});
+    if (!hasDrag)
+        rows.push_back({"no air: gravity is the only force", "", sf::Color::Transparent, false});
+    const TextPanel panel("Forces on the bird (" + formatFixed(bird.massKg, 1) + " kg)", std::move(rows));
+    const sf::Vector2f size = panel.measure(font, titleSize, rowSize, scale);
+    return panel.draw(target, font, {topRight.x - size.x, topRight.y}, titleSize, rowSize, scale);
+}
+
+sf::FloatRect drawEnergyBars(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topRight,
+                             const FlightEnergy& energy, bool atContact, unsigned titleSize, unsigned rowSize,
+                             float scale)
+{
+    struct Bar
+    {
+        const char* label;
+        double joules;
+        sf::Color colour;
+    };
+    const double launch = energy.launchKineticJ + energy.launchPotentialJ;
+    const Bar bars[] = {
+        {"kinetic \u00BD m v\u00B2", energy.kineticJ, teach::kKinetic},
+        {"potential m g y", energy.potentialJ, teach::kPotential},
+        {"kinetic + potential", energy.kineticJ + energy.potentialJ, teach::kTotal},
+        {"taken by drag", energy.dragLossJ, teach::kLoss},
+    };
+    const float pad = 8.0f * scale;
+    const float rowHeight = font.getLineSpacing(rowSize);
+    const float titleHeight = font.getLineSpacing(titleSize) * 1.1f;
+    float labelWidth = 0.0f;
+    for (const Bar& bar : bars)
+        labelWidth = std::max(labelWidth, measureText(font, utf8(bar.label), rowSize).x);
+    const float valueWidth = measureText(font, utf8("-00000 J"), rowSize).x;
+    const float barWidth = 170.0f * scale;
+    const float width = 2.0f * pad + labelWidth + barWidth + valueWidth + 20.0f * scale;
+    const float height = 2.0f * pad + titleHeight + rowHeight * 5.2f;
+    const sf::FloatRect rect(topRight.x - width, topRight.y, width, height);
+    drawTeachPanel(target, rect, scale);
+    drawLabel(target, font,
+              utf8(atContact ? "Energy at the first contact" : "Energy: launch = kinetic + potential + drag"),
+              {rect.left + pad, rect.top + pad}, titleSize, palette::kStar);
+
+    // Bars share one scale: the launch energy spans barWidth; a negative amount (a tailwind's "loss", a bird
+    // below y = 0) reaches left of the zero line.
+    const double most = std::max({launch, energy.kineticJ + energy.potentialJ, std::abs(energy.dragLossJ), 1e-9});
+    const float zero = rect.left + pad + labelWidth + 10.0f * scale + 0.12f * barWidth;
+    const float pxPerJ = 0.88f * barWidth / static_cast<float>(most);
+    Mesh mesh;
+    float y = rect.top + pad + titleHeight;
+    const float barHeight = 0.62f * rowHeight;
+    for (const Bar& bar : bars)
+    {
+        drawLabel(target, font, utf8(bar.label), {rect.left + pad, y}, rowSize, palette::kTextDim);
+        const float w = pxPerJ * static_cast<float>(bar.joules);
+        const float top = y + 0.5f * (rowHeight - barHeight);
+        const float x0 = std::min(zero, zero + w);
+        const float x1 = std::max(zero, zero + w);
+        mesh.addConvex(std::vector<sf::Vector2f>{{x0, top}, {x1, top}, {x1, top + barHeight}, {x0, top + barHeight}},
+                       bar.colour);
+        drawLabel(target, font, utf8(formatFixed(bar.joules, 0) + " J"), {rect.left + width - pad, y}, rowSize,
+                  palette::kText, Align::Right);
+        y += rowHeight;
+    }
+    // The launch energy as a line across all bars: kinetic + potential + drag always adds up to it.
+    const float launchX = zero + pxPerJ * static_cast<float>(launch);
+    const float barsTop = rect.top + pad + titleHeight;
+    mesh.addLine({launchX, barsTop}, {launchX, y}, 2.0f * scale, palette::kStar);
+    mesh.addLine({zero, barsTop}, {zero, y}, 1.0f * scale, palette::kTextDim);
+    mesh.draw(target);
+    drawLabel(target, font,
+              utf8("launch " + formatFixed(launch, 0) + " J   balance off by " + scientific(energy.balanceResidualJ()) +
+                   " J"),
+              {rect.left + pad, y + 0.1f * rowHeight}, rowSize, palette::kStar);
+    return rect;
+}
+
+} // namespace abalike::app

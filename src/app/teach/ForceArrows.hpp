@@ -1,0 +1,28 @@
+#pragma once
+
+#include "render/Camera.hpp"
+#include "teach/BirdReadout.hpp"
+
+#include <SFML/Graphics/Font.hpp>
+#include <SFML/Graphics/RenderTarget.hpp>
+
+namespace abalike::app
+{
+
+/// Arrows on the flying bird -- velocity, acceleration and each force on its own, each named at its tip -- drawn in
+/// the world.
+void drawForceArrows(sf::RenderTarget& target, const sf::Font& font, const Camera& camera, const BirdReadout& bird,
+                     unsigned labelSize, float scale);
+
+/// The legend of those arrows with their values in SI units; returns its bounds.
+sf::FloatRect drawForceLegend(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topRight,
+                              const BirdReadout& bird, bool hasDrag, bool hasWind, unsigned titleSize, unsigned rowSize,
+                              float scale);
+
+/// Bars of kinetic, potential and total energy and of the energy drag has taken, against the launch energy;
+/// `at` is the panel's top-right corner. Returns its bounds.
+sf::FloatRect drawEnergyBars(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topRight,
+                             const FlightEnergy& energy, bool atContact, unsigned titleSize, unsigned rowSize,
+                             float scale);
+
+} // namespace abalike::app

@@ -1,0 +1,65 @@
+#include "teach/Guide.hpp"
+
+#include "render/Label.hpp"
+#include "render/Palette.hpp"
+#include "teach/TeachDraw.hpp"
+
+#include <algorithm>
+
+namespace abalike::app
+{
+
+void GuideRunner::start(Guide guide)
+{
+    m_guide = std::move(guide);
+    m_step = 0;
+    m_shotsAtStepStart = 0;
+    m_firstAim.reset();
+}
+
+void GuideRunner::update(GuideContext context)
+{
+    if (!m_guide || context.session == nullptr)
+        return;
+    if (!m_firstAim && context.aim)
+        m_firstAim = context.aim;
+    context.firstAim = m_firstAim;
+    while (m_step < m_guide->steps.size())
+    {
+        context.shotsAtStepStart = m_shotsAtStepStart;
+        if (!m_guide->steps[m_step].done(context))
+            break;
+        ++m_step;
+        m_shotsAtStepStart = context.shots();
+    }
+}
+
+sf::FloatRect GuideRunner::draw(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topLeft, float maxWidth,
+                                unsigned titleSize, unsigned rowSize, float scale) const
+{
+    if (!m_guide)
+        return {};
+    const bool finished = m_step >= m_guide->steps.size();
+    const std::string& text = finished ? m_guide->closing : m_guide->steps[m_step].text;
+    const std::string progress =
+        finished ? "done" : "step " + std::to_string(m_step + 1) + " of " + std::to_string(m_guide->steps.size());
+    const float pad = 10.0f * scale;
+    const std::vector<std::string> lines = wrapText(font, text, rowSize, maxWidth - 2.0f * pad);
+    const float rowHeight = font.getLineSpacing(rowSize);
+    const float titleHeight = font.getLineSpacing(titleSize) * 1.15f;
+    const float height = 2.0f * pad + titleHeight + rowHeight * static_cast<float>(lines.size());
+    const sf::FloatRect rect(topLeft, {maxWidth, height});
+    drawTeachPanel(target, rect, scale);
+    drawLabel(target, font, utf8(m_guide->title), {rect.left + pad, rect.top + pad}, titleSize, palette::kStar);
+    drawLabel(target, font, utf8(progress), {rect.left + rect.width - pad, rect.top + pad}, rowSize, palette::kTextDim,
+              Align::Right);
+    float y = rect.top + pad + titleHeight;
+    for (const std::string& line : lines)
+    {
+        drawLabel(target, font, utf8(line), {rect.left + pad, y}, rowSize, palette::kText);
+        y += rowHeight;
+    }
+    return rect;
+}
+
+} // namespace abalike::app

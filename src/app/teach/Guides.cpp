@@ -1,0 +1,204 @@
+#include "teach/Guide.hpp"
+
+#include <cmath>
+
+namespace abalike::app
+{
+
+namespace
+{
+
+bool angleChanged(const GuideContext& c)
+{
+    return c.aim && c.firstAim && std::abs(c.aim->angleDeg - c.firstAim->angleDeg) > 0.5;
+}
+
+bool powerChanged(const GuideContext& c)
+{
+    return c.aim && c.firstAim && std::abs(c.aim->speedMps - c.firstAim->speedMps) > 0.05;
+}
+
+bool launched(const GuideContext& c)
+{
+    return c.shots() > c.shotsAtStepStart;
+}
+
+/// A shot launched during this step at an angle the test accepts.
+template <class Test>
+bool launchedAt(const GuideContext& c, Test accept)
+{
+    return launched(c) && accept(c.session->shots().back().angleDeg);
+}
+
+bool won(const GuideContext& c)
+{
+    return c.session->phase() == Phase::Won || c.session->pigsRemaining() == 0;
+}
+
+bool hitABody(const GuideContext& c)
+{
+    return !c.session->shots().empty() && c.session->shots().back().impact.has_value();
+}
+
+bool brokenMaterial(const GuideContext& c, const std::string& material)
+{
+    for (const Entity& e : c.session->world().entities())
+        if (e.kind == EntityKind::Block && e.typeName == material && !e.alive)
+            return true;
+    return false;
+}
+
+GuideStep overlayStep(const std::string& why)
+{
+    return {"Press T for the teaching overlay: " + why, [](const GuideContext& c)
+            {
+                return c.overlayOn;
+            }};
+}
+
+Guide lesson(const std::string& id)
+{
+    if (id == "lesson-angle")
+        return {"Lesson: angle and range",
+                {{"Press G: the chart shows how far this bird lands at every angle, at the power you have now.",
+                  [](const GuideContext& c)
+                  {
+                      return c.chartOn;
+                  }},
+                 {"Pull to full power (\u2192 or a long drag), then launch at 30\u00B0 or lower.",
+                  [](const GuideContext& c)
+                  {
+                      return launchedAt(c, [](double a) { return a <= 32.0; });
+                  }},
+                 {"Now launch at 60\u00B0 or higher: nearly the same range, because sin 2\u03B8 is the same for \u03B8 "
+                  "and 90\u00B0 \u2212 \u03B8.",
+                  [](const GuideContext& c)
+                  {
+                      return launchedAt(c, [](double a) { return a >= 58.0; });
+                  }},
+                 {"Reach the pig at full power: only angles near the chart's ring get there.", won}},
+                "In vacuum from the ground 45\u00B0 throws farthest. From a height, or in air, a little lower wins: "
+                "try G on the other levels."};
+    if (id == "lesson-mass")
+        return {
+            "Lesson: mass and launch speed",
+            {{"Pull to full power and launch the red bird (4 kg). The top panel shows v\u2080 = F t / m.", launched},
+             {"The black bird weighs 8 kg. Launch it at full power too: the same force for the same time gives it "
+              "half the speed.",
+              launched},
+             {"Both carried the same momentum, m v\u2080 = F t = 100 N\u00B7s, but the light bird twice the "
+              "kinetic energy (p\u00B2 / 2m). Knock out the pig.",
+              won}},
+            "Heavy birds are slow off the slingshot but hard to stop: momentum is what pushes blocks."};
+    if (id == "lesson-drag")
+        return {
+            "Lesson: air drag",
+            {overlayStep("arrows for every force, bars for the energy."),
+             {"Launch, and watch the orange drag arrow: it points against the motion and shrinks as the bird slows.",
+              launched},
+             {"The orange bar is the energy the air took, for good. Hit the tower: the line under the shot says how "
+              "far the bird would have flown in vacuum.",
+              won}},
+            "Drag grows with the square of the speed: the faster the shot, the bigger the share the air takes."};
+    if (id == "lesson-wind")
+        return {
+            "Lesson: wind",
+            {overlayStep("the green arrow is the wind's push."),
+             {"Launch into the headwind. The wind pushes through drag, on the velocity relative to the air.", launched},
+             {"Press G: the range chart includes the wind. Find an angle that still reaches the tower.",
+              [](const GuideContext& c)
+              {
+                  return c.chartOn;
+              }},
+             {"Take out the pig: higher and harder than in still air.", won}},
+            "A headwind shortens every shot and favours flatter ones; a tailwind carries high, slow shots."};
+    if (id == "lesson-momentum")
+        return {"Lesson: momentum and energy",
+                {overlayStep("after the first impact a panel shows momentum and energy."),
+                 {"Hit the big wood block.", hitABody},
+                 {"Read the impact panel: momentum before and after, the kinetic energy lost to damage and heat, the "
+                  "coefficient of restitution. Then take out the pig.",
+                  won}},
+                "Momentum is shared in a collision; kinetic energy is not kept: it goes into breaking and heat."};
+    if (id == "lesson-materials")
+        return {"Lesson: materials",
+                {overlayStep("the impact panel shows how much of a block's strength a hit used."),
+                 {"Break the ice column: ice gives way at 25 N\u00B7s of impulse.",
+                  [](const GuideContext& c)
+                  {
+                      return brokenMaterial(c, "ice");
+                  }},
+                 {"Now the wood (60 N\u00B7s) and the stone (300 N\u00B7s): stone needs a heavy, fast hit, or a way "
+                  "around it.",
+                  won}},
+                "Strength and density decide what breaks: hit ice anywhere, wood hard, stone only when you must."};
+    if (id == "lesson-gravity")
+        return {"Lesson: gravity",
+                {{"Press G: on the Moon (g = 1.62 m/s\u00B2) the chart's scale is six times Earth's.",
+                  [](const GuideContext& c)
+                  {
+                      return c.chartOn;
+                  }},
+                 {"Launch at about 45\u00B0 with a gentle pull: the bird hangs in the sky six times longer.", launched},
+                 {"Take out the pig.", won}},
+                "Range and flight time both grow as 1/g: the same pull crosses six times the field on the Moon."};
+    return {};
+}
+
+} // namespace
+
+Guide tutorialGuide()
+{
+    return {"Tutorial: the controls",
+            {{"Aim: drag the bird back from the slingshot with the mouse (the direction sets the angle), or press "
+              "\u2191 and \u2193.",
+              angleChanged},
+             {"Power: pull further back, or press \u2192 and \u2190. The top panel shows the force and the launch "
+              "speed it gives: v\u2080 = F t / m.",
+              powerChanged},
+             {"The white dots are the RK4 preview: where the bird will fly. Let go of the mouse, or press Space, to "
+              "launch.",
+              launched},
+             {"Press T (now or while it flies): arrows show the forces on the bird, bars its energy.",
+              [](const GuideContext& c)
+              {
+                  return c.overlayOn;
+              }},
+             {"Point at any dot of a path to read its time, position and speed; drag with the right mouse button to "
+              "measure a distance.",
+              [](const GuideContext& c)
+              {
+                  return c.measured;
+              }},
+             {"Launch again and hit a pig. F1 lists every key.", launched}},
+            "That is every control. The campaign teaches the physics; the title menu has a short lesson on each idea."};
+}
+
+std::optional<Guide> guideFor(const std::string& levelId)
+{
+    if (levelId == "tutorial")
+        return tutorialGuide();
+    if (levelId.rfind("lesson-", 0) == 0)
+    {
+        Guide guide = lesson(levelId);
+        if (!guide.steps.empty())
+            return guide;
+    }
+    return std::nullopt;
+}
+
+const std::vector<LessonEntry>& lessonList()
+{
+    static const std::vector<LessonEntry> lessons{
+        {"lesson-angle", "Angle and range", "lesson-angle.json"},
+        {"lesson-mass", "Mass and launch speed", "lesson-mass.json"},
+        {"lesson-drag", "Air drag", "lesson-drag.json"},
+        {"lesson-wind", "Wind", "lesson-wind.json"},
+        {"lesson-momentum", "Momentum and energy", "lesson-momentum.json"},
+        {"lesson-materials", "Materials", "lesson-materials.json"},
+        {"lesson-gravity", "Gravity", "lesson-gravity.json"},
+    };
+    return lessons;
+}
+
+} // namespace abalike::app

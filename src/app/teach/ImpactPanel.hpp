@@ -1,0 +1,16 @@
+#pragma once
+
+#include <SFML/Graphics/Font.hpp>
+#include <SFML/Graphics/RenderTarget.hpp>
+#include <abalike/world/GameWorld.hpp>
+
+namespace abalike::app
+{
+
+/// The first impact in numbers: momentum and kinetic energy of the bird and of what it hit, just before and just
+/// after, what went into damage and the coefficient of restitution. Returns its bounds.
+sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topLeft,
+                              const FirstImpact& impact, double bodyStrengthNs, unsigned titleSize, unsigned rowSize,
+                              float scale);
+
+} // namespace abalike::app

@@ -1,0 +1,117 @@
+#include "teach/LessonSelectScreen.hpp"
+
+#include "render/Label.hpp"
+#include "render/Palette.hpp"
+#include "screens/App.hpp"
+#include "screens/PlayScreen.hpp"
+#include "teach/Guide.hpp"
+#include "ui/Card.hpp"
+
+#include <SFML/Graphics/RectangleShape.hpp>
+#include <abalike/level/LevelIO.hpp>
+#include <filesystem>
+
+namespace abalike::app
+{
+
+std::string lessonsDirectory(const App& app)
+{
+    return (std::filesystem::path(app.campaign().manifestPath).parent_path() / "lessons").string();
+}
+
+void playTutorial(App& app)
+{
+    if (app.campaign().levels.empty())
+        return;
+    LevelDef level = app.campaign().levels.front().level;
+    level.id = "tutorial";
+    level.title = "Tutorial";
+    app.screens().push(std::make_unique<PlayScreen>(app, PlaySource{std::move(level), "", std::nullopt}));
+}
+
+LessonSelectScreen::LessonSelectScreen(App& app) : m_app(app)
+{
+    std::vector<MenuItem> items;
+    for (const LessonEntry& lesson : lessonList())
+    {
+        const std::string path = lessonsDirectory(app) + "/" + lesson.file;
+        m_paths.push_back(path);
+        try
+        {
+            m_levels.push_back(loadLevel(path, Catalog::builtin()));
+        }
+        catch (const std::exception& error)
+        {
+            // A missing or broken lesson file greys its entry out; the others still play.
+            m_levels.push_back(std::nullopt);
+            app.notify("Lesson \"" + lesson.title + "\" could not be loaded from " + path);
+        }
+        items.push_back({lesson.id, lesson.title, m_levels.back().has_value()});
+    }
+    items.push_back({"back", "Back", true});
+    m_menu.setItems(std::move(items));
+}
+
+void LessonSelectScreen::handleEvent(const sf::Event& event)
+{
+    if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::Escape)
+    {
+        m_app.screens().pop();
+        return;
+    }
+    if (const std::optional<std::string> id = m_menu.handleEvent(event))
+        open(*id);
+}
+
+void LessonSelectScreen::open(const std::string& id)
+{
+    if (id == "back")
+    {
+        m_app.screens().pop();
+        return;
+    }
+    for (std::size_t i = 0; i < lessonList().size(); ++i)
+        if (lessonList()[i].id == id && m_levels[i])
+            m_app.screens().push(
+                std::make_unique<PlayScreen>(m_app, PlaySource{*m_levels[i], m_paths[i], std::nullopt}));
+}
+
+void LessonSelectScreen::draw(sf::RenderTarget& target)
+{
+    sf::RectangleShape back(sf::Vector2f(target.getSize()));
+    back.setFillColor(palette::kMenuTop);
+    target.draw(back);
+    const float scale = m_app.uiScale();
+    const sf::Vector2f window(target.getSize());
+    const float centre = 0.5f * window.x;
+    float y = 0.06f * window.y;
+    const sf::Font* font = m_app.font();
+    if (font != nullptr)
+    {
+        const unsigned titleSize = m_app.textSize(44.0f);
+        drawLabel(target, *font, utf8("Lessons"), {centre, y}, titleSize, palette::kStar, Align::Centre);
+        y += font->getLineSpacing(titleSize);
+        drawLabel(target, *font, utf8("One idea each, learnt by doing: a small level and a guide"), {centre, y},
+                  m_app.textSize(18.0f), palette::kTextDim, Align::Centre);
+        y += font->getLineSpacing(m_app.textSize(18.0f)) + 16.0f * scale;
+    }
+    const float bottom =
+        m_menu.draw(target, font, centre, y, std::min(window.x - 40.0f, 360.0f * scale), m_app.textSize(21.0f), scale);
+    if (font == nullptr)
+        return;
+    // What the highlighted lesson teaches, in the level's own words.
+    const std::size_t selected = m_menu.selected();
+    if (selected < m_levels.size() && m_levels[selected])
+    {
+        const unsigned size = m_app.textSize(17.0f);
+        float line = bottom + 18.0f * scale;
+        for (const std::string& text :
+             wrapText(*font, m_levels[selected]->lesson, size, std::min(window.x - 60.0f, 760.0f * scale)))
+        {
+            drawLabel(target, *font, utf8(text), {centre, line}, size, palette::kText, Align::Centre);
+            line += font->getLineSpacing(size);
+        }
+    }
+}
+
+} // namespace abalike::app

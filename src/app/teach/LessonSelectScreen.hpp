@@ -1,0 +1,44 @@
+#pragma once
+
+#include "screens/Screen.hpp"
+#include "ui/MenuList.hpp"
+
+#include <abalike/level/LevelDef.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace abalike::app
+{
+
+class App;
+
+/// The lessons, one per concept the campaign teaches, from the title menu: choose one to play its small level with
+/// its guide. Arrows and Enter, or hover and click; Esc goes back.
+class LessonSelectScreen : public Screen
+{
+public:
+    static constexpr std::string_view kName = "lessons";
+
+    explicit LessonSelectScreen(App& app);
+
+    std::string_view name() const override { return kName; }
+    void handleEvent(const sf::Event& event) override;
+    void draw(sf::RenderTarget& target) override;
+
+private:
+    void open(const std::string& id);
+
+    App& m_app;
+    MenuList m_menu;
+    std::vector<std::optional<LevelDef>> m_levels; ///< by lessonList() index; empty where the file did not load
+    std::vector<std::string> m_paths;
+};
+
+/// The folder of the lesson levels: lessons/ beside the campaign manifest.
+std::string lessonsDirectory(const App& app);
+
+/// Plays the tutorial: the campaign's first level under the name "tutorial", with the tutorial guide.
+void playTutorial(App& app);
+
+} // namespace abalike::app

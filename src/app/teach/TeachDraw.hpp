@@ -1,0 +1,81 @@
+#pragma once
+
+#include "render/Mesh.hpp"
+
+#include <SFML/Graphics/Color.hpp>
+#include <SFML/Graphics/Font.hpp>
+#include <SFML/Graphics/Rect.hpp>
+#include <SFML/Graphics/RenderTarget.hpp>
+#include <string>
+#include <vector>
+
+namespace abalike::app
+{
+
+/// Colours of the teaching aids: one per quantity, the same in every panel and arrow.
+namespace teach
+{
+inline const sf::Color kVelocity(40, 200, 255);
+inline const sf::Color kAcceleration(255, 80, 200);
+inline const sf::Color kGravity(255, 200, 40);
+inline const sf::Color kDrag(255, 110, 60);
+inline const sf::Color kWind(120, 230, 140);
+inline const sf::Color kKinetic(40, 200, 255);
+inline const sf::Color kPotential(140, 120, 255);
+inline const sf::Color kTotal(240, 240, 240);
+inline const sf::Color kLoss(255, 110, 60);
+inline const sf::Color kPanel(14, 20, 34, 215);
+inline const sf::Color kPanelEdge(110, 130, 170, 200);
+inline const sf::Color kComparison(255, 70, 70);
+} // namespace teach
+
+/// An arrow from `from` to `to` (pixels) with a head in proportion to the width; nothing if shorter than a pixel.
+/// With rim > 0, a dark rim of that width around it first, so that crossing arrows stay apart.
+void addArrow(Mesh& mesh, sf::Vector2f from, sf::Vector2f to, float width, sf::Color colour, float rim = 0.0f);
+
+/// A rectangle with an edge: the background of every teaching panel.
+void drawTeachPanel(sf::RenderTarget& target, sf::FloatRect rect, float scale);
+
+/// One row of a text panel: a label on the left, a value on the right, a colour swatch when set.
+struct PanelRow
+{
+    std::string label;
+    std::string value;
+    sf::Color swatch = sf::Color::Transparent;
+    bool heading = false; ///< drawn in the heading colour, without a value
+};
+
+/// A small panel of rows with a title, laid out by its widest row.
+class TextPanel
+{
+public:
+    TextPanel(std::string title, std::vector<PanelRow> rows) : m_title(std::move(title)), m_rows(std::move(rows)) {}
+
+    /// Size it will take at these text sizes.
+    sf::Vector2f measure(const sf::Font& font, unsigned titleSize, unsigned rowSize, float scale) const;
+    /// Draws it with its top-left corner at `at`; returns its bounds.
+    sf::FloatRect draw(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f at, unsigned titleSize,
+                       unsigned rowSize, float scale) const;
+
+private:
+    std::string m_title;
+    std::vector<PanelRow> m_rows;
+};
+
+/// Places short labels near points without covering each other: a label that would overlap an earlier one moves a
+/// line down, up, two down or two up.
+class LabelPlacer
+{
+public:
+    /// Draws `text` with its left edge at x (right edge when alignRight) centred on y, moved off earlier labels.
+    void draw(sf::RenderTarget& target, const sf::Font& font, const std::string& text, sf::Vector2f at, bool alignRight,
+              unsigned size, sf::Color colour);
+
+private:
+    std::vector<sf::FloatRect> m_placed;
+};
+
+/// A number with a fixed count of decimals and a unit, e.g. "12.3 m/s".
+std::string withUnit(double value, int decimals, const char* unit);
+
+} // namespace abalike::app

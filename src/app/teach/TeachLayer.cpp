@@ -1,0 +1,200 @@
+#include "teach/TeachLayer.hpp"
+
+#include "screens/App.hpp"
+#include "teach/ForceArrows.hpp"
+#include "teach/ImpactPanel.hpp"
+#include "teach/WhyPanel.hpp"
+
+#include <abalike/world/Catalog.hpp>
+
+namespace abalike::app
+{
+
+bool TeachLayer::overlayOn() const
+{
+    return m_app.settings().teachingOverlay;
+}
+
+void TeachLayer::toggleOverlay()
+{
+    Settings settings = m_app.settings();
+    settings.teachingOverlay = !settings.teachingOverlay;
+    m_app.updateSettings(settings); // a scripted run changes it for this run only
+    m_app.notify(settings.teachingOverlay ? "Teaching overlay on (T to hide)" : "Teaching overlay off (T to show)");
+}
+
+bool TeachLayer::handleEvent(const sf::Event& event, PlayView& view)
+{
+    if (m_walkthrough.handleEvent(event, view, m_follower))
+        return true;
+    if (event.type == sf::Event::KeyPressed && !event.key.control && !event.key.alt)
+    {
+        switch (event.key.code)
+        {
+        case sf::Keyboard::T:
+            toggleOverlay();
+            return true;
+        case sf::Keyboard::G:
+            m_showChart = !m_showChart;
+            return true;
+        case sf::Keyboard::C:
+            m_paths.clear();
+            return true;
+        default:
+            if (m_comparison.handleKey(event.key))
+                return true;
+            break;
+        }
+    }
+    if (overlayOn())
+        return m_paths.handleEvent(event, view.camera(), view.session(), view.preview());
+    return false;
+}
+
+void TeachLayer::onLevelStart(PlayView& view)
+{
+    const std::string& id = view.session().level().id;
+    if (id != m_guideLevel)
+    {
+        m_guideLevel = id;
+        std::optional<Guide> guide = guideFor(id);
+        // A first run (no progress at all) starts the campaign with the tutorial; scripted runs never do.
+        const Campaign& campaign = m_app.campaign();
+        if (!guide && !m_app.scripted() && m_app.progress().levels.empty() && !campaign.levels.empty() &&
+            campaign.levels.front().level.id == id)
+            guide = tutorialGuide();
+        if (guide)
+            m_guide.start(std::move(*guide));
+        else
+            m_guide.stop();
+    }
+    m_walkthrough.stop(view);
+    m_follower.reset();
+    m_paths.onLevelStart(view.session());
+    m_feedback.reset();
+}
+
+void TeachLayer::afterStep(PlayView& view)
+{
+    m_paths.update(view.session());
+}
+
+void TeachLayer::frameUpdate(PlayView& view, double frameS)
+{
+    (void)frameS;
+    const GameSession& session = view.session();
+    m_paths.update(session);
+    m_feedback.update(session, view.aim());
+    m_comparison.update(session, view.preview());
+    GuideContext context;
+    context.session = &session;
+    context.aim = view.aim();
+    context.overlayOn = overlayOn();
+    context.chartOn = m_showChart;
+    context.comparisonOn = m_comparison.active();
+    context.walkthroughOn = m_walkthrough.active();
+    context.measured = m_paths.used();
+    m_guide.update(context);
+    if (m_showChart)
+        m_chart.update(session, view.aim());
+}
+
+void TeachLayer::drawWorld(sf::RenderTarget& target, PlayView& view)
+{
+    const float scale = m_app.uiScale();
+    if (overlayOn())
+        m_paths.drawDots(target, view.camera(), scale);
+    const sf::Font* font = m_app.font();
+    m_comparison.drawWorld(target, view.camera(), scale);
+    if (m_walkthrough.active())
+        m_walkthrough.drawWorld(target, view.camera(), scale);
+    else if (overlayOn() && font != nullptr)
+        if (const std::optional<BirdReadout> bird = m_follower.current(view.session()))
+            drawForceArrows(target, *font, view.camera(), *bird, m_app.textSize(13.0f), scale);
+}
+
+void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
+{
+    const sf::Font* font = m_app.font();
+    if (font == nullptr)
+        return;
+    const GameSession& session = view.session();
+    const float scale = m_app.uiScale();
+    const unsigned titleSize = m_app.textSize(15.0f);
+    const unsigned rowSize = m_app.textSize(13.0f);
+    const float margin = 12.0f * scale;
+    const float gap = 6.0f * scale;
+    const sf::Vector2f window(target.getSize());
+    const bool aiming = session.phase() == Phase::Aiming;
+
+    // Right column: the flying bird's forces and energy, or after its first contact the impact; while aiming, the
+    // chart and the comparison.
+    sf::Vector2f right(window.x - margin, margin);
+    const auto below = [&](const sf::FloatRect& rect)
+    {
+        if (rect.height > 0.0f)
+            right.y = rect.top + rect.height + gap;
+    };
+    if (overlayOn() && !m_walkthrough.active())
+    {
+        const unsigned terms = m_follower.model() ? activeTerms(*m_follower.model()) : 0u;
+        const bool drag = (terms & (kLinearDragTerm | kQuadraticDragTerm)) != 0;
+        const bool wind = (terms & (kWindTerm | kGustTerm)) != 0;
+        if (const std::optional<BirdReadout> bird = m_follower.current(session))
+        {
+            below(drawForceLegend(target, *font, right, *bird, drag, wind, titleSize, rowSize, scale));
+            below(drawEnergyBars(target, *font, right, bird->energy, false, titleSize, rowSize, scale));
+        }
+        else if (!aiming && !session.shots().empty())
+        {
+            const ShotRecord& shot = session.shots().back();
+            if (shot.energy)
+                below(drawEnergyBars(target, *font, right, *shot.energy, true, titleSize, rowSize, scale));
+            if (shot.impact)
+            {
+                const Material* material = session.catalog().findMaterial(shot.impact->bodyType);
+                const PigType* pig = session.catalog().findPig(shot.impact->bodyType);
+                const double strength = shot.impact->bodyKind == EntityKind::Pig
+                                            ? (pig ? pig->healthNs : 0.0)
+                                            : (material ? material->strengthNs : 0.0);
+                // The impact panel is as wide as it needs; keep it in the right column.
+                const float width = 470.0f * scale;
+                below(drawImpactPanel(target, *font, {right.x - width, right.y}, *shot.impact, strength, titleSize,
+                                      rowSize, scale));
+            }
+        }
+    }
+    // While aiming, the aim readout sits at the top centre: the chart and the comparison go below its line.
+    if (aiming)
+        right.y = std::max(right.y, 88.0f * scale);
+    if (m_showChart && aiming)
+        below(m_chart.draw(target, *font, right, titleSize, rowSize, scale));
+    if (aiming)
+        below(m_comparison.drawPanel(target, *font, right, titleSize, rowSize, scale));
+
+    // Left column, under the level's status and air: a tutorial's or lesson's step, why preview and world can differ.
+    float left = 152.0f * scale;
+    if (m_guide.active() && !m_walkthrough.active())
+    {
+        const sf::FloatRect card =
+            m_guide.draw(target, *font, {margin, left}, std::min(440.0f * scale, window.x - 2.0f * margin),
+                         m_app.textSize(17.0f), m_app.textSize(15.0f), scale);
+        left = card.top + card.height + gap;
+    }
+    if (overlayOn() && !m_walkthrough.active())
+        drawWhyPanel(target, *font, {margin, left}, session, view.preview(), titleSize, rowSize, scale);
+
+    if (m_walkthrough.active())
+        m_walkthrough.drawPanel(target, *font, 152.0f * scale, titleSize, rowSize, scale);
+
+    // Feedback on the last shot, above the level's hint and the app's notices at the bottom.
+    if (!m_walkthrough.active())
+        m_feedback.draw(target, *font, window.y - 96.0f * scale, std::min(window.x - 40.0f, 900.0f * scale),
+                        m_app.textSize(16.0f), scale);
+
+    // The measuring tools last: what the player points at reads over everything.
+    if (overlayOn())
+        m_paths.drawTools(target, *font, view.camera(), session, rowSize, scale);
+}
+
+} // namespace abalike::app

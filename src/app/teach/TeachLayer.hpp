@@ -1,0 +1,49 @@
+#pragma once
+
+#include "screens/PlayLayer.hpp"
+#include "teach/BirdReadout.hpp"
+#include "teach/ComparisonView.hpp"
+#include "teach/FeedbackView.hpp"
+#include "teach/Guide.hpp"
+#include "teach/PathHistory.hpp"
+#include "teach/RangeChartView.hpp"
+#include "teach/WalkthroughView.hpp"
+
+namespace abalike::app
+{
+
+/// The teaching aids on the play screen (issue 11). T (or the teaching_overlay setting) shows the force arrows and
+/// energy bars on the flying bird, the first impact in numbers, the timing dots on the last shots' paths with the
+/// measuring tools, and why the preview and the world can differ; G the range-by-angle chart; I the integrator
+/// comparison; K the RK4 walkthrough; C clears the kept paths. The feedback sentences after a shot are always on, and
+/// so is the guide of a tutorial or lesson level.
+class TeachLayer : public PlayLayer
+{
+public:
+    explicit TeachLayer(App& app) : m_app(app) {}
+
+    std::string_view name() const override { return "teach"; }
+    bool handleEvent(const sf::Event& event, PlayView& view) override;
+    void onLevelStart(PlayView& view) override;
+    void afterStep(PlayView& view) override;
+    void frameUpdate(PlayView& view, double frameS) override;
+    void drawWorld(sf::RenderTarget& target, PlayView& view) override;
+    void drawScreen(sf::RenderTarget& target, PlayView& view) override;
+
+private:
+    bool overlayOn() const;
+    void toggleOverlay();
+
+    App& m_app;
+    ShotFollower m_follower;
+    PathHistory m_paths;
+    ComparisonView m_comparison;
+    RangeChartView m_chart;
+    WalkthroughView m_walkthrough;
+    FeedbackView m_feedback;
+    GuideRunner m_guide;
+    std::string m_guideLevel; ///< the level the guide was started for: a restart keeps its progress
+    bool m_showChart = false;
+};
+
+} // namespace abalike::app

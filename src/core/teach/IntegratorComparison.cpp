@@ -1,0 +1,97 @@
+#include <abalike/teach/IntegratorComparison.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace abalike
+{
+
+IntegratorSettings ComparisonMethod::settings(double physicsDtS) const
+{
+    IntegratorSettings s;
+    s.stepper = stepper;
+    s.guardStiffness = false;
+    s.dtS = stepper == StepperKind::Dopri5 ? physicsDtS : dtS;
+    if (stepper == StepperKind::Dopri5)
+        s.tolerance = tolerance; // the fixed-step methods never use it
+    return s;
+}
+
+std::string ComparisonMethod::label() const
+{
+    char text[96];
+    if (stepper == StepperKind::Dopri5)
+    {
+        std::snprintf(text, sizeof text, "dopri5, tol = %.0e", tolerance);
+        return text;
+    }
+    const char* name = stepper == StepperKind::Euler               ? "explicit Euler"
+                       : stepper == StepperKind::SemiImplicitEuler ? "semi-implicit Euler"
+                       : stepper == StepperKind::Rk4               ? "RK4"
+                                                                   : "analytic";
+    const double rate = 1.0 / dtS;
+    if (std::abs(rate - std::round(rate)) < 1e-9 * rate)
+        std::snprintf(text, sizeof text, "%s, dt = 1/%.0f s", name, rate);
+    else
+        std::snprintf(text, sizeof text, "%s, dt = %.4g s", name, dtS);
+    return text;
+}
+
+FlightState pathStateAt(const FlightIntegrator& rhs, const PredictedFlight& flight, double tS)
+{
+    const std::vector<PathPoint>& path = flight.path;
+    if (path.empty())
+        return {};
+    if (tS <= path.front().t)
+        return path.front().s;
+    if (tS >= path.back().t)
+        return path.back().s;
+    const auto after =
+        std::upper_bound(path.begin(), path.end(), tS, [](double t, const PathPoint& p) { return t < p.t; });
+    const PathPoint& a = *(after - 1);
+    const PathPoint& b = *after;
+    FlightStep step;
+    step.t0 = a.t;
+    step.t1 = b.t;
+    step.s0 = a.s;
+    step.s1 = b.s;
+    step.f0 = rhs.rightHandSide(a.t, a.s);
+    step.f1 = rhs.rightHandSide(b.t, b.s);
+    return step.interpolate(tS);
+}
+
+IntegratorComparison compareIntegrator(const FlightModel& model, const FlightState& s0, const ComparisonMethod& method,
+                                       double physicsDtS, const PredictedFlight& real, const PredictionLimits& limits)
+{
+    if (method.stepper == StepperKind::Dopri5)
+    {
+        if (!(method.tolerance >= kComparisonMinTolerance && method.tolerance <= kComparisonMaxTolerance))
+            throw std::invalid_argument("the compared dopri5's tolerance must be between 1e-12 and 1e-2");
+    }
+    else if (method.stepper == StepperKind::Analytic)
+        throw std::invalid_argument("compare euler, semi-implicit-euler, rk4 or dopri5");
+    else if (!(method.dtS >= kComparisonMinDtS * (1.0 - 1e-12) && method.dtS <= kComparisonMaxDtS * (1.0 + 1e-12)))
+        throw std::invalid_argument("the compared method's step must be between 1/240 and 1/15 s");
+
+    IntegratorComparison comparison;
+    comparison.method = method;
+    comparison.flight = predictFlight(model, method.settings(physicsDtS), s0, limits);
+    if (real.path.empty())
+        return comparison;
+    const FlightIntegrator rhs(model, {});
+    const double end = std::min(comparison.flight.path.back().t, real.path.back().t);
+    for (const PathPoint& p : comparison.flight.path)
+    {
+        if (p.t > end)
+            break;
+        const FlightState r = pathStateAt(rhs, real, p.t);
+        comparison.maxErrorM = std::max(comparison.maxErrorM, std::hypot(p.s[0] - r[0], p.s[1] - r[1]));
+    }
+    if (comparison.flight.contact && real.contact)
+        comparison.contactErrorM =
+            std::hypot(comparison.flight.contact->x - real.contact->x, comparison.flight.contact->y - real.contact->y);
+    return comparison;
+}
+
+} // namespace abalike

@@ -1,0 +1,124 @@
+#include <abalike/level/LevelFlight.hpp>
+#include <abalike/teach/RangeChart.hpp>
+#include <abalike/teach/ShotFeedback.hpp>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace abalike
+{
+
+namespace
+{
+
+/// The most sentences one shot gets: more would not be read between shots.
+constexpr std::size_t kMaxSentences = 2;
+/// Below these the wind or the drag did not change the shot enough to be worth a sentence.
+constexpr double kWindShiftWorthM = 0.2;
+constexpr double kDragShareWorth = 0.01;
+
+std::string format(const char* pattern, auto... values)
+{
+    char text[320];
+    std::snprintf(text, sizeof text, pattern, values...);
+    return text;
+}
+
+std::string hitName(const FirstImpact& impact)
+{
+    if (impact.bodyKind == EntityKind::Pig)
+        return "the " + impact.bodyType + " pig";
+    const bool vowel = !impact.bodyType.empty() && std::string("aeiou").find(impact.bodyType[0]) != std::string::npos;
+    return (vowel ? "an " : "a ") + impact.bodyType + " block";
+}
+
+/// Momentum sentence: how much the bird carried and how much it handed to what it hit.
+std::string momentumSentence(const FirstImpact& impact)
+{
+    const double carried = impact.birdMassKg * std::hypot(impact.birdBefore.vx, impact.birdBefore.vy);
+    const double passed = impact.bodyMassKg * std::hypot(impact.bodyAfter.vx - impact.bodyBefore.vx,
+                                                         impact.bodyAfter.vy - impact.bodyBefore.vy);
+    std::string text = format("The bird hit %s carrying %.0f kg\u00B7m/s of momentum and passed %.0f kg\u00B7m/s to "
+                              "it",
+                              hitName(impact).c_str(), carried, passed);
+    // Bouncing back hands over more than the bird had: it must also cancel its own momentum.
+    if (passed > carried * 1.02)
+        text += " (more than it carried: it bounced back)";
+    if (impact.damageNs > 0.0)
+        text += format(", a %.0f N\u00B7s blow", impact.damageNs);
+    return text + ".";
+}
+
+} // namespace
+
+std::vector<std::string> shotFeedback(const LevelDef& level, const Catalog& catalog, const ShotRecord& shot,
+                                      double physicsDtS)
+{
+    std::vector<std::string> sentences;
+    const BirdType* bird = catalog.findBird(shot.bird);
+    if (bird == nullptr)
+        return sentences;
+    RangeLaunch launch;
+    launch.model = levelFlightModel(level.environment, *bird);
+    launch.settings.dtS = physicsDtS;
+    launch.speedMps = shot.speedMps;
+    launch.heightM = std::max(0.0, level.slingshot.y - level.groundY);
+    launch.maxTimeS = 30.0;
+    const unsigned terms = activeTerms(launch.model);
+    const bool drag = (terms & (kLinearDragTerm | kQuadraticDragTerm)) != 0;
+    const bool wind = (terms & (kWindTerm | kGustTerm)) != 0;
+    const std::optional<double> range = rangeAtAngle(launch, shot.angleDeg);
+
+    if (shot.impact)
+        sentences.push_back(momentumSentence(*shot.impact));
+    if (wind && range)
+    {
+        RangeLaunch calm = launch;
+        calm.model.windX = calm.model.windY = 0.0;
+        calm.model.gusts.reset();
+        if (const std::optional<double> still = rangeAtAngle(calm, shot.angleDeg);
+            still && std::abs(*range - *still) >= kWindShiftWorthM)
+            sentences.push_back(format("The wind moved the landing point %.1f m %s: %.1f m instead of %.1f m in still "
+                                       "air.",
+                                       std::abs(*range - *still), *range > *still ? "forward" : "back", *range,
+                                       *still));
+    }
+    if (drag)
+    {
+        RangeLaunch vacuum = launch;
+        vacuum.model.linearDrag = vacuum.model.quadraticDrag = 0.0;
+        const std::optional<double> airless = rangeAtAngle(vacuum, shot.angleDeg);
+        const double launchJ = shot.energy ? shot.energy->launchKineticJ : 0.0;
+        if (shot.energy && launchJ > 0.0 && std::abs(shot.energy->dragLossJ) >= kDragShareWorth * launchJ)
+        {
+            const double loss = shot.energy->dragLossJ;
+            std::string text = loss >= 0.0 ? format("Air drag took %.0f J of the %.0f J launch energy (%.0f %%) "
+                                                    "before the first contact",
+                                                    loss, launchJ, 100.0 * loss / launchJ)
+                                           : format("The wind pushed %.0f J into the flight on top of the %.0f J "
+                                                    "launch energy before the first contact",
+                                                    -loss, launchJ);
+            if (airless && range)
+                text += format("; in vacuum this launch would land %.1f m away instead of %.1f m", *airless, *range);
+            sentences.push_back(text + ".");
+        }
+        else if (airless && range && std::abs(*airless - *range) >= kWindShiftWorthM)
+            sentences.push_back(
+                format("In vacuum this launch would land %.1f m away instead of %.1f m.", *airless, *range));
+    }
+    else if (range)
+    {
+        // No air: the path is a parabola, and the lesson is the angle.
+        const RangeChart chart = rangeChart(launch, 0.0, 90.0, 1.0);
+        if (chart.bestAngleDeg && chart.bestRangeM)
+            sentences.push_back(format("With no air, %.1f\u00B0 at %.1f m/s lands %.1f m away on flat ground "
+                                       "(g = %.2f m/s\u00B2); %.1f\u00B0 would reach the furthest, %.1f m.",
+                                       shot.angleDeg, shot.speedMps, *range, launch.model.gravity, *chart.bestAngleDeg,
+                                       *chart.bestRangeM));
+    }
+    if (sentences.size() > kMaxSentences)
+        sentences.resize(kMaxSentences);
+    return sentences;
+}
+
+} // namespace abalike

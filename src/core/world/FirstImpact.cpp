@@ -1,0 +1,114 @@
+#include "world/ContactRecorder.hpp"
+
+#include <abalike/world/FirstImpact.hpp>
+#include <abalike/world/GameWorld.hpp>
+
+namespace abalike
+{
+
+namespace
+{
+
+BodyVelocity velocityOf(const b2Body& body)
+{
+    return {body.GetLinearVelocity().x, body.GetLinearVelocity().y, body.GetAngularVelocity()};
+}
+
+double kinetic(double mass, double inertia, const BodyVelocity& v)
+{
+    return 0.5 * mass * (v.vx * v.vx + v.vy * v.vy) + 0.5 * inertia * v.omegaRadPerS * v.omegaRadPerS;
+}
+
+/// Velocity of the material point p of a body moving with v about its centre c: v + omega x (p - c).
+std::array<double, 2> pointVelocity(const BodyVelocity& v, const std::array<double, 2>& centre,
+                                    const std::array<double, 2>& p)
+{
+    return {v.vx - v.omegaRadPerS * (p[1] - centre[1]), v.vy + v.omegaRadPerS * (p[0] - centre[0])};
+}
+
+} // namespace
+
+std::array<double, 2> FirstImpact::momentumBefore() const
+{
+    return {birdMassKg * birdBefore.vx + bodyMassKg * bodyBefore.vx,
+            birdMassKg * birdBefore.vy + bodyMassKg * bodyBefore.vy};
+}
+
+std::array<double, 2> FirstImpact::momentumAfter() const
+{
+    return {birdMassKg * birdAfter.vx + bodyMassKg * bodyAfter.vx,
+            birdMassKg * birdAfter.vy + bodyMassKg * bodyAfter.vy};
+}
+
+double FirstImpact::kineticBeforeJ() const
+{
+    return kinetic(birdMassKg, birdInertiaKgM2, birdBefore) + kinetic(bodyMassKg, bodyInertiaKgM2, bodyBefore);
+}
+
+double FirstImpact::kineticAfterJ() const
+{
+    return kinetic(birdMassKg, birdInertiaKgM2, birdAfter) + kinetic(bodyMassKg, bodyInertiaKgM2, bodyAfter);
+}
+
+std::optional<double> FirstImpact::restitution() const
+{
+    // Relative velocity of the two contact points along the normal (bird into body): positive while closing.
+    const auto closing = [&](const BodyVelocity& bird, const BodyVelocity& body)
+    {
+        const auto vb = pointVelocity(bird, birdCentre, point);
+        const auto vo = pointVelocity(body, bodyCentre, point);
+        return (vb[0] - vo[0]) * normal[0] + (vb[1] - vo[1]) * normal[1];
+    };
+    const double before = closing(birdBefore, bodyBefore);
+    if (!(before > 0.0))
+        return std::nullopt;
+    return std::max(0.0, -closing(birdAfter, bodyAfter) / before);
+}
+
+void GameWorld::snapshotImpactVelocities()
+{
+    // Only while the bird flies free and has touched nothing: then the next contact may be its first impact, and
+    // its "before" is the velocity every body has now, before Box2D steps.
+    m_stepStartVelocities.resize(m_entities.size());
+    for (std::size_t i = 0; i < m_entities.size(); ++i)
+        if (const b2Body* body = m_entities[i].body)
+            m_stepStartVelocities[i] = velocityOf(*body);
+}
+
+void GameWorld::recordFirstImpact(int otherIndex, double tS)
+{
+    if (otherIndex < 0 || static_cast<std::size_t>(otherIndex) >= m_stepStartVelocities.size())
+        return;
+    const Entity& other = m_entities[static_cast<std::size_t>(otherIndex)];
+    const Entity& bird = m_entities[static_cast<std::size_t>(m_birdIndex)];
+    if ((other.kind != EntityKind::Block && other.kind != EntityKind::Pig) || other.body == nullptr ||
+        bird.body == nullptr)
+        return;
+    FirstImpact impact;
+    impact.tS = tS;
+    impact.bodyKind = other.kind;
+    impact.bodyIndex = other.defIndex;
+    impact.bodyType = other.typeName;
+    impact.birdMassKg = bird.body->GetMass();
+    impact.birdInertiaKgM2 =
+        bird.body->GetInertia() - bird.body->GetMass() * bird.body->GetLocalCenter().LengthSquared();
+    impact.bodyMassKg = other.body->GetMass();
+    impact.bodyInertiaKgM2 =
+        other.body->GetInertia() - other.body->GetMass() * other.body->GetLocalCenter().LengthSquared();
+    impact.birdBefore = m_stepStartVelocities[static_cast<std::size_t>(m_birdIndex)];
+    impact.bodyBefore = m_stepStartVelocities[static_cast<std::size_t>(otherIndex)];
+    impact.birdAfter = velocityOf(*bird.body);
+    impact.bodyAfter = velocityOf(*other.body);
+    const b2Vec2 touch = *m_contacts->birdTouch();
+    impact.birdCentre = {touch.x, touch.y};
+    impact.bodyCentre = {other.body->GetWorldCenter().x, other.body->GetWorldCenter().y};
+    impact.normal = {m_contacts->birdTouchNormal().x, m_contacts->birdTouchNormal().y};
+    // The contact point is on the bird's surface along the normal (its designed radius).
+    const double radius = 0.5 * bird.widthM;
+    impact.point = {touch.x + radius * impact.normal[0], touch.y + radius * impact.normal[1]};
+    const auto damage = m_contacts->impulses().find(otherIndex);
+    impact.damageNs = damage == m_contacts->impulses().end() ? 0.0 : damage->second;
+    m_birdImpact = impact;
+}
+
+} // namespace abalike

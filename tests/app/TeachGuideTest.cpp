@@ -1,0 +1,146 @@
+// The guides (tutorial, lessons) and the path samples of the teaching overlay, on real sessions, without a window.
+#include "teach/Guide.hpp"
+#include "teach/PathHistory.hpp"
+
+#include <abalike/level/LevelIO.hpp>
+#include <cmath>
+#include <gtest/gtest.h>
+
+namespace abalike::app
+{
+namespace
+{
+
+LevelDef sourceLevel(const std::string& relative)
+{
+    return loadLevel(std::string(ABALIKE_SOURCE_DIR) + "/" + relative, Catalog::builtin());
+}
+
+TEST(TeachGuides, EveryLessonHasALevelThatLoadsAndAGuide)
+{
+    ASSERT_EQ(lessonList().size(), 7u); // one per concept the campaign teaches
+    for (const LessonEntry& lesson : lessonList())
+    {
+        const LevelDef level = sourceLevel("levels/lessons/" + lesson.file);
+        EXPECT_EQ(level.id, lesson.id);
+        EXPECT_FALSE(level.lesson.empty()) << lesson.id << " says what it teaches";
+        const std::optional<Guide> guide = guideFor(lesson.id);
+        ASSERT_TRUE(guide) << lesson.id;
+        EXPECT_GE(guide->steps.size(), 2u);
+        EXPECT_FALSE(guide->closing.empty());
+    }
+    EXPECT_TRUE(guideFor("tutorial"));
+    EXPECT_FALSE(guideFor("1-1"));
+    EXPECT_FALSE(guideFor("lesson-unknown"));
+}
+
+/// The angle lesson, played: each step is done only by doing what it asks.
+TEST(TeachGuides, TheAngleLessonAdvancesOnlyWhenThePlayerDoesTheStep)
+{
+    GameSession session(sourceLevel("levels/lessons/lesson-angle.json"));
+    GuideRunner runner;
+    runner.start(*guideFor("lesson-angle"));
+    GuideContext context;
+    context.session = &session;
+    runner.update(context);
+    EXPECT_EQ(runner.step(), 0u);
+    context.chartOn = true; // G
+    runner.update(context);
+    EXPECT_EQ(runner.step(), 1u);
+    const auto play = [&](double angle)
+    {
+        session.launch(angle, session.maxLaunchSpeed());
+        while (session.phase() == Phase::Flying)
+            session.step();
+        runner.update(context);
+    };
+    play(75.0); // not what step 2 asks (30 degrees or lower), and short of the pig
+    EXPECT_EQ(runner.step(), 1u);
+    play(30.0);
+    EXPECT_EQ(runner.step(), 2u);
+    play(75.0);
+    EXPECT_EQ(runner.step(), 3u);
+    EXPECT_NE(session.phase(), Phase::Won);
+    play(45.0); // full power at 45 degrees reaches the pig
+    EXPECT_EQ(session.phase(), Phase::Won);
+    EXPECT_EQ(runner.step(), 4u);
+}
+
+TEST(TeachGuides, TheTutorialFollowsTheAim)
+{
+    GameSession session(sourceLevel("levels/1-1-first-flight.json"));
+    GuideRunner runner;
+    runner.start(tutorialGuide());
+    GuideContext context;
+    context.session = &session;
+    context.aim = AimReadout{45.0, 600.0, 15.0, 4.0, 0.1};
+    runner.update(context);
+    EXPECT_EQ(runner.step(), 0u);
+    context.aim->angleDeg = 50.0;
+    runner.update(context);
+    EXPECT_EQ(runner.step(), 1u);
+    context.aim->speedMps = 20.0;
+    runner.update(context);
+    EXPECT_EQ(runner.step(), 2u);
+    context.overlayOn = true; // T before launching does not skip the launch step
+    runner.update(context);
+    EXPECT_EQ(runner.step(), 2u);
+    session.launch(50.0, 20.0);
+    runner.update(context);
+    EXPECT_EQ(runner.step(), 4u); // launched, and the overlay was already on
+}
+
+TEST(TeachPaths, SamplesCarryVelocitiesFromTheFlownPath)
+{
+    // A parabola sampled every 1/60 s: central differences give its velocity to O(dt^2), exactly for a parabola.
+    std::vector<std::array<double, 3>> path;
+    for (int i = 0; i <= 60; ++i)
+    {
+        const double t = i / 60.0;
+        path.push_back({t, 10.0 * t, 10.0 * t - 4.905 * t * t});
+    }
+    const std::vector<PathSample> samples = samplesOf(path);
+    ASSERT_EQ(samples.size(), path.size());
+    for (std::size_t i = 1; i + 1 < samples.size(); ++i)
+    {
+        EXPECT_NEAR(samples[i].vx, 10.0, 1e-9);
+        EXPECT_NEAR(samples[i].vy, 10.0 - 9.81 * samples[i].t, 1e-9);
+    }
+    // A contact point at a step's own time (zero interval) borrows its neighbour's velocity instead of dividing by 0.
+    path.push_back(path.back());
+    const std::vector<PathSample> withRepeat = samplesOf(path);
+    EXPECT_TRUE(std::isfinite(withRepeat.back().vx));
+    EXPECT_TRUE(samplesOf({}).empty());
+}
+
+TEST(TeachPaths, HistoryKeepsTheLastFiveShotsAcrossRestartsAndForgetsAnotherLevel)
+{
+    GameSession session(sourceLevel("levels/1-1-first-flight.json"));
+    PathHistory history;
+    history.onLevelStart(session);
+    for (int shot = 0; shot < 7; ++shot)
+    {
+        if (session.currentBird() == nullptr || session.finished())
+        {
+            session.restart();
+            history.onLevelStart(session);
+        }
+        session.launch(20.0 + shot, 8.0);
+        while (session.phase() == Phase::Flying)
+        {
+            session.step();
+            history.update(session);
+        }
+    }
+    ASSERT_EQ(history.paths().size(), PathHistory::kMaxPaths);
+    EXPECT_EQ(history.paths().back().name, "shot 7");
+    EXPECT_EQ(history.paths().front().name, "shot 3");
+    EXPECT_GT(history.paths().back().samples.size(), 10u);
+
+    GameSession other(sourceLevel("levels/1-2-the-long-shot.json"));
+    history.onLevelStart(other);
+    EXPECT_TRUE(history.paths().empty());
+}
+
+} // namespace
+} // namespace abalike::app

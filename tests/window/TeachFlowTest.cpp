@@ -1,0 +1,95 @@
+// The teaching aids in the real game, driven by scripted input under a virtual display and checked through the
+// run's trace: the tutorial and the lessons open from the title, T toggles the teaching_overlay setting, the RK4
+// walkthrough holds the world still, and every teaching key works in flight without a crash.
+#include "RunGame.hpp"
+
+#include <gtest/gtest.h>
+
+namespace abalike::test
+{
+namespace
+{
+
+const std::string kSize = " --size 1280x720";
+
+class TeachFlow : public ::testing::Test
+{
+protected:
+    TeachFlow() : m_dir(::testing::UnitTest::GetInstance()->current_test_info()->name())
+    {
+        std::filesystem::create_directories(data());
+    }
+    std::filesystem::path data() const { return m_dir.path() / "data"; }
+    std::string script(const std::string& json) const { return " --script '" + m_dir.write("script.json", json) + "'"; }
+    GameRun play(const std::string& args) const { return runGame("play " + args + kSize, data()); }
+
+    ScratchDir m_dir;
+};
+
+TEST_F(TeachFlow, TutorialAndLessonsOpenFromTheTitle)
+{
+    // Title: Play, Level select, Tutorial, Lessons, ...
+    const GameRun tutorial = play("--frames 12" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"},
+        {"frame": 4, "key": "Enter"}])"));
+    ASSERT_EQ(tutorial.exitCode, 0) << tutorial.err;
+    EXPECT_EQ(tutorial.values("level", "id"), (std::vector<std::string>{"tutorial"}));
+    EXPECT_EQ(tutorial.finalScreens(), (std::vector<std::string>{"title", "play"}));
+
+    // Lessons, then the fourth lesson (wind).
+    const GameRun lessons = play("--frames 20" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"},
+        {"frame": 4, "key": "Down"}, {"frame": 5, "key": "Enter"}, {"frame": 8, "key": "Down"}, {"frame": 9, "key": "Down"},
+        {"frame": 10, "key": "Down"}, {"frame": 11, "key": "Enter"}])"));
+    ASSERT_EQ(lessons.exitCode, 0) << lessons.err;
+    EXPECT_EQ(lessons.values("push", "screen"), (std::vector<std::string>{"title", "lessons", "play"}));
+    EXPECT_EQ(lessons.values("level", "id"), (std::vector<std::string>{"lesson-wind"}));
+}
+
+TEST_F(TeachFlow, TTogglesTheTeachingOverlaySetting)
+{
+    const GameRun run = play(sourceFile("levels/1-1-first-flight.json") + " --frames 10" +
+                             script(R"([{"frame": 2, "key": "T"}, {"frame": 5, "key": "T"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.values("settings", "teaching_overlay"), (std::vector<std::string>{"true", "false"}));
+    // A scripted run never writes the player's files.
+    EXPECT_FALSE(std::filesystem::exists(data() / "settings.json"));
+}
+
+TEST_F(TeachFlow, TheWalkthroughHoldsTheWorldStill)
+{
+    // The reference shot of 3-1 wins the level in about 6 s; with the walkthrough started in flight and never left,
+    // the world stands still and nothing is decided.
+    const std::string level = sourceFile("levels/3-1-tailwind.json") + " --shot 30,30";
+    const GameRun free = play(level + " --frames 600");
+    ASSERT_EQ(free.exitCode, 0) << free.err;
+    EXPECT_EQ(free.values("finished", "won"), (std::vector<std::string>{"true"}));
+    const GameRun held = play(level + " --frames 600" + script(R"([{"frame": 100, "key": "K"},
+        {"frame": 110, "key": "Space"}, {"frame": 120, "key": "RBracket"}])"));
+    ASSERT_EQ(held.exitCode, 0) << held.err;
+    EXPECT_TRUE(held.values("finished", "won").empty());
+}
+
+TEST_F(TeachFlow, EveryTeachingKeyInFlightAndWhileAiming)
+{
+    const std::string shot = m_dir.file("teach.png");
+    const GameRun run =
+        play(sourceFile("levels/3-5-gusts.json") + " --shot 23.8,25.5 --frames 520 --screenshot '" + shot + "'" +
+             script(R"([{"frame": 2, "key": "T"}, {"frame": 3, "key": "G"}, {"frame": 4, "key": "I"},
+        {"frame": 5, "key": "LBracket"}, {"frame": 6, "key": "I"}, {"frame": 7, "key": "I"}, {"frame": 8, "key": "RBracket"},
+        {"frame": 90, "mouse": "move", "x": 400, "y": 400},
+        {"frame": 95, "mouse": "press", "button": "right", "x": 100, "y": 600},
+        {"frame": 99, "mouse": "move", "x": 500, "y": 420},
+        {"frame": 100, "mouse": "release", "button": "right", "x": 500, "y": 420},
+        {"frame": 110, "key": "K"}, {"frame": 111, "key": "Space"}, {"frame": 112, "key": "LBracket"},
+        {"frame": 113, "key": "LBracket"}, {"frame": 114, "key": "Space"}, {"frame": 115, "key": "Escape"},
+        {"frame": 200, "key": "C"}, {"frame": 500, "key": "K"}, {"frame": 505, "key": "Space"},
+        {"frame": 510, "key": "K"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.values("launch", "scripted"), (std::vector<std::string>{"true"}));
+    // Esc left the walkthrough instead of opening the pause menu.
+    const std::vector<std::string> pushed = run.values("push", "screen");
+    EXPECT_EQ(std::count(pushed.begin(), pushed.end(), "pause"), 0);
+    EXPECT_GT(std::filesystem::file_size(shot), 10000u);
+}
+
+} // namespace
+} // namespace abalike::test
