@@ -103,6 +103,7 @@ public:
 
     const LevelDef& level() const { return m_level; }
     const GameWorld& world() const { return *m_world; }
+    /// The catalog as this level sees it (its material overrides and custom bird applied, see levelCatalog).
     const Catalog& catalog() const { return m_catalog; }
 
 private:
@@ -111,7 +112,7 @@ private:
     void updatePhase();
 
     LevelDef m_level;
-    const Catalog& m_catalog;
+    Catalog m_catalog;
     WorldSettings m_settings;
     std::unique_ptr<GameWorld> m_world;
     Phase m_phase = Phase::Aiming;

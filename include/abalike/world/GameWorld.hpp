@@ -4,6 +4,7 @@
 #include <abalike/flight/Prediction.hpp>
 #include <abalike/level/LevelDef.hpp>
 #include <abalike/world/Ability.hpp>
+#include <abalike/world/BirdBody.hpp>
 #include <abalike/world/Catalog.hpp>
 #include <array>
 #include <memory>
@@ -104,6 +105,8 @@ public:
     /// Velocity iterations of the settle step (see WorldSettings::settleIterations).
     int settleIterations() const { return m_settleIterations; }
 
+    /// The body a bird collides with in this level (its own, or clamped where Box2D would misbehave).
+    BirdBody birdBody(const BirdType& bird) const;
     /// Puts a bird at s0 and starts its free flight under the model. Returns its entity index.
     int launchBird(const BirdType& bird, const FlightModel& model, const FlightState& s0);
     /// Takes the launched bird out of the world (split birds and eggs stay until they rest).
@@ -144,6 +147,7 @@ public:
     std::vector<DestroyedEvent> takeDestroyedEvents();
 
     const LevelDef& level() const { return m_level; }
+    /// The catalog as this level sees it (its material overrides and custom bird applied, see levelCatalog).
     const Catalog& catalog() const { return m_catalog; }
     b2World& box2d() { return *m_world; }
     const b2World& box2d() const { return *m_world; }
@@ -186,7 +190,7 @@ private:
     void dropEgg(AbilityUse& use);
 
     LevelDef m_level;
-    const Catalog& m_catalog;
+    Catalog m_catalog;
     WorldSettings m_settings;
     std::unique_ptr<b2World> m_world;
     std::unique_ptr<ContactRecorder> m_contacts;
@@ -197,6 +201,7 @@ private:
     int m_stackDepth = 0;
     int m_settleIterations = 0;
     int m_lastSubsteps = 1;
+    double m_lightestBodyKg = 0.0;    ///< lightest block or pig at the start; 0 when there is none
     std::array<double, 3> m_extent{}; ///< left, right, bottom: beyond these a body has left the world
 
     int m_birdIndex = -1;
