@@ -122,6 +122,12 @@ void readPigs(LevelReader& r, const json& root, LevelDef& level, const Catalog& 
                         "true for a scene without pigs)");
         return;
     }
+    if (it->is_array() && it->empty() && !level.sandbox)
+    {
+        r.error("/pigs", "wrong number of pigs (expected 1 to " + std::to_string(kMaxPigs) +
+                             ", got 0); only a \"sandbox\": true scene may have no pig");
+        return;
+    }
     if (!r.array(*it, "/pigs", level.sandbox ? 0 : 1, kMaxPigs, "pigs"))
         return;
     const auto pigTypes = names(catalog.pigs());
