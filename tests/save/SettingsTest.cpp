@@ -47,6 +47,47 @@ TEST(Settings, JsonRoundTrips)
     EXPECT_EQ(parseSettings(settingsToJson(settings)), settings);
 }
 
+TEST(Settings, AccessibilityAndDisplayKeysRoundTrip)
+{
+    Settings settings;
+    settings.mute = true;
+    settings.textScale = 1.75;
+    settings.palette = Palette::ColourBlindSafe;
+    settings.highContrast = true;
+    settings.reducedMotion = true;
+    settings.teachingOverlay = true;
+    const std::string text = settingsToJson(settings);
+    EXPECT_NE(text.find("\"palette\": \"colour_blind_safe\""), std::string::npos) << text;
+    EXPECT_EQ(parseSettings(text), settings);
+}
+
+TEST(Settings, AFileFromTheFirstReleaseStillReads)
+{
+    // settings.json as the first release wrote it: none of the newer keys.
+    const Settings old = parseSettings(R"({"format": 1, "music_volume": 0.5, "effects_volume": 0.25,
+        "show_preview": true, "show_actual_path": false, "fullscreen": false, "window": [1600, 900]})");
+    EXPECT_EQ(old.windowWidth, 1600u);
+    EXPECT_EQ(old.effectsVolume, 0.25);
+    EXPECT_FALSE(old.mute);
+    EXPECT_EQ(old.textScale, 1.0);
+    EXPECT_EQ(old.palette, Palette::Standard);
+    EXPECT_FALSE(old.highContrast);
+    EXPECT_FALSE(old.reducedMotion);
+    EXPECT_FALSE(old.teachingOverlay);
+}
+
+TEST(Settings, NewKeysAreCheckedToo)
+{
+    EXPECT_NE(errorOf(R"({"format": 1, "text_scale": 3})").find("/text_scale: expected a number from 1"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": 1, "text_scale": 0.5})").find("/text_scale"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": 1, "palette": "neon"})").find("/palette: expected \"standard\" or"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": 1, "palette": 2})").find("/palette"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": 1, "mute": "yes"})").find("/mute: expected true or false"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": 1, "teaching_overlay": 0})").find("/teaching_overlay"), std::string::npos);
+}
+
 TEST(Settings, WritesOnlyWhatItCanReadBack)
 {
     Settings settings;
@@ -54,7 +95,9 @@ TEST(Settings, WritesOnlyWhatItCanReadBack)
     settings.effectsVolume = 7.0;
     settings.windowWidth = 1;
     settings.windowHeight = 100000;
+    settings.textScale = 9.0;
     const Settings back = parseSettings(settingsToJson(settings));
+    EXPECT_EQ(back.textScale, 2.0);
     EXPECT_EQ(back.musicVolume, 0.0);
     EXPECT_EQ(back.effectsVolume, 1.0);
     EXPECT_EQ(back.windowWidth, 320u);

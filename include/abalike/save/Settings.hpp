@@ -6,6 +6,17 @@
 namespace abalike
 {
 
+/// Colours the game draws with. ColourBlindSafe avoids red/green distinctions and tells materials apart by
+/// pattern as well as colour.
+enum class Palette
+{
+    Standard,
+    ColourBlindSafe,
+};
+
+/// The name of a palette in settings.json ("standard", "colour_blind_safe").
+const char* paletteName(Palette palette);
+
 /// The player's preferences. Every field has a default, and a settings file may leave any of them out.
 struct Settings
 {
@@ -16,6 +27,12 @@ struct Settings
     bool fullscreen = false;
     unsigned windowWidth = 1280; ///< 320 to 7680 pixels
     unsigned windowHeight = 720; ///< 240 to 4320 pixels
+    bool mute = false;           ///< no sound at all, whatever the volumes
+    double textScale = 1.0;      ///< 1 to 2: every UI text is drawn this much larger
+    Palette palette = Palette::Standard;
+    bool highContrast = false;    ///< solid panels, stronger outlines, text contrast of at least 7:1
+    bool reducedMotion = false;   ///< no camera shake, fewer particles, no parallax drift
+    bool teachingOverlay = false; ///< force arrows, energy bars and the other teaching aids on the play screen
 
     bool operator==(const Settings&) const = default;
 };

@@ -153,7 +153,7 @@ void Hud::drawHint(sf::RenderTarget& target, sf::Vector2u size, float scale, con
     const float bottom = static_cast<float>(size.y) - 8.0f * scale;
     drawLabel(target, *m_font,
               utf8("Mouse: drag the bird back   \u00B7   Keys: \u2191\u2193 angle, \u2190\u2192 power, Space launch   "
-                   "\u00B7   R restart   \u00B7   Esc quit"),
+                   "\u00B7   R restart   \u00B7   Esc pause   \u00B7   F1 help"),
               {centre, bottom - keysHeight}, keysSize, palette::kTextDim, Align::Centre);
     if (!level.hints.empty())
         drawLabel(target, *m_font, utf8(level.hints.front()),

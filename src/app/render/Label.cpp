@@ -19,6 +19,30 @@ sf::Vector2f measureText(const sf::Font& font, const sf::String& text, unsigned 
     return {bounds.left + bounds.width, font.getLineSpacing(size)};
 }
 
+std::vector<std::string> wrapText(const sf::Font& font, std::string_view text, unsigned size, float maxWidth)
+{
+    std::vector<std::string> lines;
+    std::string line;
+    std::size_t start = 0;
+    while (start <= text.size())
+    {
+        const std::size_t end = std::min(text.find(' ', start), text.size());
+        const std::string word(text.substr(start, end - start));
+        const std::string candidate = line.empty() ? word : line + " " + word;
+        if (!line.empty() && measureText(font, utf8(candidate), size).x > maxWidth)
+        {
+            lines.push_back(line);
+            line = word;
+        }
+        else
+            line = candidate;
+        start = end + 1;
+    }
+    if (!line.empty())
+        lines.push_back(line);
+    return lines;
+}
+
 sf::FloatRect drawLabel(sf::RenderTarget& target, const sf::Font& font, const sf::String& text, sf::Vector2f position,
                         unsigned size, sf::Color colour, Align align)
 {

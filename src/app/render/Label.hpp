@@ -3,7 +3,9 @@
 #include <SFML/Graphics/Font.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <SFML/System/String.hpp>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace abalike::app
 {
@@ -21,6 +23,10 @@ sf::String utf8(std::string_view text);
 
 /// Size of a line of text without drawing it.
 sf::Vector2f measureText(const sf::Font& font, const sf::String& text, unsigned size);
+
+/// Breaks UTF-8 text into lines no wider than maxWidth at spaces (a single word wider than that gets a line of its
+/// own).
+std::vector<std::string> wrapText(const sf::Font& font, std::string_view text, unsigned size, float maxWidth);
 
 /// Draws one line of text with a soft shadow; `position` is the top of the line at the aligned point.
 /// Returns the bounds it covers.

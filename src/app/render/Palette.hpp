@@ -65,6 +65,15 @@ inline const sf::Color kText(255, 255, 255);
 inline const sf::Color kTextDim(200, 210, 225);
 inline const sf::Color kStar(255, 206, 40);
 inline const sf::Color kStarEmpty(70, 78, 96);
+inline const sf::Color kCard(24, 34, 56, 240);
+inline const sf::Color kMenuTop(22, 38, 70);
+inline const sf::Color kMenuBottom(40, 74, 118);
+inline const sf::Color kButton(30, 42, 68, 235);
+inline const sf::Color kButtonSelected(48, 74, 124, 245);
+inline const sf::Color kButtonOutline(120, 140, 176);
+inline const sf::Color kTileLocked(40, 44, 54, 235);
+inline const sf::Color kTextDisabled(150, 158, 172);
+inline const sf::Color kScrim(8, 12, 22, 150); ///< darkens the screen under a menu
 } // namespace palette
 
 /// Colours of a material by name; an unknown material gets a neutral sandstone.

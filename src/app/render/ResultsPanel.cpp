@@ -35,9 +35,9 @@ std::vector<ScoreLine> scoreLines(const ScoreBreakdown& score)
 }
 } // namespace
 
-void ResultsPanel::draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session, bool hasNextLevel)
+sf::FloatRect ResultsPanel::draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session, float scale,
+                                 float reserveBelow)
 {
-    const float scale = hudScale(size);
     const bool won = session.phase() == Phase::Won;
     const sf::Vector2f window(size);
 
@@ -50,7 +50,6 @@ void ResultsPanel::draw(sf::RenderTarget& target, sf::Vector2u size, const GameS
     const unsigned titleSize = static_cast<unsigned>(34.0f * scale);
     const unsigned lineSize = static_cast<unsigned>(19.0f * scale);
     const unsigned totalSize = static_cast<unsigned>(23.0f * scale);
-    const unsigned keysSize = static_cast<unsigned>(17.0f * scale);
     const float starRadius = 30.0f * scale;
     const float pad = 18.0f * scale;
     const auto spacing = [this](unsigned size)
@@ -61,10 +60,11 @@ void ResultsPanel::draw(sf::RenderTarget& target, sf::Vector2u size, const GameS
     const std::vector<ScoreLine> lines = scoreLines(score);
     const float contentHeight = spacing(titleSize) + 4.0f * scale + 2.6f * starRadius +
                                 static_cast<float>(lines.size()) * spacing(lineSize) + 10.0f * scale +
-                                spacing(totalSize) + 16.0f * scale + spacing(keysSize);
+                                spacing(totalSize);
     const float width = std::min(window.x - 20.0f, 470.0f * scale);
-    const float height = std::min(window.y - 20.0f, contentHeight + 2.0f * pad);
-    const sf::Vector2f topLeft(0.5f * (window.x - width), 0.5f * (window.y - height));
+    const float height = std::min(window.y - 20.0f - reserveBelow, contentHeight + 2.0f * pad);
+    const sf::Vector2f topLeft(0.5f * (window.x - width), std::max(10.0f, 0.5f * (window.y - height - reserveBelow)));
+    const sf::FloatRect cardRect(topLeft, {width, height});
     sf::RectangleShape card({width, height});
     card.setPosition(topLeft);
     card.setFillColor(sf::Color(24, 34, 56, 235));
@@ -97,7 +97,7 @@ void ResultsPanel::draw(sf::RenderTarget& target, sf::Vector2u size, const GameS
     m_stars.draw(target);
     y += 2.6f * starRadius;
     if (m_font == nullptr)
-        return;
+        return cardRect;
 
     const float lineHeight = m_font->getLineSpacing(lineSize);
     const float left = topLeft.x + 30.0f * scale;
@@ -115,10 +115,7 @@ void ResultsPanel::draw(sf::RenderTarget& target, sf::Vector2u size, const GameS
     y += 10.0f * scale;
     drawLabel(target, *m_font, utf8("Total"), {left, y}, totalSize, palette::kText);
     drawLabel(target, *m_font, utf8(formatPoints(score.total())), {right, y}, totalSize, palette::kStar, Align::Right);
-
-    y += spacing(totalSize) + 16.0f * scale;
-    const std::string keys = (won && hasNextLevel) ? "R: retry   N: next level   Esc: quit" : "R: retry   Esc: quit";
-    drawLabel(target, *m_font, utf8(keys), {centreX, y}, keysSize, palette::kText, Align::Centre);
+    return cardRect;
 }
 
 } // namespace abalike::app

@@ -9,14 +9,17 @@
 namespace abalike::app
 {
 
-/// The end-of-level card: won or lost, where the score came from, the stars earned and what to press next.
+/// The end-of-level card: won or lost, where the score came from and the stars earned.
 class ResultsPanel
 {
 public:
     /// font may be null: then only the panel and the stars are drawn.
     explicit ResultsPanel(const sf::Font* font) : m_font(font) {}
 
-    void draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session, bool hasNextLevel);
+    /// Draws the card centred in the window with reserveBelow pixels left free under it (for the menu); returns
+    /// where the card is.
+    sf::FloatRect draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session, float scale,
+                       float reserveBelow);
 
 private:
     const sf::Font* m_font;

@@ -1,16 +1,10 @@
 #include "screens/PlayScreen.hpp"
 
-#include "render/Font.hpp"
-#include "render/Screenshot.hpp"
+#include "screens/App.hpp"
+#include "screens/PauseScreen.hpp"
+#include "screens/ResultsScreen.hpp"
 
-#include <abalike/save/DataDirectory.hpp>
-
-#include <SFML/System/Clock.hpp>
-#include <SFML/Window/Event.hpp>
 #include <abalike/level/LevelIO.hpp>
-#include <algorithm>
-#include <cmath>
-#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -21,8 +15,6 @@ namespace abalike::app
 
 namespace
 {
-constexpr double kOfflineFrameS = 1.0 / 60.0;
-constexpr double kMaxFrameS = 0.25; // a slow frame cannot start a spiral of death
 constexpr float kLastShotFade = 0.45f;
 
 sf::Vector2f toVector(const std::array<double, 2>& p)
@@ -31,33 +23,66 @@ sf::Vector2f toVector(const std::array<double, 2>& p)
 }
 } // namespace
 
-PlayScreen::PlayScreen(sf::RenderWindow& window, const PlayOptions& options, std::vector<LevelDef> levels,
-                       const sf::Font* font)
-    : m_window(window), m_options(options), m_levels(std::move(levels)),
-      m_camera(Camera::fitLevel(m_levels.front(), Catalog::builtin(), window.getSize())), m_script(options.shots),
-      m_overlay(font), m_hud(font), m_results(font), m_reloadNotice(font)
+PlayScreen::PlayScreen(App& app, PlaySource source)
+    : m_app(app), m_source(std::move(source)),
+      m_camera(Camera::fitLevel(m_source.level, Catalog::builtin(), app.windowSize())), m_script(app.options().shots),
+      m_overlay(app.font()), m_hud(app.font()), m_reloadNotice(app.font()), m_layers(makePlayLayers(app))
 {
-    startLevel(0);
-    if (!options.frames && options.shots.empty())
-    {
-        m_store.emplace(defaultDataDirectory());
-        m_store->load();
-        for (const std::string& message : m_store->takeMessages())
-        {
-            std::cerr << "abalike: " << message << '\n';
-            m_reloadErrors.push_back(message);
-        }
-    }
+    startSession();
+    if (!m_source.path.empty())
+        m_watcher.emplace(m_source.path, Catalog::builtin());
 }
 
-void PlayScreen::startLevel(std::size_t index)
+PlayScreen::~PlayScreen() = default;
+
+void PlayScreen::startSession()
 {
-    m_levelIndex = index;
-    m_session = std::make_unique<GameSession>(m_levels[index], Catalog::builtin());
-    m_camera = Camera::fitLevel(m_session->level(), m_session->catalog(), m_window.getSize());
+    m_session = std::make_unique<GameSession>(m_source.level, Catalog::builtin());
+    m_camera = Camera::fitLevel(m_session->level(), m_session->catalog(), m_app.windowSize());
+    m_finishHandled = false;
+    m_frozen = false;
     resetAim();
-    m_watcher.emplace(m_options.levelPaths.at(index), Catalog::builtin());
     m_reloadErrors.clear();
+    m_app.trace().write("level", {{"id", m_source.level.id}, {"title", m_source.level.title}});
+    for (const auto& layer : m_layers)
+        layer->onLevelStart(*this);
+}
+
+void PlayScreen::restartLevel()
+{
+    m_session->restart();
+    m_finishHandled = false;
+    m_frozen = false;
+    resetAim();
+    m_app.trace().write("restart", {{"id", m_source.level.id}});
+    for (const auto& layer : m_layers)
+        layer->onLevelStart(*this);
+}
+
+std::optional<std::size_t> PlayScreen::nextLevelIndex() const
+{
+    if (!m_source.campaignIndex || *m_source.campaignIndex + 1 >= m_app.campaign().levels.size())
+        return std::nullopt;
+    return *m_source.campaignIndex + 1;
+}
+
+void PlayScreen::goToNextLevel()
+{
+    const std::optional<std::size_t> next = nextLevelIndex();
+    if (!next || m_session->phase() != Phase::Won)
+        return;
+    const CampaignLevel& level = m_app.campaign().levels[*next];
+    m_app.screens().replace(std::make_unique<PlayScreen>(m_app, PlaySource{level.level, level.path, next}));
+}
+
+void PlayScreen::resetAim()
+{
+    ++m_generation;
+    m_aim.reset();
+    m_requestedLaunch.reset();
+    m_abilityRequested = false;
+    m_scriptAbilityAtS.reset();
+    m_preview.reset();
 }
 
 void PlayScreen::pollLevelFile()
@@ -75,152 +100,45 @@ void PlayScreen::pollLevelFile()
         }
         return;
     }
-    m_levels[m_levelIndex] = std::move(*reload->level);
-    startLevel(m_levelIndex);
+    m_source.level = std::move(*reload->level);
+    startSession();
 }
 
-void PlayScreen::restartLevel()
+void PlayScreen::handleEvent(const sf::Event& event)
 {
-    m_session->restart();
-    resetAim();
-}
+    for (auto it = m_layers.rbegin(); it != m_layers.rend(); ++it)
+        if ((*it)->handleEvent(event, *this))
+            return;
+    if (event.type == sf::Event::KeyPressed)
+        handleKey(event.key);
 
-void PlayScreen::saveResultIfFinished()
-{
-    if (!m_store || m_resultSaved || !m_session->finished())
+    const bool click = event.type == sf::Event::MouseButtonPressed && event.mouseButton.button == sf::Mouse::Left;
+    const bool space = event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::Space;
+    if ((click || space) && m_session->canActivateAbility() && !m_scriptAbilityAtS)
+        m_abilityRequested = true;
+    if (!playerMayAim())
         return;
-    m_resultSaved = true;
-    Progress progress = m_store->progress();
-    const bool improved = progress.record(m_session->level().id, m_session->score().total(), m_session->stars());
-    std::vector<std::string> ids;
-    for (const LevelDef& level : m_levels)
-        ids.push_back(level.id);
-    if (unlockCampaign(progress, ids) || improved)
-        m_store->saveProgress(std::move(progress));
-    for (const std::string& message : m_store->takeMessages())
-    {
-        // A folder that cannot be written only means no saving: say so and keep playing.
-        std::cerr << "abalike: " << message << '\n';
-        m_reloadErrors.push_back(message);
-    }
+    if (m_aim.handleEvent(event, m_camera, toVector(m_session->launchPoint())))
+        m_requestedLaunch = ScriptedShot(m_aim.angleDeg(), aimSpeedMps());
 }
 
-void PlayScreen::resetAim()
+void PlayScreen::handleKey(const sf::Event::KeyEvent& key)
 {
-    m_resultSaved = false;
-    ++m_generation;
-    m_aim.reset();
-    m_requestedLaunch.reset();
-    m_abilityRequested = false;
-    m_scriptAbilityAtS.reset();
-    m_preview.reset();
-}
-
-int PlayScreen::run()
-{
-    const bool offline = m_options.frames.has_value();
-    if (!offline)
-        m_window.setVerticalSyncEnabled(true); // offline frames run as fast as they can (and Xvfb has no vsync)
-    const double dt = m_session->world().dt();
-    sf::Clock clock;
-    double accumulator = 0.0;
-    long long frame = 0;
-    long long offlineSteps = 0;
-
-    while (!(offline && frame >= *m_options.frames))
+    switch (key.code)
     {
-        if (!handleEvents())
-            break;
-        pollLevelFile();
-        saveResultIfFinished();
-        if (!m_session->notice().empty())
-        {
-            // The session reset itself (a body escaped to NaN): tell the player in the same panel as file errors.
-            std::cerr << "abalike: " << m_session->notice() << '\n';
-            m_reloadErrors = {m_session->notice()};
-            m_session->clearNotice();
-        }
-        int steps = 0;
-        if (offline)
-        {
-            // Exactly 1/60 s of game time per frame, whatever the wall clock says; counted in whole steps so
-            // rounding cannot drift.
-            const auto target =
-                static_cast<long long>(std::floor(static_cast<double>(frame + 1) * kOfflineFrameS / dt + 1e-9));
-            steps = static_cast<int>(target - offlineSteps);
-            offlineSteps = target;
-        }
-        else
-        {
-            accumulator += std::min(static_cast<double>(clock.restart().asSeconds()), kMaxFrameS);
-            while (accumulator >= dt)
-            {
-                accumulator -= dt;
-                ++steps;
-            }
-        }
-        for (int i = 0; i < steps; ++i)
-        {
-            if (const std::optional<int> exitCode = fixedStep())
-                return *exitCode;
-        }
-        ++frame;
-        render();
-        if (offline && frame >= *m_options.frames)
-            break; // the last frame stays in the back buffer for the screenshot
-        m_window.display();
-    }
-
-    int exitCode = 0;
-    if (!m_options.screenshotPath.empty())
-    {
-        render();
-        if (!saveScreenshot(m_window, m_options.screenshotPath))
-            exitCode = 2;
-    }
-    m_window.close();
-    return exitCode;
-}
-
-bool PlayScreen::handleEvents()
-{
-    sf::Event event{};
-    while (m_window.pollEvent(event))
-    {
-        if (event.type == sf::Event::Closed)
-            return false;
-        if (event.type == sf::Event::Resized)
-        {
-            m_window.setView(sf::View(sf::FloatRect(0.0f, 0.0f, static_cast<float>(event.size.width),
-                                                    static_cast<float>(event.size.height))));
-            m_camera = Camera::fitLevel(m_session->level(), m_session->catalog(), m_window.getSize());
-            continue;
-        }
-        if (event.type == sf::Event::KeyPressed)
-        {
-            if (event.key.code == sf::Keyboard::Escape)
-                return false;
-            handleKey(event.key.code);
-        }
-        const bool click = event.type == sf::Event::MouseButtonPressed && event.mouseButton.button == sf::Mouse::Left;
-        const bool space = event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::Space;
-        if ((click || space) && m_session->canActivateAbility() && !m_scriptAbilityAtS)
-            m_abilityRequested = true;
-        if (!playerMayAim())
-            continue;
-        if (m_aim.handleEvent(event, m_camera, toVector(m_session->launchPoint())))
-            m_requestedLaunch = ScriptedShot(m_aim.angleDeg(), aimSpeedMps());
-    }
-    return true;
-}
-
-void PlayScreen::handleKey(sf::Keyboard::Key key)
-{
-    if (key == sf::Keyboard::R)
+    case sf::Keyboard::Escape:
+    case sf::Keyboard::P:
+        m_app.screens().push(std::make_unique<PauseScreen>(m_app, *this));
+        break;
+    case sf::Keyboard::R:
         restartLevel();
-    const bool next = key == sf::Keyboard::N || key == sf::Keyboard::Enter;
-    if (next && m_session->phase() == Phase::Won && m_levelIndex + 1 < m_levels.size())
-        startLevel(m_levelIndex + 1);
+        break;
+    case sf::Keyboard::N:
+        goToNextLevel();
+        break;
+    default:
+        break;
+    }
 }
 
 bool PlayScreen::playerMayAim() const
@@ -229,7 +147,19 @@ bool PlayScreen::playerMayAim() const
            m_script.pending() == nullptr && !m_requestedLaunch;
 }
 
-std::optional<int> PlayScreen::fixedStep()
+void PlayScreen::fixedUpdate(double dtS)
+{
+    (void)dtS; // the session steps at its own fixed rate, which is the app's
+    if (!m_frozen)
+        physicsStep();
+}
+
+void PlayScreen::stepOnce()
+{
+    physicsStep();
+}
+
+void PlayScreen::physicsStep()
 {
     if (m_requestedLaunch)
     {
@@ -238,16 +168,18 @@ std::optional<int> PlayScreen::fixedStep()
         try
         {
             m_session->launch(shot.angleDeg, shot.speedMps);
+            m_app.trace().write("launch", {{"angle_deg", shot.angleDeg}, {"speed", shot.speedMps}});
         }
         catch (const LaunchError& error)
         {
-            std::cerr << "abalike: " << error.what() << "\n";
+            m_app.notify(error.what());
         }
     }
     if (m_abilityRequested)
     {
         m_abilityRequested = false;
-        m_session->activateAbility();
+        if (m_session->activateAbility())
+            m_app.trace().write("ability", {{"t", m_session->timeSinceLaunch()}});
     }
     // A scripted ability fires at the first step boundary at or after its time, as in `abalike simulate`.
     if (m_scriptAbilityAtS && m_session->phase() == Phase::Flying &&
@@ -257,19 +189,24 @@ std::optional<int> PlayScreen::fixedStep()
         m_scriptAbilityAtS.reset();
     }
     if (m_session->phase() == Phase::Aiming && m_script.pending() != nullptr)
-    {
-        if (const std::optional<int> exitCode = fireScriptedShot())
-            return exitCode;
-    }
+        fireScriptedShot();
     m_session->step();
-    return std::nullopt;
+    if (!m_session->notice().empty())
+    {
+        // The session reset itself (a body escaped to NaN): tell the player.
+        m_app.notify(m_session->notice());
+        m_session->clearNotice();
+    }
+    for (const auto& layer : m_layers)
+        layer->afterStep(*this);
+    finishIfDone();
 }
 
-std::optional<int> PlayScreen::fireScriptedShot()
+void PlayScreen::fireScriptedShot()
 {
     syncScriptedAim();
     if (!m_script.tick(m_session->world().dt()))
-        return std::nullopt;
+        return;
     const ScriptedShot shot = *m_script.pending();
     m_script.advance();
     ++m_scriptShotNumber;
@@ -280,14 +217,31 @@ std::optional<int> PlayScreen::fireScriptedShot()
             throw LaunchError("bird " + std::to_string(m_session->birdsUsed() + 1) + " (" + bird->name +
                               ") has no ability to use");
         m_session->launch(shot.angleDeg, shot.speedMps);
+        m_app.trace().write("launch", {{"angle_deg", shot.angleDeg}, {"speed", shot.speedMps}, {"scripted", true}});
     }
     catch (const LaunchError& error)
     {
         std::cerr << "abalike: shot " << m_scriptShotNumber << ": " << error.what() << "\n";
-        return 2;
+        m_app.quit(2);
+        return;
     }
     m_scriptAbilityAtS = shot.abilityAtS;
-    return std::nullopt;
+}
+
+void PlayScreen::finishIfDone()
+{
+    if (m_finishHandled || !m_session->finished())
+        return;
+    m_finishHandled = true;
+    const GameSession& session = *m_session;
+    m_app.trace().write("finished", {{"level", session.level().id},
+                                     {"won", session.phase() == Phase::Won},
+                                     {"score", session.score().total()},
+                                     {"stars", session.stars()}});
+    // Only campaign levels count towards progress; a scene from a file or the editor is not the player's record.
+    if (m_source.campaignIndex)
+        m_app.recordResult(session.level().id, session.score().total(), session.stars());
+    m_app.screens().push(std::make_unique<ResultsScreen>(m_app, *this));
 }
 
 void PlayScreen::syncScriptedAim()
@@ -307,7 +261,7 @@ double PlayScreen::aimSpeedMps() const
     return std::min(m_session->launchSpeedForForce(forceN), m_session->maxLaunchSpeed());
 }
 
-std::optional<AimReadout> PlayScreen::aimReadout() const
+std::optional<AimReadout> PlayScreen::aim() const
 {
     const BirdType* bird = m_session->currentBird();
     if (m_session->phase() != Phase::Aiming || bird == nullptr)
@@ -344,80 +298,42 @@ void PlayScreen::refreshPreview()
     }
 }
 
-void PlayScreen::render()
+void PlayScreen::frameUpdate(double frameS)
 {
+    pollLevelFile();
     syncScriptedAim();
     refreshPreview();
+    for (const auto& layer : m_layers)
+        layer->frameUpdate(*this, frameS);
+}
+
+void PlayScreen::onResize(sf::Vector2u size)
+{
+    m_camera = Camera::fitLevel(m_session->level(), m_session->catalog(), size);
+}
+
+void PlayScreen::draw(sf::RenderTarget& target)
+{
     const GameSession& session = *m_session;
-    m_world.drawBackground(m_window, m_camera, session);
+    m_world.drawBackground(target, m_camera, session);
 
     // While the next bird is aimed, the last shot stays as a faded reference.
     const ShotRecord* lastShot = session.shots().empty() ? nullptr : &session.shots().back();
     const float opacity = session.phase() == Phase::Aiming ? kLastShotFade : 1.0f;
     if (lastShot != nullptr)
-        m_overlay.drawShotPaths(m_window, m_camera, *lastShot, opacity);
-    m_world.drawForeground(m_window, m_camera, session, m_aim.pullOffset());
+        m_overlay.drawShotPaths(target, m_camera, *lastShot, opacity);
+    m_world.drawForeground(target, m_camera, session, m_aim.pullOffset());
     if (lastShot != nullptr)
-        m_overlay.drawShotMarkers(m_window, m_camera, *lastShot, opacity);
+        m_overlay.drawShotMarkers(target, m_camera, *lastShot, opacity);
     if (m_preview)
-        m_overlay.drawPreview(m_window, m_camera, *m_preview);
+        m_overlay.drawPreview(target, m_camera, *m_preview);
+    for (const auto& layer : m_layers)
+        layer->drawWorld(target, *this);
 
-    m_hud.draw(m_window, m_window.getSize(), session, aimReadout());
-    if (session.finished())
-        m_results.draw(m_window, m_window.getSize(), session, m_levelIndex + 1 < m_levels.size());
-    m_reloadNotice.draw(m_window, m_window.getSize(), m_reloadErrors);
-}
-
-int runPlay(const PlayOptions& options)
-{
-    if (options.levelPaths.empty())
-    {
-        std::cerr << "abalike: no level to play\n";
-        return 2;
-    }
-    std::vector<LevelDef> levels;
-    for (const std::string& path : options.levelPaths)
-    {
-        try
-        {
-            levels.push_back(loadLevel(path, Catalog::builtin()));
-        }
-        catch (const LevelLoadError& error)
-        {
-            for (const LevelIssue& issue : error.issues())
-                std::cerr << issue.format() << "\n";
-            if (error.issues().empty())
-                std::cerr << path << ": error: " << error.what() << "\n";
-            return 2;
-        }
-        catch (const std::exception& error)
-        {
-            std::cerr << path << ": error: " << error.what() << "\n";
-            return 2;
-        }
-    }
-
-#if defined(__unix__) && !defined(__APPLE__)
-    // SFML aborts the process when it cannot reach an X server; say why instead.
-    if (std::getenv("DISPLAY") == nullptr)
-    {
-        std::cerr << "abalike: no display (DISPLAY is not set); for offline frames run under xvfb-run\n";
-        return 2;
-    }
-#endif
-    const std::unique_ptr<sf::Font> font = loadGameFont();
-    sf::RenderWindow window(sf::VideoMode(options.width, options.height), "Angry Birds Alike",
-                            sf::Style::Titlebar | sf::Style::Close | sf::Style::Resize);
-    try
-    {
-        PlayScreen screen(window, options, std::move(levels), font.get());
-        return screen.run();
-    }
-    catch (const std::exception& error)
-    {
-        std::cerr << "abalike: " << error.what() << "\n";
-        return 2;
-    }
+    m_hud.draw(target, target.getSize(), session, aim());
+    for (const auto& layer : m_layers)
+        layer->drawScreen(target, *this);
+    m_reloadNotice.draw(target, target.getSize(), m_reloadErrors);
 }
 
 } // namespace abalike::app

@@ -6,33 +6,65 @@
 #include "render/Hud.hpp"
 #include "render/OverlayRenderer.hpp"
 #include "render/ReloadNotice.hpp"
-#include "render/ResultsPanel.hpp"
 #include "render/WorldRenderer.hpp"
-#include "screens/PlayOptions.hpp"
+#include "screens/PlayLayer.hpp"
+#include "screens/Screen.hpp"
 
-#include <SFML/Graphics/Font.hpp>
-#include <SFML/Graphics/RenderWindow.hpp>
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/LevelWatcher.hpp>
-#include <abalike/save/SaveStore.hpp>
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace abalike::app
 {
 
-/// `abalike play`: a window over a sequence of levels. Physics runs in fixed steps from an accumulator; input
-/// becomes aim and launch requests to the GameSession, which decides everything else.
-class PlayScreen
+class App;
+
+/// The level a play screen plays and where it came from.
+struct PlaySource
+{
+    LevelDef level;
+    std::string path;                         ///< the file, watched for live reload; empty for a scene held in memory
+    std::optional<std::size_t> campaignIndex; ///< its place in the campaign, so "next level" can follow
+};
+
+/// Playing one level: aim, launch, watch. Physics runs in the App's fixed steps; input becomes aim and launch
+/// requests to the GameSession, which decides everything else. Layers (PlayLayer) add what is drawn on top.
+class PlayScreen : public Screen, public PlayView
 {
 public:
-    PlayScreen(sf::RenderWindow& window, const PlayOptions& options, std::vector<LevelDef> levels,
-               const sf::Font* font);
+    static constexpr std::string_view kName = "play";
 
-    /// Plays until the window closes, Escape, or the frame budget is spent. Returns the exit code.
-    int run();
+    PlayScreen(App& app, PlaySource source);
+    ~PlayScreen() override;
+
+    std::string_view name() const override { return kName; }
+    void handleEvent(const sf::Event& event) override;
+    void fixedUpdate(double dtS) override;
+    void frameUpdate(double frameS) override;
+    void draw(sf::RenderTarget& target) override;
+    void onResize(sf::Vector2u size) override;
+
+    /// Starts the level again from its definition.
+    void restartLevel();
+    /// The next campaign level after this one, if there is one.
+    std::optional<std::size_t> nextLevelIndex() const;
+    /// Replaces this screen by the next campaign level (only after a win).
+    void goToNextLevel();
+    const PlaySource& source() const { return m_source; }
+
+    // PlayView
+    App& app() override { return m_app; }
+    const GameSession& session() const override { return *m_session; }
+    const Camera& camera() const override { return m_camera; }
+    const PredictedFlight* preview() const override { return m_preview ? &*m_preview : nullptr; }
+    std::optional<AimReadout> aim() const override;
+    bool frozen() const override { return m_frozen; }
+    void setFrozen(bool frozen) override { m_frozen = frozen; }
+    void stepOnce() override;
 
 private:
     /// What the preview was computed for; a new key means the aim or the bird changed.
@@ -45,37 +77,29 @@ private:
         bool operator==(const PreviewKey&) const = default;
     };
 
-    void startLevel(std::size_t index);
-    void restartLevel();
-    /// Records a finished level in the player's progress once per play (interactive play only).
-    void saveResultIfFinished();
+    void startSession();
     /// Forgets the aim, any pending launch and the preview (new level or restart).
     void resetAim();
-    /// Polls window events; false when the player asked to quit.
-    bool handleEvents();
-    void handleKey(sf::Keyboard::Key key);
+    void handleKey(const sf::Event::KeyEvent& key);
     bool playerMayAim() const;
-    /// One fixed step: pending launches and abilities, scripted shots, then the world. An exit code when it must
-    /// stop.
-    std::optional<int> fixedStep();
-    /// Fires the pending scripted shot once it has been shown long enough. An exit code when it cannot be fired.
-    std::optional<int> fireScriptedShot();
+    /// One physics step: pending launches and abilities, scripted shots, then the world.
+    void physicsStep();
+    /// Fires the pending scripted shot once it has been shown long enough.
+    void fireScriptedShot();
     void syncScriptedAim();
     double aimSpeedMps() const;
-    std::optional<AimReadout> aimReadout() const;
     void refreshPreview();
-    void render();
+    /// Once the level is decided: record the result and show the results card.
+    void finishIfDone();
     /// Live reload: a saved edit of the level file restarts the level; an invalid one keeps the last good version.
     void pollLevelFile();
 
-    sf::RenderWindow& m_window;
-    const PlayOptions& m_options;
-    std::vector<LevelDef> m_levels;
-    std::size_t m_levelIndex = 0;
+    App& m_app;
+    PlaySource m_source;
     std::unique_ptr<GameSession> m_session;
-    std::optional<SaveStore> m_store; ///< the player's progress; absent in scripted runs (--frames, --shot)
-    bool m_resultSaved = false;
     int m_generation = 0;
+    bool m_finishHandled = false;
+    bool m_frozen = false;
     Camera m_camera;
 
     AimController m_aim;
@@ -90,10 +114,10 @@ private:
     WorldRenderer m_world;
     OverlayRenderer m_overlay;
     Hud m_hud;
-    ResultsPanel m_results;
     std::optional<LevelWatcher> m_watcher;
     std::vector<std::string> m_reloadErrors; ///< problems of the last edit that did not load
     ReloadNotice m_reloadNotice;
+    std::vector<std::unique_ptr<PlayLayer>> m_layers;
 };
 
 } // namespace abalike::app

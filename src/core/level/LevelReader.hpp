@@ -58,6 +58,8 @@ public:
     /// The problems found, in the order they appear in the file.
     std::vector<LevelIssue> take();
     bool ok() const { return m_issues.empty(); }
+    /// How many problems were found so far.
+    std::size_t issueCount() const { return m_issues.size(); }
 
 private:
     std::string m_file;

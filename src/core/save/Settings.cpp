@@ -17,7 +17,15 @@ constexpr int kMinHeight = 240;
 constexpr int kMaxWidth = 7680;
 constexpr int kMaxHeight = 4320;
 
+constexpr double kMinTextScale = 1.0;
+constexpr double kMaxTextScale = 2.0;
+
 } // namespace
+
+const char* paletteName(Palette palette)
+{
+    return palette == Palette::ColourBlindSafe ? "colour_blind_safe" : "standard";
+}
 
 Settings parseSettings(std::string_view text)
 {
@@ -41,6 +49,26 @@ Settings parseSettings(std::string_view text)
         settings.windowWidth = static_cast<unsigned>(readInt((*it)[0], "/window/0", kMinWidth, kMaxWidth));
         settings.windowHeight = static_cast<unsigned>(readInt((*it)[1], "/window/1", kMinHeight, kMaxHeight));
     }
+    if (const auto it = root.find("mute"); it != root.end())
+        settings.mute = readBool(*it, "/mute");
+    if (const auto it = root.find("text_scale"); it != root.end())
+        settings.textScale = readNumber(*it, "/text_scale", kMinTextScale, kMaxTextScale);
+    if (const auto it = root.find("palette"); it != root.end())
+    {
+        const std::string& name = readString(*it, "/palette");
+        if (name == paletteName(Palette::Standard))
+            settings.palette = Palette::Standard;
+        else if (name == paletteName(Palette::ColourBlindSafe))
+            settings.palette = Palette::ColourBlindSafe;
+        else
+            throw SaveFormatError("/palette: expected \"standard\" or \"colour_blind_safe\"");
+    }
+    if (const auto it = root.find("high_contrast"); it != root.end())
+        settings.highContrast = readBool(*it, "/high_contrast");
+    if (const auto it = root.find("reduced_motion"); it != root.end())
+        settings.reducedMotion = readBool(*it, "/reduced_motion");
+    if (const auto it = root.find("teaching_overlay"); it != root.end())
+        settings.teachingOverlay = readBool(*it, "/teaching_overlay");
     return settings;
 }
 
@@ -60,6 +88,14 @@ std::string settingsToJson(const Settings& settings)
     root["fullscreen"] = settings.fullscreen;
     root["window"] = {std::clamp<unsigned>(settings.windowWidth, kMinWidth, kMaxWidth),
                       std::clamp<unsigned>(settings.windowHeight, kMinHeight, kMaxHeight)};
+    root["mute"] = settings.mute;
+    root["text_scale"] = settings.textScale >= kMinTextScale && settings.textScale <= kMaxTextScale
+                             ? settings.textScale
+                             : (settings.textScale > kMaxTextScale ? kMaxTextScale : kMinTextScale);
+    root["palette"] = paletteName(settings.palette);
+    root["high_contrast"] = settings.highContrast;
+    root["reduced_motion"] = settings.reducedMotion;
+    root["teaching_overlay"] = settings.teachingOverlay;
     return dumpSaveJson(root);
 }
 

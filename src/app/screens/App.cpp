@@ -1,0 +1,301 @@
+#include "screens/App.hpp"
+
+#include "render/Hud.hpp"
+#include "render/Label.hpp"
+#include "render/Palette.hpp"
+#include "render/Screenshot.hpp"
+#include "screens/HelpScreen.hpp"
+#include "screens/PlayScreen.hpp"
+#include "screens/TitleScreen.hpp"
+
+#include <SFML/Graphics/RectangleShape.hpp>
+#include <SFML/System/Clock.hpp>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+namespace abalike::app
+{
+
+namespace
+{
+constexpr double kMaxFrameS = 0.25; // a slow frame cannot start a spiral of death
+constexpr double kNoticeS = 6.0;
+constexpr std::size_t kMaxNotices = 4;
+} // namespace
+
+App::App(AppOptions options, Campaign campaign, SaveStore store, std::unique_ptr<sf::Font> font)
+    : m_options(std::move(options)), m_campaign(std::move(campaign)), m_font(std::move(font)),
+      m_script(m_options.script), m_store(std::move(store))
+{
+    // Scripted runs read the player's files (tests point ABALIKE_DATA_DIR at a fixture) but never write them.
+    m_settings = m_store->settings();
+    m_progress = m_store->progress();
+    if (unlockCampaign(m_progress, m_campaign.levelIds()) && !scripted())
+        m_store->saveProgress(m_progress);
+    takeStoreMessages();
+    if (!m_options.tracePath.empty() && !m_trace.open(m_options.tracePath))
+        std::cerr << "abalike: cannot write the trace to " << m_options.tracePath << "\n";
+    m_screens.setObserver(
+        [this](std::string_view change, std::string_view screen) {
+            m_trace.write(std::string(change), {{"screen", std::string(screen)}});
+        });
+}
+
+void App::openWindow()
+{
+    // --size wins over the saved size, and a size asked for on the command line is a window, not full screen.
+    const bool sizeGiven = m_options.width.has_value();
+    const unsigned width = sizeGiven ? *m_options.width : m_settings.windowWidth;
+    const unsigned height = sizeGiven ? *m_options.height : m_settings.windowHeight;
+    if (m_settings.fullscreen && !sizeGiven)
+        m_window.create(sf::VideoMode::getDesktopMode(), "Angry Birds Alike", sf::Style::Fullscreen);
+    else
+        m_window.create(sf::VideoMode(width, height), "Angry Birds Alike",
+                        sf::Style::Titlebar | sf::Style::Close | sf::Style::Resize);
+    m_window.setKeyRepeatEnabled(true);
+    // Offline frames run as fast as they can (and Xvfb has no vsync).
+    m_window.setVerticalSyncEnabled(!m_options.frames.has_value());
+}
+
+void App::openFirstScreen()
+{
+    if (m_options.level)
+    {
+        // A level given on the command line: straight into it. If it is a campaign level, "next" follows the
+        // campaign from there.
+        std::optional<std::size_t> index;
+        std::error_code ec;
+        for (std::size_t i = 0; i < m_campaign.levels.size() && !index; ++i)
+            if (std::filesystem::equivalent(m_campaign.levels[i].path, m_options.levelPath, ec))
+                index = i;
+        m_screens.push(std::make_unique<PlayScreen>(*this, PlaySource{*m_options.level, m_options.levelPath, index}));
+    }
+    else if (!m_options.shots.empty() && !m_campaign.levels.empty())
+    {
+        // Scripted shots without a level start the campaign's first level, as they always have.
+        const CampaignLevel& first = m_campaign.levels.front();
+        m_screens.push(std::make_unique<PlayScreen>(*this, PlaySource{first.level, first.path, 0}));
+    }
+    else
+        m_screens.push(std::make_unique<TitleScreen>(*this));
+    m_screens.applyPending();
+}
+
+int App::run()
+{
+    openWindow();
+    openFirstScreen();
+    const bool offline = m_options.frames.has_value();
+    sf::Clock clock;
+    while (!m_exitCode)
+    {
+        ++m_frame;
+        m_trace.setFrame(m_frame);
+        for (const sf::Event& event : m_script.eventsForFrame(static_cast<int>(m_frame)))
+            dispatch(event);
+        sf::Event event{};
+        while (m_window.pollEvent(event))
+            dispatch(event);
+
+        const double frameS = offline ? kStepS : std::min(static_cast<double>(clock.restart().asSeconds()), kMaxFrameS);
+        const int steps = stepsForFrame(frameS);
+        for (int i = 0; i < steps && !m_exitCode && m_screens.top() != nullptr; ++i)
+            m_screens.top()->fixedUpdate(kStepS);
+        if (Screen* top = m_screens.top())
+            top->frameUpdate(frameS);
+        for (Notice& notice : m_notices)
+            notice.shownS += frameS;
+        std::erase_if(m_notices, [](const Notice& n) { return n.shownS > kNoticeS; });
+
+        const bool lastFrame = offline && m_frame >= *m_options.frames;
+        if (!lastFrame)
+        {
+            drawFrame();
+            m_window.display();
+        }
+        m_screens.applyPending();
+        if (m_screens.empty())
+            quit(m_exitCode.value_or(0));
+        if (lastFrame)
+            break;
+    }
+
+    int exitCode = m_exitCode.value_or(0);
+    if (!m_options.screenshotPath.empty())
+    {
+        // The last frame as the screens are after its changes: what the player would see next.
+        drawFrame();
+        if (!saveScreenshot(m_window, m_options.screenshotPath))
+            exitCode = exitCode == 0 ? 2 : exitCode;
+    }
+    m_trace.write("exit", {{"code", exitCode}, {"screens", m_screens.names()}});
+    m_window.close();
+    return exitCode;
+}
+
+int App::stepsForFrame(double frameS)
+{
+    if (m_options.frames)
+    {
+        // Exactly 1/60 s of game time per frame, whatever the wall clock says; counted in whole steps so rounding
+        // cannot drift.
+        const auto target =
+            static_cast<long long>(std::floor(static_cast<double>(m_frame) * (1.0 / 60.0) / kStepS + 1e-9));
+        const auto steps = static_cast<int>(target - m_offlineSteps);
+        m_offlineSteps = target;
+        return steps;
+    }
+    m_accumulator += frameS;
+    int steps = 0;
+    while (m_accumulator >= kStepS)
+    {
+        m_accumulator -= kStepS;
+        ++steps;
+    }
+    return steps;
+}
+
+void App::dispatch(const sf::Event& event)
+{
+    m_input.apply(event);
+    if (handleGlobal(event))
+        return;
+    if (Screen* top = m_screens.top())
+        top->handleEvent(event);
+}
+
+bool App::handleGlobal(const sf::Event& event)
+{
+    switch (event.type)
+    {
+    case sf::Event::Closed:
+        quit(0);
+        return true;
+    case sf::Event::Resized:
+    {
+        const sf::Vector2u size(event.size.width, event.size.height);
+        m_window.setView(sf::View(sf::FloatRect(0.0f, 0.0f, static_cast<float>(size.x), static_cast<float>(size.y))));
+        m_screens.resize(size);
+        return true;
+    }
+    case sf::Event::KeyPressed:
+        if (event.key.code == sf::Keyboard::F1)
+        {
+            toggleHelp();
+            return true;
+        }
+        return false;
+    case sf::Event::TextEntered:
+    {
+        const Screen* top = m_screens.top();
+        if (event.text.unicode == '?' && (top == nullptr || !top->wantsTextInput()))
+        {
+            toggleHelp();
+            return true;
+        }
+        return false;
+    }
+    default:
+        return false;
+    }
+}
+
+void App::toggleHelp()
+{
+    const Screen* top = m_screens.top();
+    if (top != nullptr && top->name() == HelpScreen::kName)
+        m_screens.pop();
+    else
+        m_screens.push(std::make_unique<HelpScreen>(*this));
+}
+
+void App::drawFrame()
+{
+    m_window.clear(palette::kSkyBottom);
+    m_screens.draw(m_window);
+    drawNotices();
+}
+
+void App::drawNotices()
+{
+    if (m_font == nullptr || m_notices.empty())
+        return;
+    const unsigned size = textSize(17.0f);
+    const float pad = 8.0f * uiScale();
+    const float lineHeight = m_font->getLineSpacing(size);
+    float y =
+        static_cast<float>(windowSize().y) - 70.0f * uiScale() - lineHeight * static_cast<float>(m_notices.size());
+    const float centre = 0.5f * static_cast<float>(windowSize().x);
+    for (const Notice& notice : m_notices)
+    {
+        const sf::String text = utf8(notice.text);
+        const float width = measureText(*m_font, text, size).x + 2.0f * pad;
+        sf::RectangleShape box({width, lineHeight + pad});
+        box.setPosition(centre - 0.5f * width, y - 0.5f * pad);
+        box.setFillColor(palette::kPanel);
+        m_window.draw(box);
+        drawLabel(m_window, *m_font, text, {centre, y}, size, palette::kText, Align::Centre);
+        y += lineHeight + pad;
+    }
+}
+
+void App::updateSettings(const Settings& settings)
+{
+    m_settings = settings;
+    m_trace.write("settings", nlohmann::json::parse(settingsToJson(settings)));
+    if (!scripted() && m_store)
+        m_store->saveSettings(settings);
+    takeStoreMessages();
+}
+
+void App::recordResult(const std::string& levelId, int score, int stars)
+{
+    const bool improved = m_progress.record(levelId, score, stars);
+    const bool unlocked = unlockCampaign(m_progress, m_campaign.levelIds());
+    m_trace.write("result", {{"level", levelId}, {"score", score}, {"stars", stars}});
+    if ((improved || unlocked) && !scripted() && m_store)
+        m_store->saveProgress(m_progress);
+    takeStoreMessages();
+}
+
+bool App::isUnlocked(const std::string& levelId) const
+{
+    return m_progress.isUnlocked(levelId);
+}
+
+void App::notify(const std::string& message)
+{
+    std::cerr << "abalike: " << message << '\n';
+    m_trace.write("notice", {{"text", message}});
+    m_notices.push_back({message, 0.0});
+    if (m_notices.size() > kMaxNotices)
+        m_notices.erase(m_notices.begin());
+}
+
+void App::quit(int exitCode)
+{
+    if (!m_exitCode)
+        m_exitCode = exitCode;
+}
+
+float App::uiScale() const
+{
+    return hudScale(m_window.getSize()) * static_cast<float>(m_settings.textScale);
+}
+
+unsigned App::textSize(float nominal) const
+{
+    return static_cast<unsigned>(std::max(9.0f, std::round(nominal * uiScale())));
+}
+
+void App::takeStoreMessages()
+{
+    if (!m_store)
+        return;
+    for (const std::string& message : m_store->takeMessages())
+        notify(message);
+}
+
+} // namespace abalike::app

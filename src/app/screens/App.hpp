@@ -1,0 +1,114 @@
+#pragma once
+
+#include "input/InputState.hpp"
+#include "input/ScriptedInput.hpp"
+#include "screens/AppOptions.hpp"
+#include "screens/ScreenStack.hpp"
+#include "screens/Trace.hpp"
+
+#include <SFML/Graphics/Font.hpp>
+#include <SFML/Graphics/RenderWindow.hpp>
+#include <abalike/level/Campaign.hpp>
+#include <abalike/level/LevelDef.hpp>
+#include <abalike/save/SaveStore.hpp>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace abalike::app
+{
+
+/// The game application: the window, the fixed-step loop, the screen stack and what every screen shares (font,
+/// input, settings, saved progress, the campaign). Screens hold an App& and ask it for these.
+///
+/// Each frame: the script's events for this frame, then the window's events, go to the top screen through the same
+/// path; the physics steps due (exactly one 1/60 s step per frame in an offline run with --frames, otherwise from
+/// an accumulator capped at 0.25 s) go to the top screen; then it draws the stack, and only after the frame are
+/// screen changes applied.
+class App
+{
+public:
+    /// store: the player's files, already loaded (its messages are shown once the game runs).
+    App(AppOptions options, Campaign campaign, SaveStore store, std::unique_ptr<sf::Font> font);
+
+    /// Opens the first screen and plays until the window closes, quit() is called, or the frame budget is spent.
+    /// Returns the exit code.
+    int run();
+
+    const AppOptions& options() const { return m_options; }
+    sf::RenderWindow& window() { return m_window; }
+    sf::Vector2u windowSize() const { return m_window.getSize(); }
+    /// Null when no font could be loaded; screens then draw without text.
+    const sf::Font* font() const { return m_font.get(); }
+    ScreenStack& screens() { return m_screens; }
+    const InputState& input() const { return m_input; }
+    Trace& trace() { return m_trace; }
+    /// Frames drawn so far, counting from 1 for the first.
+    long long frame() const { return m_frame; }
+    /// Seconds of one physics step.
+    double stepSeconds() const { return kStepS; }
+
+    const Campaign& campaign() const { return m_campaign; }
+    /// True when scripted (--frames, --script, --shot): the player's files are read but never written.
+    bool scripted() const { return m_options.scripted(); }
+
+    const Settings& settings() const { return m_settings; }
+    /// Applies new settings and saves them (not in scripted runs).
+    void updateSettings(const Settings& settings);
+    const Progress& progress() const { return m_progress; }
+    /// Records a finished level (best score and stars, unlocks the next) and saves it (not in scripted runs).
+    void recordResult(const std::string& levelId, int score, int stars);
+    /// Whether the player may start this campaign level.
+    bool isUnlocked(const std::string& levelId) const;
+
+    /// A one-line message for the player, shown for a few seconds over every screen (and printed on stderr).
+    void notify(const std::string& message);
+    /// Ends the run after this frame with this exit code.
+    void quit(int exitCode = 0);
+
+    /// UI text size multiplier: the window's size against 1280x720 times the player's text scale.
+    float uiScale() const;
+    /// Point size for UI text of a nominal size at 1280x720 and 100 % text scale.
+    unsigned textSize(float nominal) const;
+
+    static constexpr double kStepS = 1.0 / 60.0;
+
+private:
+    void openWindow();
+    void openFirstScreen();
+    void dispatch(const sf::Event& event);
+    void toggleHelp();
+    /// True when the app handled the event itself (window close, resize, global keys).
+    bool handleGlobal(const sf::Event& event);
+    int stepsForFrame(double frameS);
+    void drawFrame();
+    void drawNotices();
+    void takeStoreMessages();
+
+    AppOptions m_options;
+    Campaign m_campaign;
+    std::unique_ptr<sf::Font> m_font;
+    sf::RenderWindow m_window;
+    ScreenStack m_screens;
+    InputState m_input;
+    ScriptedInput m_script;
+    Trace m_trace;
+    std::optional<SaveStore> m_store;
+    Settings m_settings;
+    Progress m_progress;
+
+    struct Notice
+    {
+        std::string text;
+        double shownS = 0.0;
+    };
+    std::vector<Notice> m_notices;
+
+    long long m_frame = 0;
+    long long m_offlineSteps = 0;
+    double m_accumulator = 0.0;
+    std::optional<int> m_exitCode;
+};
+
+} // namespace abalike::app

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <abalike/game/GameSession.hpp>
+#include <abalike/level/LevelDef.hpp>
+#include <abalike/script/InputScript.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace abalike::app
+{
+
+/// What `abalike play` was asked to do.
+struct AppOptions
+{
+    std::string levelPath;           ///< play this level file directly; empty: the campaign (title screen)
+    std::optional<LevelDef> level;   ///< that level, loaded and checked before the window opens
+    std::string campaignPath;        ///< the campaign manifest (levels/campaign.json)
+    std::optional<int> frames;       ///< exit after this many frames; the clock then advances 1/60 s per frame
+    std::string screenshotPath;      ///< save the last frame here (PNG) when not empty
+    std::vector<ScriptedShot> shots; ///< fired in order whenever a bird is ready
+    InputScript script;              ///< timed input events (`--script`), checked before the window opens
+    bool hasScript = false;
+    std::string tracePath;         ///< write what happens (screens, levels, shots) as JSON lines here
+    std::optional<unsigned> width; ///< `--size` wins over the saved window size
+    std::optional<unsigned> height;
+
+    /// A scripted run (frames, input script or shots) reads the player's files but never writes them.
+    bool scripted() const { return frames.has_value() || hasScript || !shots.empty(); }
+};
+
+} // namespace abalike::app

@@ -1,0 +1,80 @@
+#include "screens/PauseScreen.hpp"
+
+#include "render/Label.hpp"
+#include "render/Palette.hpp"
+#include "screens/App.hpp"
+#include "screens/HelpScreen.hpp"
+#include "screens/Navigation.hpp"
+#include "screens/PlayScreen.hpp"
+#include "ui/Card.hpp"
+
+namespace abalike::app
+{
+
+PauseScreen::PauseScreen(App& app, PlayScreen& play) : m_app(app), m_play(play)
+{
+    m_menu.setItems({
+        {"resume", "Resume", true},
+        {"restart", "Restart level", true},
+        {"help", "Controls", true},
+        {"levels", "Level select", !m_app.campaign().levels.empty()},
+        {"quit", "Quit game", true},
+    });
+}
+
+void PauseScreen::handleEvent(const sf::Event& event)
+{
+    if (event.type == sf::Event::KeyPressed &&
+        (event.key.code == sf::Keyboard::Escape || event.key.code == sf::Keyboard::P))
+    {
+        activate("resume");
+        return;
+    }
+    if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::R)
+    {
+        activate("restart");
+        return;
+    }
+    if (const std::optional<std::string> id = m_menu.handleEvent(event))
+        activate(*id);
+}
+
+void PauseScreen::activate(const std::string& id)
+{
+    if (id == "resume")
+        m_app.screens().pop();
+    else if (id == "restart")
+    {
+        m_play.restartLevel();
+        m_app.screens().pop();
+    }
+    else if (id == "help")
+        m_app.screens().push(std::make_unique<HelpScreen>(m_app));
+    else if (id == "levels")
+        openLevelSelect(m_app);
+    else if (id == "quit")
+        m_app.quit(0);
+}
+
+void PauseScreen::draw(sf::RenderTarget& target)
+{
+    drawScrim(target);
+    const float scale = m_app.uiScale();
+    const sf::Vector2f window(target.getSize());
+    const unsigned titleSize = m_app.textSize(36.0f);
+    const unsigned itemSize = m_app.textSize(22.0f);
+    const float width = std::min(window.x - 40.0f, 420.0f * scale);
+    const float titleHeight = m_app.font() != nullptr ? m_app.font()->getLineSpacing(titleSize) : 0.0f;
+    const float itemHeight = (m_app.font() != nullptr ? m_app.font()->getLineSpacing(itemSize) : 20.0f) + 22.0f * scale;
+    const float height = titleHeight + static_cast<float>(m_menu.items().size()) * itemHeight + 60.0f * scale;
+    const sf::FloatRect card(0.5f * (window.x - width), 0.5f * (window.y - height), width, height);
+    drawCard(target, card, scale, palette::kButtonOutline);
+    float y = card.top + 20.0f * scale;
+    if (m_app.font() != nullptr)
+        drawLabel(target, *m_app.font(), utf8("Paused"), {card.left + 0.5f * width, y}, titleSize, palette::kText,
+                  Align::Centre);
+    y += titleHeight + 12.0f * scale;
+    m_menu.draw(target, m_app.font(), card.left + 0.5f * width, y, width - 60.0f * scale, itemSize, scale);
+}
+
+} // namespace abalike::app

@@ -1,0 +1,34 @@
+#pragma once
+
+#include "screens/Screen.hpp"
+#include "ui/MenuList.hpp"
+
+namespace abalike::app
+{
+
+class App;
+class PlayScreen;
+
+/// The pause menu over a level (Esc or P): resume, restart, help, level select, quit. The level stands still
+/// underneath until it is resumed.
+class PauseScreen : public Screen
+{
+public:
+    static constexpr std::string_view kName = "pause";
+
+    PauseScreen(App& app, PlayScreen& play);
+
+    std::string_view name() const override { return kName; }
+    bool isOverlay() const override { return true; }
+    void handleEvent(const sf::Event& event) override;
+    void draw(sf::RenderTarget& target) override;
+
+private:
+    void activate(const std::string& id);
+
+    App& m_app;
+    PlayScreen& m_play;
+    MenuList m_menu;
+};
+
+} // namespace abalike::app

@@ -1,0 +1,83 @@
+#pragma once
+
+#include "render/Camera.hpp"
+#include "render/Hud.hpp"
+
+#include <SFML/Graphics/RenderTarget.hpp>
+#include <SFML/Window/Event.hpp>
+#include <abalike/flight/Prediction.hpp>
+#include <abalike/game/GameSession.hpp>
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace abalike::app
+{
+
+class App;
+
+/// What a layer on the play screen can see and do. The play screen implements it.
+class PlayView
+{
+public:
+    virtual ~PlayView() = default;
+
+    virtual App& app() = 0;
+    virtual const GameSession& session() const = 0;
+    virtual const Camera& camera() const = 0;
+    /// The RK4 preview of the current aim while aiming, else null.
+    virtual const PredictedFlight* preview() const = 0;
+    /// The current aim while a bird waits in the slingshot.
+    virtual std::optional<AimReadout> aim() const = 0;
+
+    /// While frozen the play screen takes no physics steps (the RK4 walkthrough pauses a flight this way).
+    virtual bool frozen() const = 0;
+    virtual void setFrozen(bool frozen) = 0;
+    /// Takes one physics step now, frozen or not.
+    virtual void stepOnce() = 0;
+};
+
+/// Something drawn over the play screen and given its input first: the teaching overlay, path history, tools.
+/// Layers are made once per play screen by makePlayLayers() and kept across restarts and levels.
+class PlayLayer
+{
+public:
+    virtual ~PlayLayer() = default;
+
+    virtual std::string_view name() const = 0;
+    /// Offered every event before the play screen sees it (top layer first); true consumes it.
+    virtual bool handleEvent(const sf::Event& event, PlayView& view)
+    {
+        (void)event;
+        (void)view;
+        return false;
+    }
+    /// A level started or restarted.
+    virtual void onLevelStart(PlayView& view) { (void)view; }
+    /// After each physics step.
+    virtual void afterStep(PlayView& view) { (void)view; }
+    /// Once per frame before drawing, with the frame's real duration.
+    virtual void frameUpdate(PlayView& view, double frameS)
+    {
+        (void)view;
+        (void)frameS;
+    }
+    /// Drawn with the world, after the bodies and before the HUD, in window pixels (use view.camera()).
+    virtual void drawWorld(sf::RenderTarget& target, PlayView& view)
+    {
+        (void)target;
+        (void)view;
+    }
+    /// Drawn over the HUD, in window pixels (panels, charts).
+    virtual void drawScreen(sf::RenderTarget& target, PlayView& view)
+    {
+        (void)target;
+        (void)view;
+    }
+};
+
+/// The layers every play screen gets, bottom first. Add a new layer in PlayLayers.cpp.
+std::vector<std::unique_ptr<PlayLayer>> makePlayLayers(App& app);
+
+} // namespace abalike::app

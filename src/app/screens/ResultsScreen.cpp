@@ -1,0 +1,72 @@
+#include "screens/ResultsScreen.hpp"
+
+#include "screens/App.hpp"
+#include "screens/Navigation.hpp"
+#include "screens/PlayScreen.hpp"
+
+namespace abalike::app
+{
+
+ResultsScreen::ResultsScreen(App& app, PlayScreen& play) : m_app(app), m_play(play), m_panel(app.font())
+{
+    const bool won = play.session().phase() == Phase::Won;
+    const bool hasNext = won && play.nextLevelIndex().has_value();
+    std::vector<MenuItem> items;
+    if (hasNext)
+        items.push_back({"next", "Next level", true});
+    items.push_back({"retry", "Retry", true});
+    items.push_back({"levels", "Level select", !app.campaign().levels.empty()});
+    m_menu.setItems(std::move(items));
+}
+
+void ResultsScreen::handleEvent(const sf::Event& event)
+{
+    if (event.type == sf::Event::KeyPressed)
+    {
+        switch (event.key.code)
+        {
+        case sf::Keyboard::R:
+            activate("retry");
+            return;
+        case sf::Keyboard::N:
+            activate("next");
+            return;
+        case sf::Keyboard::Escape:
+            activate("levels");
+            return;
+        default:
+            break;
+        }
+    }
+    if (const std::optional<std::string> id = m_menu.handleEvent(event))
+        activate(*id);
+}
+
+void ResultsScreen::activate(const std::string& id)
+{
+    if (id == "retry")
+    {
+        m_play.restartLevel();
+        m_app.screens().pop();
+    }
+    else if (id == "next" && m_play.nextLevelIndex() && m_play.session().phase() == Phase::Won)
+    {
+        m_app.screens().pop();
+        m_play.goToNextLevel();
+    }
+    else if (id == "levels" && !m_app.campaign().levels.empty())
+        openLevelSelect(m_app);
+}
+
+void ResultsScreen::draw(sf::RenderTarget& target)
+{
+    const float scale = m_app.uiScale();
+    const unsigned itemSize = m_app.textSize(20.0f);
+    const float lineHeight = m_app.font() != nullptr ? m_app.font()->getLineSpacing(itemSize) : 20.0f;
+    const float menuHeight = static_cast<float>(m_menu.items().size()) * (lineHeight + 22.0f * scale) + 12.0f * scale;
+    const sf::FloatRect card = m_panel.draw(target, target.getSize(), m_play.session(), scale, menuHeight);
+    m_menu.draw(target, m_app.font(), card.left + 0.5f * card.width, card.top + card.height + 12.0f * scale,
+                std::min(card.width, 300.0f * scale), itemSize, scale);
+}
+
+} // namespace abalike::app

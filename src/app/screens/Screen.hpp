@@ -1,0 +1,41 @@
+#pragma once
+
+#include <SFML/Graphics/RenderTarget.hpp>
+#include <SFML/Window/Event.hpp>
+#include <string_view>
+
+namespace abalike::app
+{
+
+/// One screen of the game (title, level select, play, pause, ...). Screens live on the App's ScreenStack: only
+/// the top one gets input and updates; drawing starts at the topmost screen that is not an overlay, so an
+/// overlay (pause, help, results) is drawn over the screen it covers, which stands still under it.
+class Screen
+{
+public:
+    virtual ~Screen() = default;
+
+    /// Short, stable name for traces and tests ("title", "level-select", "play", "pause", ...).
+    virtual std::string_view name() const = 0;
+    /// Drawn over the screen below it instead of hiding it.
+    virtual bool isOverlay() const { return false; }
+    /// True while the screen takes typed text (a text field has focus): the app then leaves '?' and other
+    /// printable keys to it instead of treating them as shortcuts.
+    virtual bool wantsTextInput() const { return false; }
+
+    /// A window event, real or scripted (they arrive the same way). Top screen only.
+    virtual void handleEvent(const sf::Event& event) = 0;
+    /// One fixed physics step of dtS seconds. Top screen only, so an overlay pauses what is under it.
+    virtual void fixedUpdate(double dtS) { (void)dtS; }
+    /// Once per drawn frame, before drawing, with the time since the last frame (animation, camera). Top only.
+    virtual void frameUpdate(double frameS) { (void)frameS; }
+    /// Draws the screen in window pixels (the window's view maps one unit to one pixel).
+    virtual void draw(sf::RenderTarget& target) = 0;
+
+    /// The window has a new size. Every screen on the stack is told.
+    virtual void onResize(sf::Vector2u size) { (void)size; }
+    /// The screen is on top again after the one above it left.
+    virtual void onResume() {}
+};
+
+} // namespace abalike::app

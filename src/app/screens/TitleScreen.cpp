@@ -1,0 +1,93 @@
+#include "screens/TitleScreen.hpp"
+
+#include "render/Label.hpp"
+#include "render/Palette.hpp"
+#include "screens/App.hpp"
+#include "screens/HelpScreen.hpp"
+#include "screens/LevelSelectScreen.hpp"
+#include "screens/Navigation.hpp"
+#include "ui/Card.hpp"
+
+namespace abalike::app
+{
+
+namespace
+{
+LevelDef sceneryLevel(const App& app)
+{
+    if (!app.campaign().levels.empty())
+        return app.campaign().levels.front().level;
+    LevelDef empty;
+    empty.id = "title";
+    return empty;
+}
+} // namespace
+
+TitleScreen::TitleScreen(App& app)
+    : m_app(app), m_scenery(std::make_unique<GameSession>(sceneryLevel(app), Catalog::builtin())),
+      m_camera(Camera::fitLevel(m_scenery->level(), Catalog::builtin(), app.windowSize()))
+{
+    const bool hasCampaign = !app.campaign().levels.empty();
+    const bool started = hasCampaign && app.progress().levels.count(app.campaign().levels.front().level.id) > 0;
+    m_menu.setItems({
+        {"play", started ? "Continue" : "Play", hasCampaign},
+        {"levels", "Level select", hasCampaign},
+        {"help", "Controls", true},
+        {"quit", "Quit", true},
+    });
+}
+
+void TitleScreen::handleEvent(const sf::Event& event)
+{
+    if (const std::optional<std::string> id = m_menu.handleEvent(event))
+        activate(*id);
+}
+
+void TitleScreen::activate(const std::string& id)
+{
+    if (id == "play")
+        playCampaignLevel(m_app, continueLevel(m_app));
+    else if (id == "levels")
+        m_app.screens().push(std::make_unique<LevelSelectScreen>(m_app));
+    else if (id == "help")
+        m_app.screens().push(std::make_unique<HelpScreen>(m_app));
+    else if (id == "quit")
+        m_app.quit(0);
+}
+
+void TitleScreen::onResize(sf::Vector2u size)
+{
+    m_camera = Camera::fitLevel(m_scenery->level(), Catalog::builtin(), size);
+}
+
+void TitleScreen::draw(sf::RenderTarget& target)
+{
+    m_world.drawBackground(target, m_camera, *m_scenery);
+    m_world.drawForeground(target, m_camera, *m_scenery, {0.0f, 0.0f});
+    drawScrim(target);
+
+    const float scale = m_app.uiScale();
+    const sf::Vector2f window(target.getSize());
+    const float centre = 0.5f * window.x;
+    float y = 0.12f * window.y;
+    if (const sf::Font* font = m_app.font())
+    {
+        const unsigned titleSize = m_app.textSize(64.0f);
+        const unsigned subtitleSize = m_app.textSize(22.0f);
+        drawLabel(target, *font, utf8("Angry Birds Alike"), {centre, y}, titleSize, palette::kStar, Align::Centre);
+        y += font->getLineSpacing(titleSize);
+        drawLabel(target, *font, utf8("A slingshot physics game, and a physics lesson"), {centre, y}, subtitleSize,
+                  palette::kText, Align::Centre);
+        y += font->getLineSpacing(subtitleSize) + 30.0f * scale;
+    }
+    m_menu.draw(target, m_app.font(), centre, y, std::min(window.x - 40.0f, 360.0f * scale), m_app.textSize(24.0f),
+                scale);
+    if (const sf::Font* font = m_app.font())
+    {
+        const unsigned hintSize = m_app.textSize(16.0f);
+        drawLabel(target, *font, utf8("F1 or ?: controls   \u00B7   arrows and Enter, or the mouse"),
+                  {centre, window.y - 36.0f * scale}, hintSize, palette::kText, Align::Centre);
+    }
+}
+
+} // namespace abalike::app

@@ -1,0 +1,145 @@
+// The game's screens driven by scripted input (`abalike play --script`) under a virtual display, checked through
+// the run's trace: which screens were pushed and popped, which levels started, what was saved.
+#include "RunGame.hpp"
+
+#include <gtest/gtest.h>
+
+namespace abalike::test
+{
+namespace
+{
+
+const std::string kSize = " --size 1280x720";
+
+class ScreenFlow : public ::testing::Test
+{
+protected:
+    ScreenFlow() : m_dir(::testing::UnitTest::GetInstance()->current_test_info()->name())
+    {
+        std::filesystem::create_directories(data());
+    }
+    std::filesystem::path data() const { return m_dir.path() / "data"; }
+    std::string script(const std::string& json) const { return " --script '" + m_dir.write("script.json", json) + "'"; }
+    GameRun play(const std::string& args) const { return runGame("play " + args + kSize, data()); }
+
+    ScratchDir m_dir;
+};
+
+TEST_F(ScreenFlow, NoLevelOpensTheTitleAlsoWithFramesAndScripts)
+{
+    const GameRun run = play("--frames 5");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"title"}));
+    EXPECT_TRUE(run.values("level", "id").empty()) << "no level starts by itself";
+}
+
+TEST_F(ScreenFlow, PlayThenPauseThenResume)
+{
+    const GameRun run = play("--frames 40" + script(R"([{"frame": 2, "key": "Enter"},
+        {"frame": 10, "key": "Escape"}, {"frame": 20, "key": "Escape"}, {"frame": 30, "key": "P"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"1-1"})) << "Play starts the first level";
+    EXPECT_EQ(run.values("push", "screen"), (std::vector<std::string>{"title", "play", "pause", "pause"}));
+    EXPECT_EQ(run.values("pop", "screen"), (std::vector<std::string>{"pause"}));
+    EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"title", "play", "pause"}));
+}
+
+TEST_F(ScreenFlow, LevelSelectAndBackWithKeysAndWithTheMouse)
+{
+    // Down to "Level select", Enter; Escape back to the title.
+    const GameRun keys = play("--frames 20" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Enter"},
+        {"frame": 10, "key": "Escape"}])"));
+    ASSERT_EQ(keys.exitCode, 0) << keys.err;
+    EXPECT_EQ(keys.values("push", "screen"), (std::vector<std::string>{"title", "level-select"}));
+    EXPECT_EQ(keys.finalScreens(), (std::vector<std::string>{"title"}));
+
+    // The same with the mouse: hover and click the second button, then click the first tile (level 1-1).
+    const GameRun mouse = play("--frames 30" + script(R"([
+        {"frame": 2, "mouse": "move", "x": 640, "y": 289},
+        {"frame": 3, "mouse": "press", "button": "left", "x": 640, "y": 289},
+        {"frame": 4, "mouse": "release", "button": "left", "x": 640, "y": 289},
+        {"frame": 10, "mouse": "press", "button": "left", "x": 349, "y": 115},
+        {"frame": 11, "mouse": "release", "button": "left", "x": 349, "y": 115}])"));
+    ASSERT_EQ(mouse.exitCode, 0) << mouse.err;
+    EXPECT_EQ(mouse.finalScreens(), (std::vector<std::string>{"title", "level-select", "play"}));
+    EXPECT_EQ(mouse.values("level", "id"), (std::vector<std::string>{"1-1"}));
+}
+
+TEST_F(ScreenFlow, ALockedLevelDoesNotStart)
+{
+    // 1-2 is locked for a new player: Right, Enter does nothing.
+    const GameRun run = play("--frames 20" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Enter"},
+        {"frame": 5, "key": "Right"}, {"frame": 6, "key": "Enter"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_TRUE(run.values("level", "id").empty());
+    EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"title", "level-select"}));
+}
+
+TEST_F(ScreenFlow, HelpOpensAnywhereAndAnyKeyClosesIt)
+{
+    const GameRun run = play("--frames 30" + script(R"([{"frame": 2, "key": "F1"}, {"frame": 5, "key": "Space"},
+        {"frame": 8, "text": "?"}, {"frame": 12, "key": "F1"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.values("push", "screen"), (std::vector<std::string>{"title", "help", "help"}));
+    EXPECT_EQ(run.values("pop", "screen"), (std::vector<std::string>{"help", "help"}));
+    EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"title"}));
+}
+
+TEST_F(ScreenFlow, ALevelOnTheCommandLineGoesStraightToIt)
+{
+    const std::string level = sourceFile("levels/2-1-dominoes.json");
+    const GameRun run = play(std::string("'").append(level).append("' --frames 5"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"play"}));
+    EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"2-1"}));
+}
+
+TEST_F(ScreenFlow, ShotsWithoutALevelStartTheCampaignAndAWinLeadsOn)
+{
+    // 1-1 as the solver wins it (abalike solve): two shots; then N goes to 1-2.
+    const GameRun run = play("--shot 30,18 --shot 5,30 --frames 1500" + script(R"([{"frame": 1490, "key": "N"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const std::vector<std::string> levels = run.values("level", "id");
+    ASSERT_FALSE(levels.empty());
+    EXPECT_EQ(levels.front(), "1-1");
+    const std::vector<std::string> finished = run.values("finished", "won");
+    ASSERT_EQ(finished.size(), 1u) << "the two shots should decide 1-1";
+    if (finished[0] == "true")
+    {
+        EXPECT_EQ(levels, (std::vector<std::string>{"1-1", "1-2"}));
+        EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"play"}));
+    }
+}
+
+TEST_F(ScreenFlow, ScriptedRunsReadTheSavedProgressButNeverWriteIt)
+{
+    const std::string progress = R"({
+  "format": 1,
+  "levels": {"1-1": {"best_score": 1000, "stars": 1}},
+  "unlocked": ["1-1", "1-2"]
+}
+)";
+    std::ofstream(data() / "progress.json") << progress;
+    // 1-2 is unlocked by the saved progress, and level select opens on it (1-1 already has its star).
+    const GameRun run = play("--frames 20" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Enter"},
+        {"frame": 6, "key": "Enter"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"1-2"}));
+    std::stringstream after;
+    after << std::ifstream(data() / "progress.json").rdbuf();
+    EXPECT_EQ(after.str(), progress);
+    EXPECT_FALSE(std::filesystem::exists(data() / "settings.json"));
+}
+
+TEST_F(ScreenFlow, AMalformedScriptExitsTwoWithALocatedError)
+{
+    const GameRun run = play("--frames 5" + script("[{\"frame\": 1, \"key\": \"Escpe\"}]"));
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("script.json:1:22: error: /0/key: unknown key name \"Escpe\" (did you mean \"Escape\"?)"),
+              std::string::npos)
+        << run.err;
+    EXPECT_TRUE(run.trace.empty()) << "no window opens for a bad script";
+}
+
+} // namespace
+} // namespace abalike::test
