@@ -50,8 +50,12 @@ TEST(SceneOverrides, MaterialValuesReachTheWorld)
     EXPECT_FLOAT_EQ(wood->GetFixtureList()->GetRestitution(), 0.6f);
     EXPECT_FLOAT_EQ(stone->GetFixtureList()->GetFriction(), 0.7f);
     for (const Entity& e : world.entities())
+    {
         if (e.kind == EntityKind::Block)
+        {
             EXPECT_EQ(e.maxHealth, e.typeName == "wood" ? 90.0 : 300.0);
+        }
+    }
     // The session, the checks and the solver read the same table.
     const GameSession session(level);
     EXPECT_EQ(session.catalog().findMaterial("wood")->densityKgPerM2, 70.0);
@@ -156,7 +160,9 @@ TEST(SceneOverrides, ExtremeCustomBirdsFlyAndCollideWithoutBreakingTheWorld)
                 EXPECT_TRUE(session.notice().empty()) << session.notice();
                 const ShotRecord& shot = session.shots()[0];
                 if (shot.predictedContact && shot.deviationM)
+                {
                     EXPECT_LT(*shot.deviationM, 0.01);
+                }
             }
 }
 

@@ -5,6 +5,7 @@
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/world/Catalog.hpp>
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -52,6 +53,11 @@ public:
     void selectInRect(double x0, double y0, double x1, double y1, SelectMode mode = SelectMode::Replace);
     void selectAll();
     void clearSelection();
+    /// An object's outline for drawing (a convex polygon, counter-clockwise; circles with 64 sides; the slingshot's
+    /// frame as a box), in metres.
+    std::vector<std::array<double, 2>> outline(const ObjectRef& ref) const;
+    /// The outline an object would have in this scene (the placement ghost).
+    std::vector<std::array<double, 2>> outlineOf(const ObjectDef& def) const;
     /// The object under a point, the one drawn on top first (pigs, then blocks, the slingshot, terrain); none if empty.
     std::optional<ObjectRef> objectAt(double x, double y) const;
 
@@ -114,6 +120,8 @@ public:
     std::vector<LevelIssue> save(const std::filesystem::path& path, const std::filesystem::path& schemaPath);
     /// Counts the current state as saved (an autosave does not).
     void markSaved();
+    /// Counts the current state as not saved (a scene recovered from an autosave).
+    void markUnsaved();
     /// Changes since the editor was made: how many edits were pushed, merged or undone (an autosave's trigger).
     std::uint64_t revision() const { return m_revision; }
 

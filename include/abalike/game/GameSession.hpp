@@ -39,7 +39,9 @@ struct ShotRecord
     std::vector<std::array<double, 3>> actualPath;    ///< (t, x, y)
     std::optional<AbilityUse> ability; ///< the ability, if used: when, where, and every impulse it applied
     int pigsDefeated = 0;              ///< pigs defeated while this shot was under way
-    int accuracyPoints = 0;            ///< this shot's share of ScoreBreakdown::accuracyBonus
+    /// The air or gravity changed while it flew (the sandbox): the prediction made at launch no longer applies.
+    bool environmentChanged = false;
+    int accuracyPoints = 0; ///< this shot's share of ScoreBreakdown::accuracyBonus
 };
 
 /// A launch the rules do not allow (no bird, not aiming, too fast); the message says why.
@@ -84,6 +86,11 @@ public:
     PredictedFlight preview(double angleDeg, double speedMps) const;
     /// Launches the current bird. Throws LaunchError when not aiming or faster than the bird can be launched.
     void launch(double angleDeg, double speedMps);
+    /// Changes gravity, air and wind now, even mid-flight (the sandbox's live environment). A shot in the air is
+    /// marked environmentChanged and gets no deviation or accuracy points; later previews use the new air.
+    void setEnvironment(const EnvironmentDef& environment);
+    /// Changes the level's custom bird for the birds not yet launched (the sandbox's bird panel).
+    void setCustomBird(const CustomBirdDef& bird);
     /// Whether the flying bird's ability can be used now (see GameWorld::canActivateAbility).
     bool canActivateAbility() const;
     /// Uses the flying bird's ability (click or Space in flight); false if it cannot be used now.

@@ -105,6 +105,11 @@ public:
     /// Velocity iterations of the settle step (see WorldSettings::settleIterations).
     int settleIterations() const { return m_settleIterations; }
 
+    /// Changes the air and gravity while the world runs (the sandbox's live environment): Box2D's gravity at once,
+    /// and the launched bird's flight model from its current state on. Split birds and eggs already in the air keep
+    /// the drag they were launched with.
+    void setEnvironment(const EnvironmentDef& environment);
+
     /// The body a bird collides with in this level (its own, or clamped where Box2D would misbehave).
     BirdBody birdBody(const BirdType& bird) const;
     /// Puts a bird at s0 and starts its free flight under the model. Returns its entity index.

@@ -71,9 +71,12 @@ nlohmann::ordered_json sessionToJson(const GameSession& session)
     out["pigs_remaining"] = session.pigsRemaining();
     out["birds_used"] = session.birdsUsed();
     out["sim_time_s"] = session.simTime();
-    out["score_breakdown"] = {{"block_points", score.blockPoints},       {"blocks_destroyed", score.blocksDestroyed},
-                              {"pig_points", score.pigPoints},           {"pigs_defeated", score.pigsDefeated},
-                              {"unused_bird_bonus", score.unusedBirdBonus}, {"accuracy_bonus", score.accuracyBonus}};
+    out["score_breakdown"] = {{"block_points", score.blockPoints},
+                              {"blocks_destroyed", score.blocksDestroyed},
+                              {"pig_points", score.pigPoints},
+                              {"pigs_defeated", score.pigsDefeated},
+                              {"unused_bird_bonus", score.unusedBirdBonus},
+                              {"accuracy_bonus", score.accuracyBonus}};
     out["score_breakdown"]["unused_birds"] = score.unusedBirds;
     out["score_breakdown"]["efficiency_bonus"] = score.efficiencyBonus;
     out["score_breakdown"]["accurate_shots"] = score.accurateShots;

@@ -75,7 +75,10 @@ CommandRunner addSimulateCommand(CLI::App& app)
         ->required()
         ->allow_extra_args(false);
     cmd->add_flag("--json", args->json, "print one JSON object");
-    return [args] { return runSimulate(*args); };
+    return [args]
+    {
+        return runSimulate(*args);
+    };
 }
 
 } // namespace abalike::app

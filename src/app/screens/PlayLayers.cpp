@@ -1,5 +1,7 @@
 #include "screens/PlayLayer.hpp"
 
+#include "editor/BirdBodyNotice.hpp"
+
 namespace abalike::app
 {
 
@@ -8,6 +10,7 @@ std::vector<std::unique_ptr<PlayLayer>> makePlayLayers(App& app)
     (void)app;
     std::vector<std::unique_ptr<PlayLayer>> layers;
     // Bottom first: layers drawn later are drawn over earlier ones and see input first.
+    layers.push_back(std::make_unique<BirdBodyNotice>());
     return layers;
 }
 

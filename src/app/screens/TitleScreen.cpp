@@ -1,5 +1,6 @@
 #include "screens/TitleScreen.hpp"
 
+#include "editor/EditorSource.hpp"
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
 #include "screens/App.hpp"
@@ -32,6 +33,7 @@ TitleScreen::TitleScreen(App& app)
     m_menu.setItems({
         {"play", started ? "Continue" : "Play", hasCampaign},
         {"levels", "Level select", hasCampaign},
+        {"sandbox", "Sandbox and editor", true},
         {"help", "Controls", true},
         {"quit", "Quit", true},
     });
@@ -49,6 +51,8 @@ void TitleScreen::activate(const std::string& id)
         playCampaignLevel(m_app, continueLevel(m_app));
     else if (id == "levels")
         m_app.screens().push(std::make_unique<LevelSelectScreen>(m_app));
+    else if (id == "sandbox")
+        openEditor(m_app, sandboxSource());
     else if (id == "help")
         m_app.screens().push(std::make_unique<HelpScreen>(m_app));
     else if (id == "quit")

@@ -175,6 +175,27 @@ void SceneEditor::clearSelection()
     m_selection.clear();
 }
 
+std::vector<std::array<double, 2>> SceneEditor::outline(const ObjectRef& ref) const
+{
+    if (!exists(m_level, ref))
+        return {};
+    return outlineOf(objectDef(m_level, ref));
+}
+
+std::vector<std::array<double, 2>> SceneEditor::outlineOf(const ObjectDef& def) const
+{
+    if (const auto* s = std::get_if<SlingshotDef>(&def))
+    {
+        const double bottom = std::min(m_level.groundY, s->y - kSlingshotPickAboveM);
+        const double top = s->y + kSlingshotPickAboveM;
+        return {{s->x - kSlingshotPickHalfWidthM, bottom},
+                {s->x + kSlingshotPickHalfWidthM, bottom},
+                {s->x + kSlingshotPickHalfWidthM, top},
+                {s->x - kSlingshotPickHalfWidthM, top}};
+    }
+    return objectShape(def, levelCatalog(m_level, m_catalog));
+}
+
 std::optional<ObjectRef> SceneEditor::objectAt(double x, double y) const
 {
     const std::vector<ObjectRef> objects = allObjects(m_level);
@@ -521,6 +542,11 @@ bool SceneEditor::dirty() const
 void SceneEditor::markSaved()
 {
     m_savedState = m_history->state();
+}
+
+void SceneEditor::markUnsaved()
+{
+    m_savedState = ~m_history->state(); // differs from every state until a save
 }
 
 std::vector<LevelIssue> SceneEditor::saveProblems() const

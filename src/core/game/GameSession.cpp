@@ -137,6 +137,22 @@ void GameSession::launch(double angleDeg, double speedMps)
     m_shotStartTime = m_world->time();
 }
 
+void GameSession::setEnvironment(const EnvironmentDef& environment)
+{
+    if (environment == m_level.environment)
+        return;
+    m_level.environment = environment;
+    m_world->setEnvironment(environment);
+    if (m_phase == Phase::Flying && !m_shots.empty() && !m_shots.back().actualContact)
+        m_shots.back().environmentChanged = true;
+}
+
+void GameSession::setCustomBird(const CustomBirdDef& bird)
+{
+    m_level.customBird = bird;
+    m_catalog.putBird(customBirdType(bird)); // the flying bird keeps its own copy of the type
+}
+
 bool GameSession::canActivateAbility() const
 {
     return m_phase == Phase::Flying && m_world->canActivateAbility();
@@ -210,7 +226,7 @@ void GameSession::updateBird()
     shot.firstTouched = m_world->birdContactKind();
     // The prediction made at launch is only a claim about the flight that was launched: once an ability changed
     // that flight, the distance between the two contacts measures the ability, not the prediction.
-    const bool flightChanged = shot.ability && shot.ability->changedFlight;
+    const bool flightChanged = (shot.ability && shot.ability->changedFlight) || shot.environmentChanged;
     if (!shot.predictedContact || flightChanged)
         return;
     shot.deviationM =

@@ -2,6 +2,7 @@
 #include "world/Fixtures.hpp"
 #include "world/Skin.hpp"
 
+#include <abalike/level/LevelFlight.hpp>
 #include <abalike/world/GameWorld.hpp>
 #include <algorithm>
 #include <cmath>
@@ -49,6 +50,27 @@ b2Body* GameWorld::createBirdBody(int index, double radiusM, double massKg, doub
 BirdBody GameWorld::birdBody(const BirdType& bird) const
 {
     return birdCollisionBody(bird, m_lightestBodyKg);
+}
+
+void GameWorld::setEnvironment(const EnvironmentDef& environment)
+{
+    m_level.environment = environment;
+    m_world->SetGravity(b2Vec2(0.0f, static_cast<float>(-environment.gravity)));
+    if (m_birdIndex < 0)
+        return;
+    const FlightModel model = levelFlightModel(environment, m_birdType);
+    IntegratorSettings flightSettings;
+    flightSettings.stepper = StepperKind::Rk4;
+    flightSettings.dtS = m_settings.dtS;
+    if (m_birdFlight)
+    {
+        // The flight goes on from where it is under the new forces; its time origin (gusts) stays the launch.
+        const double t = m_birdFlight->time();
+        const FlightState s = m_birdFlight->state();
+        m_birdFlight = std::make_unique<FlightIntegrator>(model, flightSettings);
+        m_birdFlight->reset(t, s);
+    }
+    m_birdModel = std::make_unique<FlightIntegrator>(model, flightSettings);
 }
 
 int GameWorld::launchBird(const BirdType& bird, const FlightModel& model, const FlightState& s0)
