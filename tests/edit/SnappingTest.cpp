@@ -133,6 +133,21 @@ TEST(Snapping, NothingWithinReachLeavesOnlyTheGrid)
     EXPECT_EQ(none.y, 0.77);
 }
 
+TEST(Snapping, ABlockOrPigPutBelowTheGroundComesUpOntoItTerrainMaySink)
+{
+    const LevelDef level = emptyScene();
+    const SnapResult block =
+        snapObject(level, Catalog::builtin(), BlockDef{BlockShape::Box, "wood", 5.0, -3.0, 1.0, 1.0, 0.0, 0.1}, {},
+                   surfacesOnly());
+    EXPECT_EQ(block.y, 0.5);
+    EXPECT_TRUE(block.onGround);
+    const SnapResult pig = snapObject(level, Catalog::builtin(), PigDef{"large", 5.0, -2.0}, {}, surfacesOnly());
+    EXPECT_EQ(pig.y, 0.5);
+    const SnapResult hill =
+        snapObject(level, Catalog::builtin(), TerrainDef{5.0, -3.0, 10.0, 4.0, 0.0}, {}, surfacesOnly());
+    EXPECT_EQ(hill.y, -3.0);
+}
+
 TEST(Snapping, ObjectsBeingMovedAreNoSurface)
 {
     const LevelDef level = slabScene();

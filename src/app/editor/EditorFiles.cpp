@@ -166,7 +166,17 @@ void EditorScreen::openFile(const std::filesystem::path& path)
 void EditorScreen::autosaveIfDue()
 {
     // Scripted runs never write the player's files.
-    if (m_app.scripted() || !m_editor->dirty() || m_editor->revision() == m_autosavedRevision)
+    if (m_app.scripted())
+        return;
+    if (!m_editor->dirty())
+    {
+        // Undone back to what was saved: nothing is left to recover.
+        if (m_autosaveWritten)
+            removeAutosave(autosavePath(defaultDataDirectory()));
+        m_autosaveWritten = false;
+        return;
+    }
+    if (m_editor->revision() == m_autosavedRevision)
         return;
     const auto now = std::chrono::steady_clock::now();
     if (now - m_lastAutosave < kAutosaveEvery)
@@ -181,6 +191,7 @@ void EditorScreen::autosaveIfDue()
         std::error_code ec;
         std::filesystem::create_directories(dir, ec);
         writeAutosave(autosavePath(dir), m_editor->level(), m_editor->path(), Catalog::builtin());
+        m_autosaveWritten = true;
     }
     catch (const std::exception& error)
     {

@@ -11,6 +11,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 #include <imgui_stdlib.h>
+#include <regex>
 
 namespace abalike::app
 {
@@ -27,10 +28,13 @@ bool sliderDouble(const char* label, double& value, double min, double max, cons
     return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format, flags);
 }
 
-/// A number typed in: true on every edit, so the scene follows as it is typed (one undo step per field).
-bool inputDouble(const char* label, double& value, const char* format = "%.3f")
+/// A number typed in: true on every edit, so the scene follows as it is typed (one undo step per field); `released`
+/// is set when the field is let go.
+bool inputDouble(const char* label, double& value, bool& released, const char* format = "%.3f")
 {
-    return ImGui::InputDouble(label, &value, 0.0, 0.0, format);
+    const bool changed = ImGui::InputDouble(label, &value, 0.0, 0.0, format);
+    released |= ImGui::IsItemDeactivated();
+    return changed;
 }
 
 void heading(const char* text)
@@ -41,6 +45,23 @@ void heading(const char* text)
 }
 
 const char* shapeNames[] = {"box", "circle", "triangle", "hollow_box"};
+
+/// The loader's messages name objects by JSON pointer ("overlaps /blocks/0"); the editor names them as it lists them.
+std::string readablePointers(const LevelDef& level, std::string text)
+{
+    static const std::regex pointer(R"(/(blocks|pigs|terrain)/\d+)");
+    std::string out;
+    std::sregex_iterator it(text.begin(), text.end(), pointer);
+    std::size_t last = 0;
+    for (; it != std::sregex_iterator(); ++it)
+    {
+        out += text.substr(last, static_cast<std::size_t>(it->position()) - last);
+        const auto ref = objectOfPointer(it->str());
+        out += ref ? describe(level, *ref) : it->str();
+        last = static_cast<std::size_t>(it->position() + it->length());
+    }
+    return out + text.substr(last);
+}
 } // namespace
 
 void EditorScreen::inspectorPanel()
@@ -135,17 +156,18 @@ void EditorScreen::selectionTab()
                 block->material = materials[static_cast<std::size_t>(material)].name;
                 changed = true;
             }
-            changed |= inputDouble("x (m)", block->x);
-            changed |= inputDouble("y (m)", block->y);
-            changed |= inputDouble(block->shape == BlockShape::Circle ? "Diameter (m)" : "Width (m)", block->widthM);
+            changed |= inputDouble("x (m)", block->x, m_fieldReleased);
+            changed |= inputDouble("y (m)", block->y, m_fieldReleased);
+            changed |= inputDouble(block->shape == BlockShape::Circle ? "Diameter (m)" : "Width (m)", block->widthM,
+                                   m_fieldReleased);
             if (block->shape != BlockShape::Circle)
-                changed |= inputDouble("Height (m)", block->heightM);
+                changed |= inputDouble("Height (m)", block->heightM, m_fieldReleased);
             else
                 block->heightM = block->widthM;
             if (block->shape != BlockShape::Circle)
-                changed |= inputDouble("Angle (\u00B0)", block->angleDeg, "%.1f");
+                changed |= inputDouble("Angle (\u00B0)", block->angleDeg, m_fieldReleased, "%.1f");
             if (block->shape == BlockShape::HollowBox)
-                changed |= inputDouble("Wall (m)", block->wallM);
+                changed |= inputDouble("Wall (m)", block->wallM, m_fieldReleased);
             key = "object";
         }
         else if (auto* pig = std::get_if<PigDef>(&def))
@@ -164,22 +186,22 @@ void EditorScreen::selectionTab()
                 pig->type = pigs[static_cast<std::size_t>(type)].name;
                 changed = true;
             }
-            changed |= inputDouble("x (m)", pig->x);
-            changed |= inputDouble("y (m)", pig->y);
+            changed |= inputDouble("x (m)", pig->x, m_fieldReleased);
+            changed |= inputDouble("y (m)", pig->y, m_fieldReleased);
         }
         else if (auto* terrain = std::get_if<TerrainDef>(&def))
         {
-            changed |= inputDouble("x (m)", terrain->x);
-            changed |= inputDouble("y (m)", terrain->y);
-            changed |= inputDouble("Width (m)", terrain->widthM);
-            changed |= inputDouble("Height (m)", terrain->heightM);
-            changed |= inputDouble("Angle (\u00B0)", terrain->angleDeg, "%.1f");
+            changed |= inputDouble("x (m)", terrain->x, m_fieldReleased);
+            changed |= inputDouble("y (m)", terrain->y, m_fieldReleased);
+            changed |= inputDouble("Width (m)", terrain->widthM, m_fieldReleased);
+            changed |= inputDouble("Height (m)", terrain->heightM, m_fieldReleased);
+            changed |= inputDouble("Angle (\u00B0)", terrain->angleDeg, m_fieldReleased, "%.1f");
         }
         else if (auto* sling = std::get_if<SlingshotDef>(&def))
         {
-            changed |= inputDouble("x (m)", sling->x);
-            changed |= inputDouble("Pouch y (m)", sling->y);
-            changed |= inputDouble("Max force (N)", sling->maxForceN, "%.0f");
+            changed |= inputDouble("x (m)", sling->x, m_fieldReleased);
+            changed |= inputDouble("Pouch y (m)", sling->y, m_fieldReleased);
+            changed |= inputDouble("Max force (N)", sling->maxForceN, m_fieldReleased, "%.0f");
         }
         ImGui::PopItemWidth();
         (void)key;
@@ -191,10 +213,16 @@ void EditorScreen::selectionTab()
             m_message = why;
             m_messageIsError = !why.empty();
         }
-        if (!ImGui::IsAnyItemActive())
+        // Typing into one field is one undo step; the next field, or the same one later, is another.
+        if (m_fieldReleased)
             m_editor->endGesture();
+        m_fieldReleased = false;
         for (const Finding* finding : m_checks.findingsOn(ref))
-            ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.45f, 1.0f), "! %s", finding->message.c_str());
+        {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.5f, 0.45f, 1.0f));
+            ImGui::TextWrapped("! %s", readablePointers(m_editor->level(), finding->message).c_str());
+            ImGui::PopStyleColor();
+        }
     }
     ImGui::Spacing();
     if (ImGui::Button("Duplicate"))
@@ -310,6 +338,13 @@ void EditorScreen::environmentTab()
             if (sliderDouble("Period (s)", env.gusts->periodS, 0.1, 30.0, "%.1f"))
                 setProperties(next, "Gust period", "gust");
             endGestureIfReleased();
+            double phaseDeg = env.gusts->phaseRad * 180.0 / 3.14159265358979323846;
+            if (sliderDouble("Phase (\u00B0)", phaseDeg, -180.0, 180.0, "%.0f"))
+            {
+                env.gusts->phaseRad = phaseDeg * 3.14159265358979323846 / 180.0;
+                setProperties(next, "Gust phase", "gust");
+            }
+            endGestureIfReleased();
         }
         else if (env.gusts)
         {
@@ -358,8 +393,8 @@ void EditorScreen::birdTab()
         if (aimChanged)
             m_play->aimAt(m_playAngleDeg, m_playSpeedMps);
         if (const auto aim = m_play->aim())
-            ImGui::Text("F = m v\u2080 / t = %.1f kg \u00D7 %.2f m/s / %.2f s = %.0f N", aim->massKg, aim->speedMps,
-                        aim->releaseTimeS, aim->massKg * aim->speedMps / aim->releaseTimeS);
+            ImGui::TextWrapped("F = m v\u2080 / t = %.3g kg \u00D7 %.2f m/s / %.2f s = %.0f N", aim->massKg,
+                               aim->speedMps, aim->releaseTimeS, aim->massKg * aim->speedMps / aim->releaseTimeS);
         if (ImGui::Button("Fire", ImVec2(-FLT_MIN, 0.0f)))
         {
             m_play->aimAt(m_playAngleDeg, m_playSpeedMps);
@@ -369,6 +404,8 @@ void EditorScreen::birdTab()
             m_play->restart();
         const GameSession& session = m_play->session();
         ImGui::Text("Birds left: %d", session.birdsRemaining());
+        if (!m_message.empty())
+            ImGui::TextWrapped("%s", m_message.c_str());
         if (session.finished())
             ImGui::TextWrapped("%s", session.phase() == Phase::Won
                                          ? "Every pig is down. R plays the scene again; Esc returns to editing."
@@ -603,7 +640,7 @@ void EditorScreen::levelTab()
     if (ImGui::Checkbox("Sandbox scene (may have no pig)", &next.sandbox))
         setProperties(next, next.sandbox ? "Sandbox scene" : "Campaign level", "");
     double ground = next.groundY;
-    if (inputDouble("Ground y (m)", ground))
+    if (inputDouble("Ground y (m)", ground, m_fieldReleased))
     {
         next.groundY = cleanMetres(ground);
         setProperties(next, "Ground", "");
@@ -634,9 +671,13 @@ void EditorScreen::checksTab()
         ImGui::PushID(id++);
         const std::string where =
             finding.object ? describe(m_editor->level(), *finding.object) : std::string("the level");
-        const std::string line = where + ": " + finding.message;
-        if (ImGui::Selectable(line.c_str(), false) && finding.object && exists(m_editor->level(), *finding.object))
+        // The object's name selects it; what was found wraps under it.
+        if (ImGui::Selectable(where.c_str(), finding.object && m_editor->isSelected(*finding.object)) &&
+            finding.object && exists(m_editor->level(), *finding.object))
             m_editor->select(*finding.object);
+        ImGui::Indent();
+        ImGui::TextWrapped("%s", readablePointers(m_editor->level(), finding.message).c_str());
+        ImGui::Unindent();
         ImGui::PopID();
     }
     const std::vector<LevelIssue> problems = m_editor->saveProblems();

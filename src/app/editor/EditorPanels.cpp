@@ -85,7 +85,8 @@ void EditorScreen::buildUi()
     if (!playing())
         palettePanel();
     inspectorPanel();
-    statusBar();
+    if (!playing())
+        statusBar(); // in play mode the HUD's own hints have the bottom line
     findingTooltip();
     dialogs();
 }
@@ -317,8 +318,10 @@ void EditorScreen::findingTooltip()
         return;
     ImGui::BeginTooltip();
     ImGui::TextUnformatted(describe(m_editor->level(), *hit).c_str());
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
     for (const Finding* finding : findings)
         ImGui::BulletText("%s", finding->message.c_str());
+    ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
 }
 

@@ -71,8 +71,9 @@ sf::FloatRect EditorScreen::sceneArea() const
 {
     const sf::Vector2f size(m_app.windowSize());
     const float scale = m_app.uiScale();
-    const float top = 30.0f * scale;
-    const float bottom = 30.0f * scale;
+    // The menu bar and the status bar: a line of 16 px text with ImGui's frame and window padding.
+    const float top = 22.0f * scale;
+    const float bottom = playing() ? 0.0f : 38.0f * scale;
     const float left = playing() ? 0.0f : 220.0f * scale;
     const float right = 350.0f * scale;
     return {left, top, std::max(50.0f, size.x - left - right), std::max(50.0f, size.y - top - bottom)};
@@ -116,7 +117,7 @@ void EditorScreen::startPlay()
     m_play = std::make_unique<ScenePlay>(m_app, m_editor->level(), m_view.camera(m_app.windowSize()));
     m_play->aimAt(m_playAngleDeg, std::min(m_playSpeedMps, m_play->maxSpeedMps()));
     m_app.trace().write("editor-play", {{"level", m_editor->level().id}});
-    m_message = "Playing: drag the bird back, or set angle and speed in the Bird tab and Fire. Esc returns.";
+    m_message = "Drag the bird back, or set the angle and speed here and Fire. Esc returns to the scene as it was.";
     m_messageIsError = false;
 }
 

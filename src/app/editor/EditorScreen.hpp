@@ -156,6 +156,7 @@ private:
     std::optional<sf::Vector2f> m_panFrom; ///< panning with the right or middle button (pixels)
     std::optional<ObjectRef> m_resizing;   ///< a block or terrain piece being resized by its handle
     bool m_focusScene = false;             ///< take keyboard focus from the panels at the next frame
+    bool m_fieldReleased = false;          ///< an object field was let go this frame: its edit is complete
 
     std::vector<sf::FloatRect> m_panels; ///< where the panels were drawn in the last frame (window pixels)
     bool m_modalOpen = false;
@@ -171,6 +172,7 @@ private:
     std::string m_fileDialogPath;
     std::optional<EditorSource> m_recovered;
     std::uint64_t m_autosavedRevision = 0;
+    bool m_autosaveWritten = false;
     std::chrono::steady_clock::time_point m_lastAutosave = std::chrono::steady_clock::now();
     double m_playAngleDeg = 45.0;
     double m_playSpeedMps = 15.0;

@@ -17,13 +17,12 @@ void EditorView::fit(const LevelDef& level, const Catalog& catalog, sf::FloatRec
     (void)windowSize;
     float left = static_cast<float>(level.slingshot.x) - 2.0f * kMarginM; // the waiting birds sit behind it
     float right = static_cast<float>(level.slingshot.x) + 20.0f;          // room to build in an empty scene
-    float bottom = static_cast<float>(level.groundY) - 1.0f;
-    float top = static_cast<float>(level.slingshot.y) + 6.0f;
+    const auto ground = static_cast<float>(level.groundY);
+    float top = static_cast<float>(level.slingshot.y) + 4.0f;
     const auto include = [&](double x, double y, double halfW, double halfH)
     {
         left = std::min(left, static_cast<float>(x - halfW) - kMarginM);
         right = std::max(right, static_cast<float>(x + halfW) + kMarginM);
-        bottom = std::min(bottom, static_cast<float>(y - halfH) - 1.0f);
         top = std::max(top, static_cast<float>(y + halfH) + 2.0f);
     };
     for (const BlockDef& b : level.blocks)
@@ -33,14 +32,15 @@ void EditorView::fit(const LevelDef& level, const Catalog& catalog, sf::FloatRec
             include(p.x, p.y, type->radiusM, type->radiusM);
     for (const TerrainDef& t : level.terrain)
         include(t.x, t.y, 0.5 * std::max(t.widthM, t.heightM), 0.5 * std::max(t.widthM, t.heightM));
+    // The ground line a strip of earth above the area's bottom edge, the rest of the height for what stands on it.
+    const float earthPx = std::min(60.0f, 0.12f * area.height);
     const float width = std::max(area.width, 50.0f);
-    const float height = std::max(area.height, 50.0f);
+    const float height = std::max(area.height - earthPx, 50.0f);
     m_pixelsPerMetre =
-        std::clamp(std::min(width / (right - left), height / (top - bottom)), kMinPixelsPerMetre, kMaxPixelsPerMetre);
-    // Centre horizontally, ground near the bottom of the area.
+        std::clamp(std::min(width / (right - left), height / (top - ground)), kMinPixelsPerMetre, kMaxPixelsPerMetre);
     const float centreX = 0.5f * (left + right);
     m_origin.x = centreX - (area.left + 0.5f * width) / m_pixelsPerMetre;
-    m_origin.y = bottom + (area.top + height) / m_pixelsPerMetre;
+    m_origin.y = ground + (area.top + area.height - earthPx) / m_pixelsPerMetre;
 }
 
 void EditorView::pan(sf::Vector2f pixels)

@@ -119,10 +119,16 @@ SnapResult snapObject(const LevelDef& level, const Catalog& catalog, const Objec
     if (settings.surfaces)
     {
         const auto others = obstacles(level, catalog, ignore);
+        // Blocks and pigs stand on the ground, never in it: one put below the ground line comes up onto it, however
+        // deep. Terrain may sink into the ground (hills are built that way).
+        const bool floored = kindOf(def) != ObjectKind::Terrain;
         const auto settle = [&]
         {
             const auto below = nearest(shifted(shape, dx, dy), others, {0.0, -1.0}, level.groundY);
-            if (!below || std::abs(below->distance) > settings.surfaceReachM)
+            if (!below)
+                return;
+            const bool underGround = floored && !below->ref && below->distance < 0.0;
+            if (std::abs(below->distance) > settings.surfaceReachM && !underGround)
                 return;
             dy -= below->distance;
             result.onGround = !below->ref;
