@@ -82,7 +82,7 @@ void EditorScreen::drawOverlay(sf::RenderTarget& target)
         addOutline(camera, *finding.object, 4.0f * scale, stale ? kStale : kFinding);
     }
     for (const ObjectRef& ref : m_editor->selection())
-        addOutline(camera, ref, 2.5f * scale, kSelected);
+        addOutline(camera, ref, 3.0f * scale, kSelected);
 
     // The resize handle of a single selected block or terrain piece.
     if (m_editor->selection().size() == 1 && m_tool == Tool::Select)

@@ -7,6 +7,7 @@
 #include <abalike/flight/StandardAtmosphere.hpp>
 #include <abalike/level/LevelCatalog.hpp>
 #include <abalike/world/BirdBody.hpp>
+#include <box2d/b2_body.h>
 #include <cstdio>
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -128,6 +129,16 @@ void EditorScreen::selectionTab()
     {
         const ObjectRef ref = selection[0];
         ImGui::TextUnformatted(describe(m_editor->level(), ref).c_str());
+        // Its mass as the world builds it (the scene's own material values included).
+        if (m_scene && (ref.kind == ObjectKind::Block || ref.kind == ObjectKind::Pig))
+            for (const Entity& entity : m_scene->world().entities())
+                if (entity.body != nullptr && entity.defIndex == static_cast<int>(ref.index) &&
+                    entity.kind == (ref.kind == ObjectKind::Block ? EntityKind::Block : EntityKind::Pig))
+                {
+                    ImGui::SameLine();
+                    ImGui::TextDisabled("  %.3g kg, breaks at %.3g N s", static_cast<double>(entity.body->GetMass()),
+                                        entity.maxHealth);
+                }
         ObjectDef def = objectDef(m_editor->level(), ref);
         bool changed = false;
         const char* key = "";

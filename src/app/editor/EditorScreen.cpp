@@ -7,6 +7,7 @@
 #include <abalike/edit/Autosave.hpp>
 #include <abalike/save/DataDirectory.hpp>
 #include <imgui.h>
+#include <imgui_internal.h>
 #include <iostream>
 
 namespace abalike::app
@@ -152,7 +153,10 @@ void EditorScreen::handleEvent(const sf::Event& event)
     {
         if (m_imgui.wantsText())
             return; // typing into a field
-        const bool panelFocused = ImGui::IsWindowFocused(ImGuiFocusedFlags_AnyWindow);
+        // A panel has the keys only while it is being driven from the keyboard (Tab, arrows): after a click on a
+        // panel, Space and the arrows still aim and nudge in the scene.
+        const bool panelFocused =
+            ImGui::IsWindowFocused(ImGuiFocusedFlags_AnyWindow) && !ImGui::GetCurrentContext()->NavDisableHighlight;
         if (panelFocused && event.key.code == sf::Keyboard::Escape)
         {
             m_focusScene = true; // Esc in a panel gives the keys back to the scene
