@@ -398,6 +398,12 @@ void EditorScreen::birdTab()
     {
         heading("Launch");
         const double maxSpeed = m_play->maxSpeedMps();
+        // The sliders show the aim however it was set (mouse, keys or these sliders).
+        if (const auto aim = m_play->aim(); aim && !ImGui::IsAnyItemActive())
+        {
+            m_playAngleDeg = aim->angleDeg;
+            m_playSpeedMps = aim->speedMps;
+        }
         bool aimChanged = sliderDouble("Angle (\u00B0)", m_playAngleDeg, -90.0, 90.0, "%.1f");
         m_playSpeedMps = std::min(m_playSpeedMps, maxSpeed);
         aimChanged |= sliderDouble("Speed (m/s)", m_playSpeedMps, 0.0, std::max(maxSpeed, 0.1), "%.2f");
