@@ -49,11 +49,13 @@ protected:
 
 TEST_F(EditorFlow, AScriptedRunPlacesTwoBlocksAndAPigAndSaves)
 {
-    // B: the block tool (a 1 m wood box); a click near the ground puts it there. B again, a click above it stacks the
-    // second on the first. P: the pig tool, a click to its right. Ctrl+S saves to the file named on the command line.
+    // The palette's "Stone box" button (a click through the ImGui bridge), then a click near the ground puts a 1 m
+    // stone box there. B (the block tool, still stone), a click above it stacks the second on the first. P: the pig
+    // tool, a click to its right. Ctrl+S saves to the file named on the command line.
     const std::string file = m_dir.file("built.json");
     const GameRun run = edit("'" + file + "' --frames 60" + script(R"([
-        {"frame": 10, "key": "B"},
+        {"frame": 8, "mouse": "press", "button": "left", "x": 56, "y": 221},
+        {"frame": 8, "mouse": "release", "button": "left", "x": 56, "y": 221},
         {"frame": 12, "mouse": "move", "x": 560, "y": 610},
         {"frame": 14, "mouse": "press", "button": "left", "x": 560, "y": 610},
         {"frame": 15, "mouse": "release", "button": "left", "x": 560, "y": 610},
@@ -74,6 +76,8 @@ TEST_F(EditorFlow, AScriptedRunPlacesTwoBlocksAndAPigAndSaves)
     EXPECT_EQ(level["blocks"][0]["y"].get<double>(), 0.5);
     EXPECT_EQ(level["blocks"][1]["y"].get<double>(), 1.5);
     EXPECT_EQ(level["pigs"][0]["y"].get<double>(), 0.25);
+    EXPECT_EQ(level["blocks"][0]["material"], "stone");
+    EXPECT_EQ(level["blocks"][1]["material"], "stone");
     EXPECT_EQ(runCheck(file), 0) << readText(file);
     // Scripted runs never write the player's files: no autosave, no imgui.ini.
     EXPECT_TRUE(std::filesystem::is_empty(data()));

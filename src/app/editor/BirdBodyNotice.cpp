@@ -42,7 +42,7 @@ void BirdBodyNotice::drawScreen(sf::RenderTarget& target, PlayView& view)
     const float lineHeight = font->getLineSpacing(size);
     const float pad = 8.0f * scale;
     const float left = 0.5f * (static_cast<float>(target.getSize().x) - width) - pad;
-    const float top = 10.0f * scale;
+    const float top = 96.0f * scale; // under the HUD's aim readout
     sf::RectangleShape box({width + 2.0f * pad, lineHeight * static_cast<float>(lines.size()) + 2.0f * pad});
     box.setPosition(left, top);
     box.setFillColor(palette::kPanel);

@@ -487,7 +487,7 @@ void EditorScreen::birdTab()
     if (next.customBird)
     {
         CustomBirdDef& bird = *next.customBird;
-        bool changed = sliderDouble("Mass (kg)", bird.massKg, 0.01, 5000.0, "%.3g", ImGuiSliderFlags_Logarithmic);
+        bool changed = sliderDouble("Mass (kg)", bird.massKg, 0.01, 5000.0, "%.4g", ImGuiSliderFlags_Logarithmic);
         changed |= sliderDouble("Diameter (m)", bird.diameterM, 0.01, 3.0, "%.3g", ImGuiSliderFlags_Logarithmic);
         changed |= sliderDouble("Drag coeff. Cd", bird.dragCoefficient, 0.04, 1.2, "%.2f");
         if (changed)

@@ -194,10 +194,13 @@ void ImGuiBridge::handleEvent(const sf::Event& event)
         if (event.type == sf::Event::MouseButtonPressed)
         {
             io.MouseDown[index] = true;
+            m_pressSeen[index] = false;
             m_releasePending[index] = false;
         }
-        else if (io.MouseDown[index])
-            m_releasePending[index] = true; // released at the next frame, so the press is seen first
+        else if (m_pressSeen[index])
+            io.MouseDown[index] = false;
+        else
+            m_releasePending[index] = true; // not yet seen down by a frame: released after the next one
         break;
     }
     case sf::Event::MouseWheelScrolled:
@@ -244,16 +247,18 @@ void ImGuiBridge::newFrame(double frameS)
     io.DeltaTime = static_cast<float>(std::max(frameS, 1e-4));
     if (m_frameOpen)
         ImGui::EndFrame(); // a frame built but never drawn
-    ImGui_ImplOpenGL2_NewFrame();
-    ImGui::NewFrame();
-    m_frameOpen = true;
-    // Releases queued during the last frame's events happen now that ImGui has seen the press.
+    // A click that came and went between two frames: the last frame saw it down, this one sees it up.
     for (int i = 0; i < 5; ++i)
-        if (m_releasePending[i])
+        if (m_releasePending[i] && m_pressSeen[i])
         {
             io.MouseDown[i] = false;
             m_releasePending[i] = false;
         }
+    ImGui_ImplOpenGL2_NewFrame();
+    ImGui::NewFrame();
+    m_frameOpen = true;
+    for (int i = 0; i < 5; ++i)
+        m_pressSeen[i] = m_pressSeen[i] || io.MouseDown[i];
 }
 
 void ImGuiBridge::render()

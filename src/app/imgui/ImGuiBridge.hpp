@@ -57,8 +57,10 @@ private:
     bool m_highContrast = false;
     bool m_styled = false;
     bool m_frameOpen = false;
-    /// A press and release within one frame would be lost: ImGui 1.86 samples buttons once per frame.
+    /// ImGui 1.86 samples the buttons once per frame, so a press and its release between two frames would be lost:
+    /// such a release waits until a frame has seen the button down.
     bool m_releasePending[5] = {};
+    bool m_pressSeen[5] = {}; ///< a frame has seen the button down since it was pressed
 };
 
 } // namespace abalike::app
