@@ -137,8 +137,10 @@ private:
     void onlyKeys(const json& value, const std::string& pointer, const char* kind,
                   std::initializer_list<const char*> allowed)
     {
-        for (const auto& [key, child] : value.items())
+        for (auto it = value.begin(); it != value.end(); ++it)
         {
+            // Not a structured binding: clang 14 cannot capture one in a lambda.
+            const std::string& key = it.key();
             const auto named = [&key](const char* a)
             {
                 return key == a;
