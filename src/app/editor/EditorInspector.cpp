@@ -396,6 +396,12 @@ void EditorScreen::birdTab()
     ImGui::PushItemWidth(-120.0f * m_app.uiScale());
     if (playing())
     {
+        // The world runs or stands still; the panels work either way.
+        if (ImGui::Button(m_play->frozen() ? "Resume (P)" : "Pause (P)"))
+            m_play->setFrozen(!m_play->frozen());
+        ImGui::SameLine();
+        if (ImGui::Button("Step 1/60 s") && m_play->frozen())
+            m_play->stepOnce();
         heading("Launch");
         const double maxSpeed = m_play->maxSpeedMps();
         // The sliders show the aim however it was set (mouse, keys or these sliders).
@@ -406,7 +412,22 @@ void EditorScreen::birdTab()
         }
         bool aimChanged = sliderDouble("Angle (\u00B0)", m_playAngleDeg, -90.0, 90.0, "%.1f");
         m_playSpeedMps = std::min(m_playSpeedMps, maxSpeed);
-        aimChanged |= sliderDouble("Speed (m/s)", m_playSpeedMps, 0.0, std::max(maxSpeed, 0.1), "%.2f");
+        ImGui::Checkbox("Set the force instead of the speed", &m_aimByForce);
+        const BirdType* bird = m_play->session().currentBird();
+        const double releaseS = m_play->session().catalog().slingshotReleaseTimeS();
+        if (m_aimByForce && bird != nullptr)
+        {
+            // F = m v0 / t: the same pull sends a heavy bird slower.
+            double force = m_playSpeedMps * bird->massKg / releaseS;
+            const double maxForce = maxSpeed * bird->massKg / releaseS;
+            if (sliderDouble("Force (N)", force, 0.0, std::max(maxForce, 0.1), "%.0f"))
+            {
+                m_playSpeedMps = force * releaseS / bird->massKg;
+                aimChanged = true;
+            }
+        }
+        else
+            aimChanged |= sliderDouble("Speed (m/s)", m_playSpeedMps, 0.0, std::max(maxSpeed, 0.1), "%.2f");
         if (aimChanged)
             m_play->aimAt(m_playAngleDeg, m_playSpeedMps);
         if (const auto aim = m_play->aim())
@@ -417,7 +438,7 @@ void EditorScreen::birdTab()
             m_play->aimAt(m_playAngleDeg, m_playSpeedMps);
             m_play->fire();
         }
-        if (ImGui::Button("Replay from the start (R)", ImVec2(-FLT_MIN, 0.0f)))
+        if (ImGui::Button("Play the scene again from the start (R)", ImVec2(-FLT_MIN, 0.0f)))
             m_play->restart();
         const GameSession& session = m_play->session();
         ImGui::Text("Birds left: %d", session.birdsRemaining());
@@ -429,41 +450,10 @@ void EditorScreen::birdTab()
                                          : "All birds are used. R plays the scene again; Esc returns to editing.");
     }
 
-    heading("Birds, in launch order");
-    std::vector<std::string> names;
-    for (const BirdType& bird : Catalog::builtin().birds())
-        names.push_back(bird.name);
-    if (next.customBird)
-        names.emplace_back(kCustomBirdName);
-    for (std::size_t i = 0; i < next.birds.size(); ++i)
-    {
-        ImGui::PushID(static_cast<int>(i));
-        if (ImGui::BeginCombo("##bird", next.birds[i].c_str()))
-        {
-            for (const std::string& name : names)
-                if (ImGui::Selectable(name.c_str(), name == next.birds[i]))
-                {
-                    next.birds[i] = name;
-                    setProperties(next, "Bird", "");
-                }
-            ImGui::EndCombo();
-        }
-        ImGui::SameLine();
-        if (ImGui::SmallButton("x") && next.birds.size() > 1)
-        {
-            next.birds.erase(next.birds.begin() + static_cast<std::ptrdiff_t>(i));
-            setProperties(next, "Remove a bird", "");
-            ImGui::PopID();
-            break;
-        }
-        ImGui::PopID();
-    }
-    if (next.birds.size() < 20 && ImGui::Button("Add a bird"))
-    {
-        next.birds.push_back(next.birds.back());
-        setProperties(next, "Add a bird", "");
-    }
-
+    // The birds list and the slingshot belong to the scene; the running copy keeps its own until it is played
+    // again, so they are edited while the scene is not playing.
+    if (!playing())
+        birdListAndSlingshot(next);
     heading("Custom bird (PhET Lab's ranges)");
     bool custom = next.customBird.has_value();
     if (ImGui::Checkbox("Use a custom bird", &custom))
@@ -504,6 +494,46 @@ void EditorScreen::birdTab()
                 ImGui::TextWrapped("%s", text.c_str());
         }
     }
+    ImGui::PopItemWidth();
+}
+
+void EditorScreen::birdListAndSlingshot(LevelDef& next)
+{
+    heading("Birds, in launch order");
+    std::vector<std::string> names;
+    for (const BirdType& bird : Catalog::builtin().birds())
+        names.push_back(bird.name);
+    if (next.customBird)
+        names.emplace_back(kCustomBirdName);
+    for (std::size_t i = 0; i < next.birds.size(); ++i)
+    {
+        ImGui::PushID(static_cast<int>(i));
+        if (ImGui::BeginCombo("##bird", next.birds[i].c_str()))
+        {
+            for (const std::string& name : names)
+                if (ImGui::Selectable(name.c_str(), name == next.birds[i]))
+                {
+                    next.birds[i] = name;
+                    setProperties(next, "Bird", "");
+                }
+            ImGui::EndCombo();
+        }
+        ImGui::SameLine();
+        if (ImGui::SmallButton("x") && next.birds.size() > 1)
+        {
+            next.birds.erase(next.birds.begin() + static_cast<std::ptrdiff_t>(i));
+            setProperties(next, "Remove a bird", "");
+            ImGui::PopID();
+            break;
+        }
+        ImGui::PopID();
+    }
+    if (next.birds.size() < 20 && ImGui::Button("Add a bird"))
+    {
+        next.birds.push_back(next.birds.back());
+        setProperties(next, "Add a bird", "");
+    }
+
     heading("Slingshot");
     double force = next.slingshot.maxForceN;
     if (sliderDouble("Max force (N)", force, 1.0, 1.0e6, "%.0f", ImGuiSliderFlags_Logarithmic))
@@ -512,7 +542,6 @@ void EditorScreen::birdTab()
         setProperties(next, "Slingshot force", "force");
     }
     endGestureIfReleased();
-    ImGui::PopItemWidth();
 }
 
 void EditorScreen::materialsTab()

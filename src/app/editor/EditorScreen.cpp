@@ -194,6 +194,8 @@ void EditorScreen::handleKey(const sf::Event::KeyEvent& key)
     {
         if (key.code == K::Escape)
             stopPlay();
+        else if (key.code == K::P)
+            m_play->setFrozen(!m_play->frozen()); // paused or running, the panels stay live
         else
         {
             sf::Event event;
