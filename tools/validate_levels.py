@@ -109,8 +109,12 @@ def main():
         "birds": item_props["birds"]["items"]["enum"],
         "pigs": item_props["pigs"]["items"]["properties"]["type"]["enum"],
     }
+    # A level's own bird is "custom" in its birds list; its material overrides are keyed by material name.
+    extra = {"birds": ["custom"]}
+    enums["material overrides"] = list(item_props["materials"]["properties"])
     for table, names in enums.items():
-        expected = [entry["name"] for entry in catalog[table]]
+        source = "materials" if table == "material overrides" else table
+        expected = [entry["name"] for entry in catalog[source]] + extra.get(table, [])
         if sorted(names) != sorted(expected):
             failures.append(f"schema {table} {names} differ from assets/catalog.json {expected}")
 

@@ -18,6 +18,7 @@ int main(int argc, char** argv)
     commands["predict"] = addPredictCommand(app);
     commands["simulate"] = addSimulateCommand(app);
     commands["play"] = addPlayCommand(app);
+    commands["edit"] = addEditCommand(app);
     commands["bench"] = addBenchCommand(app);
     commands["check"] = addCheckCommand(app);
     commands["solve"] = addSolveCommand(app);

@@ -24,6 +24,8 @@ struct GustDef
         double startS = 0.0; ///< the step holds from this time until the next step starts
         double windX = 0.0;
         double windY = 0.0;
+
+        bool operator==(const Step&) const = default;
     };
     Kind kind = Kind::Steps;
     std::vector<Step> steps; ///< Kind::Steps, sorted by startS
@@ -31,6 +33,8 @@ struct GustDef
     double amplitudeY = 0.0;
     double periodS = 1.0;
     double phaseRad = 0.0;
+
+    bool operator==(const GustDef&) const = default;
 
     /// Gust wind at time t (m/s), without the constant wind.
     std::array<double, 2> windAt(double t) const;

@@ -44,7 +44,9 @@ struct ShotRecord
     std::optional<FlightEnergy> energy;
     std::optional<FirstImpact> impact; ///< the first contact, when it was with a block or a pig
     int pigsDefeated = 0;              ///< pigs defeated while this shot was under way
-    int accuracyPoints = 0;            ///< this shot's share of ScoreBreakdown::accuracyBonus
+    /// The air or gravity changed while it flew (the sandbox): the prediction made at launch no longer applies.
+    bool environmentChanged = false;
+    int accuracyPoints = 0; ///< this shot's share of ScoreBreakdown::accuracyBonus
 };
 
 /// A launch the rules do not allow (no bird, not aiming, too fast); the message says why.
@@ -89,6 +91,11 @@ public:
     PredictedFlight preview(double angleDeg, double speedMps) const;
     /// Launches the current bird. Throws LaunchError when not aiming or faster than the bird can be launched.
     void launch(double angleDeg, double speedMps);
+    /// Changes gravity, air and wind now, even mid-flight (the sandbox's live environment). A shot in the air is
+    /// marked environmentChanged and gets no deviation or accuracy points; later previews use the new air.
+    void setEnvironment(const EnvironmentDef& environment);
+    /// Changes the level's custom bird for the birds not yet launched (the sandbox's bird panel).
+    void setCustomBird(const CustomBirdDef& bird);
     /// Whether the flying bird's ability can be used now (see GameWorld::canActivateAbility).
     bool canActivateAbility() const;
     /// Uses the flying bird's ability (click or Space in flight); false if it cannot be used now.
@@ -108,6 +115,7 @@ public:
 
     const LevelDef& level() const { return m_level; }
     const GameWorld& world() const { return *m_world; }
+    /// The catalog as this level sees it (its material overrides and custom bird applied, see levelCatalog).
     const Catalog& catalog() const { return m_catalog; }
 
 private:
@@ -116,7 +124,7 @@ private:
     void updatePhase();
 
     LevelDef m_level;
-    const Catalog& m_catalog;
+    Catalog m_catalog;
     WorldSettings m_settings;
     std::unique_ptr<GameWorld> m_world;
     Phase m_phase = Phase::Aiming;

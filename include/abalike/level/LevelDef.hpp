@@ -30,6 +30,8 @@ struct BlockDef
     double heightM = 1.0;
     double angleDeg = 0.0;
     double wallM = 0.1; ///< HollowBox: wall thickness (m)
+
+    bool operator==(const BlockDef&) const = default;
 };
 
 /// A pig; it rests on whatever is below its centre.
@@ -38,6 +40,8 @@ struct PigDef
     std::string type = "small";
     double x = 0.0;
     double y = 0.0;
+
+    bool operator==(const PigDef&) const = default;
 };
 
 /// A static box of terrain (hills, platforms), centre and size in metres.
@@ -48,6 +52,8 @@ struct TerrainDef
     double widthM = 1.0;
     double heightM = 1.0;
     double angleDeg = 0.0;
+
+    bool operator==(const TerrainDef&) const = default;
 };
 
 /// Where birds are launched from and how hard.
@@ -56,6 +62,8 @@ struct SlingshotDef
     double x = 0.0;
     double y = 1.5;          ///< height of the pouch, where the bird leaves the slingshot
     double maxForceN = 1200; ///< largest launch force; v0 = F t_release / m
+
+    bool operator==(const SlingshotDef&) const = default;
 };
 
 /// The air and gravity of a level. Absent terms (zero, or no gusts) are not simulated.
@@ -66,6 +74,8 @@ struct EnvironmentDef
     double windX = 0.0;      ///< m/s
     double windY = 0.0;
     std::optional<GustDef> gusts; ///< time-varying wind on top of windX/windY (acts through drag)
+
+    bool operator==(const EnvironmentDef&) const = default;
 };
 
 /// A shot that shows off a level (benchmarks time it; designers replay it): angle in degrees, speed in m/s.
@@ -73,7 +83,36 @@ struct ReferenceShotDef
 {
     double angleDeg = 45.0;
     double speedMps = 0.0;
+
+    bool operator==(const ReferenceShotDef&) const = default;
 };
+
+/// This level's values for one catalog material; an absent value keeps the catalog's ("materials" in JSON).
+struct MaterialOverrideDef
+{
+    std::string material;                 ///< catalog name: wood, ice, stone
+    std::optional<double> densityKgPerM3; ///< bulk density; the world uses it x the catalog's slab depth
+    std::optional<double> friction;       ///< Coulomb friction coefficient
+    std::optional<double> restitution;    ///< 0 (no bounce) to 1
+    std::optional<double> strengthNs;     ///< impulse a block absorbs before it breaks (N s)
+
+    bool operator==(const MaterialOverrideDef&) const = default;
+};
+
+/// A bird the level defines itself, named "custom" in the birds list ("custom_bird" in JSON). Ranges are PhET
+/// Projectile Motion Lab's; where they leave what Box2D simulates well, the world collides it as a clamped body
+/// (see birdCollisionBody) while its flight uses these true values.
+struct CustomBirdDef
+{
+    double massKg = 4.0;
+    double diameterM = 0.5;
+    double dragCoefficient = 0.47; ///< Cd; a sphere is about 0.47
+
+    bool operator==(const CustomBirdDef&) const = default;
+};
+
+/// The name a level's birds list uses for its custom bird.
+inline constexpr const char* kCustomBirdName = "custom";
 
 /// A level, as designers write it in JSON (levels/*.json).
 struct LevelDef
@@ -94,7 +133,13 @@ struct LevelDef
     std::array<int, 3> starScores{10000, 20000, 30000}; ///< score for one, two and three stars
     std::optional<double> timeLimitS;                   ///< game time (s) to defeat every pig; none when absent
     std::optional<ReferenceShotDef> referenceShot;      ///< a first shot that shows the level off
-    std::string sourcePath;                             ///< file it was loaded from, for messages
+    /// A sandbox scene (the editor's): it may have no pig, and a campaign refuses it.
+    bool sandbox = false;
+    std::vector<MaterialOverrideDef> materials; ///< this level's material values, at most one per material
+    std::optional<CustomBirdDef> customBird;    ///< the bird the birds list calls "custom"
+    std::string sourcePath;                     ///< file it was loaded from, for messages
+
+    bool operator==(const LevelDef&) const = default;
 };
 
 } // namespace abalike

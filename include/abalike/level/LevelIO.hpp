@@ -42,6 +42,29 @@ LevelDef loadLevel(const std::string& path, const Catalog& catalog);
 /// Parses level JSON text; fileName is used in messages. Throws LevelLoadError.
 LevelDef parseLevel(std::string_view text, const std::string& fileName, const Catalog& catalog);
 
+/// A level read for editing: what loadLevel throws for (syntax, structure, values) it throws too, but the geometry
+/// checks' problems (overlaps, bounds, reach, the slingshot) are returned, so an editor can open the level with
+/// them marked on the objects.
+struct EditableLevel
+{
+    LevelDef level;
+    std::vector<LevelIssue> geometryIssues;
+};
+
+/// Reads a level file for editing. Throws LevelLoadError for everything but geometry problems.
+EditableLevel loadLevelForEditing(const std::string& path, const Catalog& catalog);
+
+/// Parses level JSON text for editing; fileName is used in messages. Throws LevelLoadError.
+EditableLevel parseLevelForEditing(std::string_view text, const std::string& fileName, const Catalog& catalog);
+
+/// The checks loadLevel makes of a level's values (types, ranges, names, required fields), without geometry, on a
+/// level in memory; issues have pointers and no line or column. Empty when the level would load.
+std::vector<LevelIssue> checkLevelFields(const LevelDef& level, const Catalog& catalog);
+
+/// The geometry checks loadLevel runs (overlaps, world bounds, reach, the slingshot, the reference shot), on a level
+/// in memory: each issue names its object by JSON pointer (/blocks/3) and has no line or column.
+std::vector<LevelIssue> checkLevelGeometry(const LevelDef& level, const Catalog& catalog);
+
 /// One episode of a campaign manifest.
 struct CampaignEpisode
 {

@@ -81,6 +81,11 @@ public:
     const BirdType* findBird(std::string_view name) const;
     const PigType* findPig(std::string_view name) const;
 
+    /// Replaces the material of the same name (a level's own values); throws std::invalid_argument if unknown.
+    void replaceMaterial(const Material& material);
+    /// Adds a bird type, or replaces the one of the same name (a level's custom bird).
+    void putBird(const BirdType& bird);
+
     const std::vector<Material>& materials() const { return m_materials; }
     const std::vector<BirdType>& birds() const { return m_birds; }
     const std::vector<PigType>& pigs() const { return m_pigs; }

@@ -4,6 +4,7 @@
 #include <abalike/flight/Prediction.hpp>
 #include <abalike/level/LevelDef.hpp>
 #include <abalike/world/Ability.hpp>
+#include <abalike/world/BirdBody.hpp>
 #include <abalike/world/Catalog.hpp>
 #include <abalike/world/FirstImpact.hpp>
 #include <array>
@@ -126,6 +127,13 @@ public:
     /// Velocity iterations of the settle step (see WorldSettings::settleIterations).
     int settleIterations() const { return m_settleIterations; }
 
+    /// Changes the air and gravity while the world runs (the sandbox's live environment): Box2D's gravity at once,
+    /// and the launched bird's flight model from its current state on. Split birds and eggs already in the air keep
+    /// the drag they were launched with.
+    void setEnvironment(const EnvironmentDef& environment);
+
+    /// The body a bird collides with in this level (its own, or clamped where Box2D would misbehave).
+    BirdBody birdBody(const BirdType& bird) const;
     /// Puts a bird at s0 and starts its free flight under the model. Returns its entity index.
     int launchBird(const BirdType& bird, const FlightModel& model, const FlightState& s0);
     /// Takes the launched bird out of the world (split birds and eggs stay until they rest).
@@ -168,6 +176,7 @@ public:
     std::vector<DestroyedEvent> takeDestroyedEvents();
 
     const LevelDef& level() const { return m_level; }
+    /// The catalog as this level sees it (its material overrides and custom bird applied, see levelCatalog).
     const Catalog& catalog() const { return m_catalog; }
     b2World& box2d() { return *m_world; }
     const b2World& box2d() const { return *m_world; }
@@ -212,7 +221,7 @@ private:
     void dropEgg(AbilityUse& use);
 
     LevelDef m_level;
-    const Catalog& m_catalog;
+    Catalog m_catalog;
     WorldSettings m_settings;
     std::unique_ptr<b2World> m_world;
     std::unique_ptr<ContactRecorder> m_contacts;
@@ -224,6 +233,7 @@ private:
     int m_settleIterations = 0;
     int m_lastSubsteps = 1;
     int m_stackSubsteps = 1;
+    double m_lightestBodyKg = 0.0;    ///< lightest block or pig at the start; 0 when there is none
     std::array<double, 3> m_extent{}; ///< left, right, bottom: beyond these a body has left the world
 
     int m_birdIndex = -1;

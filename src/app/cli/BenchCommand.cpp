@@ -52,7 +52,8 @@ CommandRunner addBenchCommand(CLI::App& app)
         sub->add_flag("--quick", args->options.quick, "fewer repetitions, for smoke tests");
         sub->callback([chosen, run = suite.run] { *chosen = run; });
     }
-    return [args, chosen] {
+    return [args, chosen]
+    {
         prepareOutDir(args->options.outDir);
         return (*chosen)(args->options);
     };

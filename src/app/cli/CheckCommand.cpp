@@ -132,7 +132,7 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
                                  std::to_string(report.rest->worstMassRatio.ratio) + ": " +
                                  report.rest->worstMassRatio.heavier + " on " + report.rest->worstMassRatio.lighter +
                                  ")");
-    if (a.solve && report.rest->passed())
+    if (a.solve && report.rest->passed() && !level.pigs.empty()) // a sandbox scene without pigs has nothing to win
     {
         SolverOptions options;
         options.threads = a.threads;
@@ -177,7 +177,7 @@ std::string summaryLine(const FileReport& r)
             line << (i ? "; " : "") << r.reasons[i];
         return line.str();
     }
-    line << " (" << r.level->id << ", stands still";
+    line << " (" << r.level->id << (r.level->sandbox ? ", sandbox scene" : "") << ", stands still";
     if (r.solution)
         line << "; solved: " << r.solution->outcome.score << " points, " << r.solution->outcome.stars << " star(s), "
              << r.solution->shots.size() << " shot(s)";
@@ -191,6 +191,7 @@ nlohmann::ordered_json reportJson(const FileReport& r)
     out["file"] = r.file;
     out["ok"] = r.ok();
     out["level"] = r.level ? nlohmann::ordered_json(r.level->id) : nullptr;
+    out["sandbox"] = r.level ? nlohmann::ordered_json(r.level->sandbox) : nullptr;
     nlohmann::ordered_json errors = nlohmann::ordered_json::array();
     for (const LevelIssue& issue : r.issues)
         errors.push_back({{"file", issue.file},

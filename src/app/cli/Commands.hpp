@@ -13,6 +13,7 @@ using CommandRunner = std::function<int()>;
 CommandRunner addPredictCommand(CLI::App& app);
 CommandRunner addSimulateCommand(CLI::App& app);
 CommandRunner addPlayCommand(CLI::App& app);
+CommandRunner addEditCommand(CLI::App& app);
 CommandRunner addBenchCommand(CLI::App& app);
 CommandRunner addCheckCommand(CLI::App& app);
 CommandRunner addSolveCommand(CLI::App& app);

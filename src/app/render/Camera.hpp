@@ -17,6 +17,13 @@ public:
     /// the ground about 12% above the bottom edge, zoomed out further if the tallest structure would not fit.
     static Camera fitLevel(const LevelDef& level, const Catalog& catalog, sf::Vector2u windowSize);
 
+    /// A view with the given world point (metres) at the window's top-left corner and scale: the editor pans and
+    /// zooms with it.
+    static Camera fromView(sf::Vector2f worldAtScreenOrigin, float pixelsPerMetre, sf::Vector2u windowSize)
+    {
+        return Camera(worldAtScreenOrigin, pixelsPerMetre, windowSize);
+    }
+
     sf::Vector2f toScreen(sf::Vector2f world) const { return m_transform.transformPoint(world); }
     sf::Vector2f toWorld(sf::Vector2f screen) const { return m_inverse.transformPoint(screen); }
     /// World metres to pixels, for drawing meshes built in world coordinates.

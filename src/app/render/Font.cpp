@@ -10,9 +10,11 @@
 namespace abalike::app
 {
 
-std::unique_ptr<sf::Font> loadGameFont()
+namespace
 {
-    // The player's choice first, then the font found when the game was configured, then Debian's path.
+/// The player's choice first, then the font found when the game was configured, then Debian's path.
+std::vector<std::string> fontCandidates()
+{
     std::vector<std::string> candidates;
     if (const char* fromEnvironment = std::getenv("ABALIKE_FONT"))
         candidates.emplace_back(fromEnvironment);
@@ -20,12 +22,22 @@ std::unique_ptr<sf::Font> loadGameFont()
     candidates.emplace_back(ABALIKE_FONT_FILE);
 #endif
     candidates.emplace_back("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
+    return candidates;
+}
 
-    for (const std::string& path : candidates)
+bool isFile(const std::string& path)
+{
+    // Check first: SFML reports every failed load on stderr, and a missing candidate is not an error.
+    std::error_code error;
+    return !path.empty() && std::filesystem::is_regular_file(path, error);
+}
+} // namespace
+
+std::unique_ptr<sf::Font> loadGameFont()
+{
+    for (const std::string& path : fontCandidates())
     {
-        // Check first: SFML reports every failed load on stderr, and a missing candidate is not an error.
-        std::error_code error;
-        if (path.empty() || !std::filesystem::is_regular_file(path, error))
+        if (!isFile(path))
             continue;
         auto font = std::make_unique<sf::Font>();
         if (font->loadFromFile(path))
@@ -33,6 +45,14 @@ std::unique_ptr<sf::Font> loadGameFont()
     }
     std::cerr << "abalike: no font found (install fonts-dejavu-core or set ABALIKE_FONT); playing without text\n";
     return nullptr;
+}
+
+std::string gameFontPath()
+{
+    for (const std::string& path : fontCandidates())
+        if (isFile(path))
+            return path;
+    return {};
 }
 
 } // namespace abalike::app

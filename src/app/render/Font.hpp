@@ -2,6 +2,7 @@
 
 #include <SFML/Graphics/Font.hpp>
 #include <memory>
+#include <string>
 
 namespace abalike::app
 {
@@ -10,5 +11,8 @@ namespace abalike::app
 /// /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf. When none loads, says so in one line on stderr and returns
 /// null; the game then runs without text.
 std::unique_ptr<sf::Font> loadGameFont();
+
+/// The game font's file, found the same way (the editor's panels load it into Dear ImGui); empty when none exists.
+std::string gameFontPath();
 
 } // namespace abalike::app

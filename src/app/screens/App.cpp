@@ -63,7 +63,9 @@ void App::openWindow()
 
 void App::openFirstScreen()
 {
-    if (m_options.level)
+    if (m_options.firstScreen)
+        m_screens.push(m_options.firstScreen(*this)); // another command's screen (abalike edit)
+    else if (m_options.level)
     {
         // A level given on the command line: straight into it. If it is a campaign level, "next" follows the
         // campaign from there.
@@ -173,7 +175,8 @@ bool App::handleGlobal(const sf::Event& event)
     switch (event.type)
     {
     case sf::Event::Closed:
-        quit(0);
+        if (Screen* top = m_screens.top(); top == nullptr || !top->onCloseRequest())
+            quit(0);
         return true;
     case sf::Event::Resized:
     {

@@ -4,12 +4,17 @@
 #include <abalike/level/LevelDef.hpp>
 #include <abalike/script/InputScript.hpp>
 
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace abalike::app
 {
+
+class App;
+class Screen;
 
 /// What `abalike play` was asked to do.
 struct AppOptions
@@ -25,6 +30,9 @@ struct AppOptions
     std::string tracePath;         ///< write what happens (screens, levels, shots) as JSON lines here
     std::optional<unsigned> width; ///< `--size` wins over the saved window size
     std::optional<unsigned> height;
+
+    /// Opens this screen first instead of the title or a level (`abalike edit` opens the editor this way).
+    std::function<std::unique_ptr<Screen>(App&)> firstScreen;
 
     /// A scripted run (frames, input script or shots) reads the player's files but never writes them.
     bool scripted() const { return frames.has_value() || hasScript || !shots.empty(); }

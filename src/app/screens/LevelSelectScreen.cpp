@@ -1,5 +1,6 @@
 #include "screens/LevelSelectScreen.hpp"
 
+#include "editor/EditorSource.hpp"
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
 #include "render/TextFormat.hpp"
@@ -12,9 +13,7 @@
 namespace abalike::app
 {
 
-LevelSelectScreen::LevelSelectScreen(App& app) : m_app(app), m_selected(continueLevel(app))
-{
-}
+LevelSelectScreen::LevelSelectScreen(App& app) : m_app(app), m_selected(continueLevel(app)) {}
 
 std::pair<std::size_t, std::size_t> LevelSelectScreen::place(std::size_t index) const
 {
@@ -97,6 +96,14 @@ void LevelSelectScreen::handleEvent(const sf::Event& event)
         case sf::Keyboard::Space:
             if (!m_app.campaign().levels.empty())
                 play(m_selected);
+            break;
+        case sf::Keyboard::E:
+            // The level editor on the selected level (issue 12), whether or not it is unlocked.
+            if (!m_app.campaign().levels.empty())
+            {
+                const CampaignLevel& level = m_app.campaign().levels[m_selected];
+                openEditor(m_app, EditorSource{level.level, level.path, {}, false});
+            }
             break;
         default:
             break;
@@ -237,6 +244,8 @@ void LevelSelectScreen::draw(sf::RenderTarget& target)
     else if (!unlocked)
         heading += "   (win the level before it to unlock)";
     drawLabel(target, *font, utf8(heading), {margin, detailY}, detailSize, palette::kStar);
+    drawLabel(target, *font, utf8("E: open in the editor"), {window.x - margin, detailY}, smallSize, palette::kTextDim,
+              Align::Right);
     detailY += font->getLineSpacing(detailSize);
     const std::vector<std::string> lesson = wrapText(*font, chosen.level.lesson, smallSize, window.x - 2.0f * margin);
     for (std::size_t l = 0; l < lesson.size() && l < 3; ++l, detailY += font->getLineSpacing(smallSize))

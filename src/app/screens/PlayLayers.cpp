@@ -1,6 +1,8 @@
 #include "screens/PlayLayer.hpp"
 #include "teach/TeachLayer.hpp"
 
+#include "editor/BirdBodyNotice.hpp"
+
 namespace abalike::app
 {
 
@@ -9,6 +11,7 @@ std::vector<std::unique_ptr<PlayLayer>> makePlayLayers(App& app)
     std::vector<std::unique_ptr<PlayLayer>> layers;
     // Bottom first: layers drawn later are drawn over earlier ones and see input first.
     layers.push_back(std::make_unique<TeachLayer>(app));
+    layers.push_back(std::make_unique<BirdBodyNotice>());
     return layers;
 }
 

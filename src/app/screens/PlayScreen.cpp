@@ -2,6 +2,7 @@
 
 #include "screens/App.hpp"
 #include "screens/PauseScreen.hpp"
+#include "screens/PlayDrawing.hpp"
 #include "screens/ResultsScreen.hpp"
 
 #include <abalike/level/LevelIO.hpp>
@@ -15,8 +16,6 @@ namespace abalike::app
 
 namespace
 {
-constexpr float kLastShotFade = 0.45f;
-
 sf::Vector2f toVector(const std::array<double, 2>& p)
 {
     return {static_cast<float>(p[0]), static_cast<float>(p[1])};
@@ -165,15 +164,7 @@ void PlayScreen::physicsStep()
     {
         const ScriptedShot shot = *m_requestedLaunch;
         m_requestedLaunch.reset();
-        try
-        {
-            m_session->launch(shot.angleDeg, shot.speedMps);
-            m_app.trace().write("launch", {{"angle_deg", shot.angleDeg}, {"speed", shot.speedMps}});
-        }
-        catch (const LaunchError& error)
-        {
-            m_app.notify(error.what());
-        }
+        launchRequested(m_app, *m_session, shot);
     }
     if (m_abilityRequested)
     {
@@ -314,25 +305,7 @@ void PlayScreen::onResize(sf::Vector2u size)
 
 void PlayScreen::draw(sf::RenderTarget& target)
 {
-    const GameSession& session = *m_session;
-    m_world.drawBackground(target, m_camera, session);
-
-    // While the next bird is aimed, the last shot stays as a faded reference.
-    const ShotRecord* lastShot = session.shots().empty() ? nullptr : &session.shots().back();
-    const float opacity = session.phase() == Phase::Aiming ? kLastShotFade : 1.0f;
-    if (lastShot != nullptr)
-        m_overlay.drawShotPaths(target, m_camera, *lastShot, opacity);
-    m_world.drawForeground(target, m_camera, session, m_aim.pullOffset());
-    if (lastShot != nullptr)
-        m_overlay.drawShotMarkers(target, m_camera, *lastShot, opacity);
-    if (m_preview)
-        m_overlay.drawPreview(target, m_camera, *m_preview);
-    for (const auto& layer : m_layers)
-        layer->drawWorld(target, *this);
-
-    m_hud.draw(target, target.getSize(), session, aim());
-    for (const auto& layer : m_layers)
-        layer->drawScreen(target, *this);
+    drawPlay(target, *this, m_world, m_overlay, m_hud, m_aim.pullOffset(), m_layers);
     m_reloadNotice.draw(target, target.getSize(), m_reloadErrors);
 }
 

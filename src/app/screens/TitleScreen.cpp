@@ -1,5 +1,6 @@
 #include "screens/TitleScreen.hpp"
 
+#include "editor/EditorSource.hpp"
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
 #include "screens/App.hpp"
@@ -35,6 +36,7 @@ TitleScreen::TitleScreen(App& app)
         {"levels", "Level select", hasCampaign},
         {"tutorial", "Tutorial", hasCampaign},
         {"lessons", "Lessons", true},
+        {"sandbox", "Sandbox and editor", true},
         {"help", "Controls", true},
         {"quit", "Quit", true},
     });
@@ -56,6 +58,8 @@ void TitleScreen::activate(const std::string& id)
         playTutorial(m_app);
     else if (id == "lessons")
         m_app.screens().push(std::make_unique<LessonSelectScreen>(m_app));
+    else if (id == "sandbox")
+        openEditor(m_app, sandboxSource());
     else if (id == "help")
         m_app.screens().push(std::make_unique<HelpScreen>(m_app));
     else if (id == "quit")

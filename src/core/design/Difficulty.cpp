@@ -1,6 +1,7 @@
 #include "design/ParallelFor.hpp"
 
 #include <abalike/design/Difficulty.hpp>
+#include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelFlight.hpp>
 
 #include <chrono>
@@ -35,8 +36,9 @@ Difficulty measureDifficulty(const LevelDef& level, std::size_t samples, std::ui
 {
     const auto start = std::chrono::steady_clock::now();
     std::vector<double> topSpeed;
+    const Catalog levelTable = levelCatalog(level, catalog); // with the level's custom bird
     for (const std::string& name : level.birds)
-        topSpeed.push_back(maxLaunchSpeed(level.slingshot, *catalog.findBird(name), catalog));
+        topSpeed.push_back(maxLaunchSpeed(level.slingshot, *levelTable.findBird(name), levelTable));
     std::vector<ShotOutcome> outcomes(samples);
     std::size_t done = 0;
     parallelFor(

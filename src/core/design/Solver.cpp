@@ -1,6 +1,7 @@
 #include "design/ParallelFor.hpp"
 
 #include <abalike/design/Solver.hpp>
+#include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelFlight.hpp>
 
 #include <chrono>
@@ -68,7 +69,8 @@ class Search
 {
 public:
     Search(const LevelDef& level, const Catalog& catalog, const SolverOptions& options)
-        : m_level(level), m_catalog(catalog), m_options(options), m_threads(workerCount(options.threads))
+        : m_level(level), m_catalog(levelCatalog(level, catalog)), m_options(options),
+          m_threads(workerCount(options.threads))
     {
         const std::size_t birds = level.birds.size();
         const std::size_t grid = static_cast<std::size_t>(std::max(1, options.angleSteps)) *
@@ -236,7 +238,7 @@ private:
     }
 
     const LevelDef& m_level;
-    const Catalog& m_catalog;
+    Catalog m_catalog; ///< as the level sees it (its custom bird, its materials)
     const SolverOptions& m_options;
     unsigned m_threads = 1;
     std::size_t m_estimate = 0;

@@ -1,4 +1,5 @@
 #include <abalike/game/GameSession.hpp>
+#include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelFlight.hpp>
 #include <box2d/box2d.h>
 #include <cmath>
@@ -14,7 +15,7 @@ constexpr double kShotTimeCapS = 20.0;
 } // namespace
 
 GameSession::GameSession(LevelDef level, const Catalog& catalog, WorldSettings settings)
-    : m_level(std::move(level)), m_catalog(catalog), m_settings(settings)
+    : m_level(std::move(level)), m_catalog(levelCatalog(m_level, catalog)), m_settings(settings)
 {
     for (const std::string& name : m_level.birds)
         if (m_catalog.findBird(name) == nullptr)
@@ -85,7 +86,8 @@ PredictedFlight GameSession::preview(double angleDeg, double speedMps) const
     settings.dtS = m_settings.dtS;
     PredictionLimits limits;
     limits.maxTimeS = 15.0;
-    const double radius = bird->radiusM;
+    // The preview casts the circle the world collides with (a tiny custom bird collides as a larger one).
+    const double radius = m_world->birdBody(*bird).radiusM;
     limits.contact = [this, radius](const FlightState& a, const FlightState& b)
     {
         return m_world->castCircle(radius, a, b);
@@ -132,6 +134,22 @@ void GameSession::launch(double angleDeg, double speedMps)
     ++m_nextBird;
     m_phase = Phase::Flying;
     m_shotStartTime = m_world->time();
+}
+
+void GameSession::setEnvironment(const EnvironmentDef& environment)
+{
+    if (environment == m_level.environment)
+        return;
+    m_level.environment = environment;
+    m_world->setEnvironment(environment);
+    if (m_phase == Phase::Flying && !m_shots.empty() && !m_shots.back().actualContact)
+        m_shots.back().environmentChanged = true;
+}
+
+void GameSession::setCustomBird(const CustomBirdDef& bird)
+{
+    m_level.customBird = bird;
+    m_catalog.putBird(customBirdType(bird)); // the flying bird keeps its own copy of the type
 }
 
 bool GameSession::canActivateAbility() const
@@ -218,7 +236,7 @@ void GameSession::updateBird()
     }
     // The prediction made at launch is only a claim about the flight that was launched: once an ability changed
     // that flight, the distance between the two contacts measures the ability, not the prediction.
-    const bool flightChanged = shot.ability && shot.ability->changedFlight;
+    const bool flightChanged = (shot.ability && shot.ability->changedFlight) || shot.environmentChanged;
     if (!shot.predictedContact || flightChanged)
         return;
     shot.deviationM =
@@ -251,7 +269,8 @@ void GameSession::updatePhase()
     if (!(birdsGone && m_world->isSettled()) && !timeUp)
         return;
     m_world->removeAllBirds();
-    if (m_world->pigsAlive() == 0)
+    // A sandbox scene without pigs is never won: it is played until its birds are used up.
+    if (m_world->pigsAlive() == 0 && !m_level.pigs.empty())
     {
         m_score.unusedBirds = birdsRemaining();
         m_score.unusedBirdBonus = birdsRemaining() * m_catalog.pointsPerUnusedBird();

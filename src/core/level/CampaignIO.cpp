@@ -1,5 +1,6 @@
 #include "level/JsonLocator.hpp"
 #include "level/JsonText.hpp"
+#include "level/LevelLimits.hpp"
 #include "level/LevelReader.hpp"
 
 #include <abalike/level/LevelIO.hpp>
@@ -12,6 +13,22 @@ namespace abalike
 namespace
 {
 constexpr JsonTextLimits kManifestText{1u << 20, 16, "a campaign manifest"};
+constexpr JsonTextLimits kLevelText{limits::kMaxLevelBytes, limits::kMaxNesting, "a level"};
+
+/// True if the file is a level that says "sandbox": true. Anything unreadable is left to the level loader.
+bool isSandboxScene(const std::string& path)
+{
+    try
+    {
+        const nlohmann::json root = parseJsonText(readJsonFile(path, kLevelText), path, kLevelText);
+        const auto it = root.is_object() ? root.find("sandbox") : root.end();
+        return it != root.end() && it->is_boolean() && it->get<bool>();
+    }
+    catch (const LevelLoadError&)
+    {
+        return false;
+    }
+}
 } // namespace
 
 bool isCampaignManifest(const std::string& path)
@@ -64,7 +81,17 @@ std::vector<CampaignEpisode> loadCampaignEpisodes(const std::string& manifestPat
                 for (std::size_t l = 0; l < levels->size(); ++l)
                 {
                     if ((*levels)[l].is_string())
+                    {
                         item.levelPaths.push_back((folder / (*levels)[l].get<std::string>()).string());
+                        if (isSandboxScene(item.levelPaths.back()))
+                        {
+                            std::string message = "\"";
+                            message += (*levels)[l].get<std::string>();
+                            message += "\" is a sandbox scene (expected a level to play: a campaign lists no "
+                                       "\"sandbox\": true scene)";
+                            r.error(p + "/levels/" + std::to_string(l), message);
+                        }
+                    }
                     else
                         r.error(p + "/levels/" + std::to_string(l),
                                 "expected a level file name, got " + describeJsonType((*levels)[l]));

@@ -4,6 +4,7 @@
 #include "level/Reach.hpp"
 
 #include <abalike/level/LevelFlight.hpp>
+#include <abalike/world/BirdBody.hpp>
 #include <abalike/world/Catalog.hpp>
 
 #include <algorithm>
@@ -29,6 +30,12 @@ struct Body
     Outline outline;
     bool isStatic = false;
 };
+
+/// The radius the world collides a bird with (a tiny custom bird collides as a larger ball).
+double collisionRadius(const BirdType& bird)
+{
+    return birdCollisionBody(bird, 0.0).radiusM;
+}
 
 std::string metres(double value)
 {
@@ -121,9 +128,9 @@ void checkSlingshot(const LevelDef& level, const Catalog& catalog, const std::ve
     double radius = 0.0;
     std::string widest;
     for (const std::string& name : level.birds)
-        if (const BirdType* bird = catalog.findBird(name); bird && bird->radiusM > radius)
+        if (const BirdType* bird = catalog.findBird(name); bird && collisionRadius(*bird) > radius)
         {
-            radius = bird->radiusM;
+            radius = collisionRadius(*bird);
             widest = name;
         }
     const Outline pouch = circleOutline(level.slingshot.x, level.slingshot.y, radius);
@@ -166,7 +173,7 @@ void checkReach(const LevelDef& level, const Catalog& catalog, LevelReader& r)
             continue;
         const double speed = maxLaunchSpeed(level.slingshot, *bird, catalog);
         fastest = std::max(fastest, speed);
-        birdRadius = std::max(birdRadius, bird->radiusM);
+        birdRadius = std::max(birdRadius, collisionRadius(*bird));
         const ReachEnvelope envelope = reachEnvelope(levelFlightModel(level.environment, *bird), level.slingshot.x,
                                                      level.slingshot.y, speed, xs, floorY, kBirdLifetimeS);
         farthest = std::max(farthest, envelope.farthestX);

@@ -4,8 +4,10 @@
 #include "level/LevelReader.hpp"
 #include "level/LevelSections.hpp"
 
+#include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/level/SafeText.hpp>
+#include <abalike/level/LevelWriter.hpp>
 #include <abalike/world/Catalog.hpp>
 
 #include <cmath>
@@ -116,10 +118,18 @@ void readPigs(LevelReader& r, const json& root, LevelDef& level, const Catalog& 
     const auto it = root.find("pigs");
     if (it == root.end())
     {
-        r.error("", "missing required key \"pigs\" (expected an array with at least one pig)");
+        if (!level.sandbox)
+            r.error("", "missing required key \"pigs\" (expected an array with at least one pig, or \"sandbox\": "
+                        "true for a scene without pigs)");
         return;
     }
-    if (!r.array(*it, "/pigs", 1, kMaxPigs, "pigs"))
+    if (it->is_array() && it->empty() && !level.sandbox)
+    {
+        r.error("/pigs", "wrong number of pigs (expected 1 to " + std::to_string(kMaxPigs) +
+                             ", got 0); only a \"sandbox\": true scene may have no pig");
+        return;
+    }
+    if (!r.array(*it, "/pigs", level.sandbox ? 0 : 1, kMaxPigs, "pigs"))
         return;
     const auto pigTypes = names(catalog.pigs());
     for (std::size_t i = 0; i < it->size(); ++i)
@@ -168,7 +178,8 @@ void readBirds(LevelReader& r, const json& root, LevelDef& level, const Catalog&
     }
     if (!r.array(*it, "/birds", 1, kMaxBirds, "birds"))
         return;
-    const auto birdTypes = names(catalog.birds());
+    auto birdTypes = names(catalog.birds());
+    birdTypes.push_back(kCustomBirdName);
     for (std::size_t i = 0; i < it->size(); ++i)
     {
         const std::string p = "/birds/" + std::to_string(i);
@@ -179,6 +190,9 @@ void readBirds(LevelReader& r, const json& root, LevelDef& level, const Catalog&
         }
         const std::string name = (*it)[i].get<std::string>();
         checkName(r, p, "bird", name, birdTypes);
+        if (name == kCustomBirdName && !root.contains("custom_bird"))
+            r.error(p, "the level defines no custom bird (expected a \"custom_bird\" object with \"mass_kg\", "
+                       "\"diameter_m\" and \"drag_coefficient\")");
         level.birds.push_back(name);
     }
 }
@@ -271,6 +285,14 @@ void readHeader(LevelReader& r, const json& root, LevelDef& level)
     level.title = nonEmptyString(r, root, "title", true);
     level.episode = nonEmptyString(r, root, "episode", false);
     level.lesson = r.string(root, "", "concept", "", false);
+    if (const auto sandbox = root.find("sandbox"); sandbox != root.end())
+    {
+        if (sandbox->is_boolean())
+            level.sandbox = sandbox->get<bool>();
+        else
+            r.error("/sandbox", "expected true (a sandbox scene, which may have no pig) or false, got " +
+                                    describeJsonType(*sandbox));
+    }
     if (root.contains("time_limit_s"))
         level.timeLimitS =
             r.number(root, "", "time_limit_s", 0.0, true, NumberRange{kMinTimeLimitS, kMaxTimeLimitS, "s"});
@@ -295,7 +317,19 @@ LevelLoadError::LevelLoadError(std::vector<LevelIssue> issues)
 {
 }
 
-LevelDef parseLevel(std::string_view text, const std::string& fileName, const Catalog& catalog)
+namespace
+{
+
+/// What parsing does with the geometry checks.
+enum class Geometry
+{
+    Errors,   ///< they are errors like any other (loadLevel)
+    Returned, ///< they go into the caller's list (the editor)
+    Skipped,  ///< not run (checking the values alone)
+};
+
+LevelDef parseLevelText(std::string_view text, const std::string& fileName, const Catalog& catalog,
+                        Geometry geometryMode, std::vector<LevelIssue>* geometryIssues = nullptr)
 {
     const json root = parseJsonText(text, fileName, kLevelText);
     const JsonLocator locator(text);
@@ -304,9 +338,9 @@ LevelDef parseLevel(std::string_view text, const std::string& fileName, const Ca
     r.safeText(root);
     LevelDef level;
     level.sourcePath = fileName;
-    if (!r.object(root, "",
-                  {"$schema", "format", "id", "title", "episode", "concept", "hints", "ground", "slingshot", "birds",
-                   "blocks", "pigs", "terrain", "environment", "stars", "time_limit_s", "reference_shot"}))
+    if (!r.object(root, "", {"$schema", "format",      "id",        "title", "episode",      "concept",       "hints",
+                             "sandbox", "ground",      "slingshot", "birds", "custom_bird",  "blocks",        "pigs",
+                             "terrain", "environment", "materials", "stars", "time_limit_s", "reference_shot"}))
         throw LevelLoadError(r.take());
 
     readHeader(r, root, level);
@@ -317,16 +351,71 @@ LevelDef parseLevel(std::string_view text, const std::string& fileName, const Ca
     readPigs(r, root, level, catalog);
     readTerrain(r, root, level);
     readEnvironment(r, root, level);
+    readMaterialOverrides(r, root, level, catalog);
+    readCustomBird(r, root, level);
     readStars(r, root, level);
     readReferenceShot(r, root, level, catalog);
+    if (!r.ok())
+        throw LevelLoadError(r.take());
 
     // Geometry and reach only mean something once every field read cleanly; a fallback value would only add
     // confusing follow-on errors.
-    if (r.ok())
-        checkLevel(level, catalog, r);
-    if (!r.ok())
-        throw LevelLoadError(r.take());
+    if (geometryMode == Geometry::Skipped)
+        return level;
+    LevelReader geometry(fileName, locator);
+    checkLevel(level, levelCatalog(level, catalog), geometry);
+    if (geometryMode == Geometry::Returned)
+        *geometryIssues = geometry.take();
+    else if (!geometry.ok())
+        throw LevelLoadError(geometry.take());
     return level;
+}
+
+} // namespace
+
+LevelDef parseLevel(std::string_view text, const std::string& fileName, const Catalog& catalog)
+{
+    return parseLevelText(text, fileName, catalog, Geometry::Errors);
+}
+
+EditableLevel parseLevelForEditing(std::string_view text, const std::string& fileName, const Catalog& catalog)
+{
+    EditableLevel out;
+    out.level = parseLevelText(text, fileName, catalog, Geometry::Returned, &out.geometryIssues);
+    return out;
+}
+
+EditableLevel loadLevelForEditing(const std::string& path, const Catalog& catalog)
+{
+    return parseLevelForEditing(readJsonFile(path, kLevelText), path, catalog);
+}
+
+std::vector<LevelIssue> checkLevelFields(const LevelDef& level, const Catalog& catalog)
+{
+    // The same text the level would be saved as, read back by the same reader: one definition of what is valid.
+    try
+    {
+        parseLevelText(writeLevelJson(level, "schema/level.schema.json"), level.sourcePath, catalog, Geometry::Skipped);
+    }
+    catch (const LevelLoadError& e)
+    {
+        std::vector<LevelIssue> issues = e.issues();
+        for (LevelIssue& issue : issues)
+            issue.line = issue.column = 0;
+        return issues;
+    }
+    return {};
+}
+
+std::vector<LevelIssue> checkLevelGeometry(const LevelDef& level, const Catalog& catalog)
+{
+    const JsonLocator locator("null");
+    LevelReader r(level.sourcePath, locator);
+    checkLevel(level, levelCatalog(level, catalog), r);
+    std::vector<LevelIssue> issues = r.take();
+    for (LevelIssue& issue : issues)
+        issue.line = issue.column = 0; // a level in memory has no place in a file
+    return issues;
 }
 
 LevelDef loadLevel(const std::string& path, const Catalog& catalog)

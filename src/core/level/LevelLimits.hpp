@@ -29,6 +29,23 @@ inline constexpr double kMinTimeLimitS = 1.0;
 inline constexpr double kMaxTimeLimitS = 3600.0;
 inline constexpr long long kMaxStarScore = 100000000;
 
+/// A level's own material values ("materials"): balsa is about 150 kg/m^3, osmium 22 590; rubber on rubber reaches a
+/// friction of about 1.2.
+inline constexpr double kMinMaterialDensity = 50.0;
+inline constexpr double kMaxMaterialDensity = 25000.0;
+inline constexpr double kMaxFriction = 2.0;
+inline constexpr double kMinStrengthNs = 1.0;
+inline constexpr double kMaxStrengthNs = 1.0e6;
+
+/// A custom bird: PhET Projectile Motion Lab's ranges. Outside what Box2D simulates well the world collides it as a
+/// clamped body (world/BirdBody.hpp); its flight always uses these values.
+inline constexpr double kMinBirdMassKg = 0.01;
+inline constexpr double kMaxBirdMassKg = 5000.0;
+inline constexpr double kMinBirdDiameterM = 0.01;
+inline constexpr double kMaxBirdDiameterM = 3.0;
+inline constexpr double kMinDragCoefficient = 0.04;
+inline constexpr double kMaxDragCoefficient = 1.2;
+
 inline constexpr std::size_t kMaxBirds = 20;
 inline constexpr std::size_t kMaxBlocks = 1000;
 inline constexpr std::size_t kMaxPigs = 100;

@@ -2,6 +2,7 @@
 #include "world/Fixtures.hpp"
 #include "world/Skin.hpp"
 
+#include <abalike/level/LevelFlight.hpp>
 #include <abalike/world/GameWorld.hpp>
 #include <algorithm>
 #include <cmath>
@@ -46,6 +47,32 @@ b2Body* GameWorld::createBirdBody(int index, double radiusM, double massKg, doub
     return body;
 }
 
+BirdBody GameWorld::birdBody(const BirdType& bird) const
+{
+    return birdCollisionBody(bird, m_lightestBodyKg);
+}
+
+void GameWorld::setEnvironment(const EnvironmentDef& environment)
+{
+    m_level.environment = environment;
+    m_world->SetGravity(b2Vec2(0.0f, static_cast<float>(-environment.gravity)));
+    if (m_birdIndex < 0)
+        return;
+    const FlightModel model = levelFlightModel(environment, m_birdType);
+    IntegratorSettings flightSettings;
+    flightSettings.stepper = StepperKind::Rk4;
+    flightSettings.dtS = m_settings.dtS;
+    if (m_birdFlight)
+    {
+        // The flight goes on from where it is under the new forces; its time origin (gusts) stays the launch.
+        const double t = m_birdFlight->time();
+        const FlightState s = m_birdFlight->state();
+        m_birdFlight = std::make_unique<FlightIntegrator>(model, flightSettings);
+        m_birdFlight->reset(t, s);
+    }
+    m_birdModel = std::make_unique<FlightIntegrator>(model, flightSettings);
+}
+
 int GameWorld::launchBird(const BirdType& bird, const FlightModel& model, const FlightState& s0)
 {
     removeAllBirds();
@@ -56,7 +83,10 @@ int GameWorld::launchBird(const BirdType& bird, const FlightModel& model, const 
     entity.widthM = entity.heightM = 2.0 * bird.radiusM;
     m_birdIndex = addEntity(entity);
     m_birdType = bird;
-    b2Body* body = createBirdBody(m_birdIndex, bird.radiusM, bird.massKg, bird.friction, bird.restitution, s0);
+    // Free flight follows the model (true mass and size); Box2D collides the body it can simulate well.
+    const BirdBody collision = birdBody(bird);
+    b2Body* body =
+        createBirdBody(m_birdIndex, collision.radiusM, collision.massKg, bird.friction, bird.restitution, s0);
     body->SetGravityScale(0.0f); // in free flight the flight model supplies every force
 
     IntegratorSettings flightSettings;
@@ -183,10 +213,24 @@ void GameWorld::applyFlightForces(b2Body* body, const FlightIntegrator& model, d
     const b2Vec2 v = body->GetLinearVelocity();
     const FlightState s{p.x, p.y, v.x, v.y};
     const FlightState dsdt = model.rightHandSide(sinceLaunchS, s);
-    const double gravity = model.model().gravity;
+    const FlightModel& m = model.model();
+    double ax = dsdt[2];
+    double ay = dsdt[3] + m.gravity;
+    // Drag can at most bring the body to the air's velocity within a step. An explicit force larger than that (a
+    // light, wide bird: |lambda| dt > 1) would reverse the relative velocity and grow every step; limiting it is the
+    // stiff limit of implicit Euler. Ordinary birds are far from it (|lambda| dt < 0.1) and are not touched.
+    const std::array<double, 2> gust = m.gusts ? m.gusts->windAt(sinceLaunchS) : std::array<double, 2>{0.0, 0.0};
+    const double relX = s[2] - (m.windX + gust[0]);
+    const double relY = s[3] - (m.windY + gust[1]);
+    const double change = std::hypot(ax, ay) * m_settings.dtS;
+    const double relative = std::hypot(relX, relY);
+    if (change > relative && change > 0.0)
+    {
+        ax *= relative / change;
+        ay *= relative / change;
+    }
     const double mass = body->GetMass();
-    body->ApplyForceToCenter(b2Vec2(static_cast<float>(mass * dsdt[2]), static_cast<float>(mass * (dsdt[3] + gravity))),
-                             true);
+    body->ApplyForceToCenter(b2Vec2(static_cast<float>(mass * ax), static_cast<float>(mass * ay)), true);
 }
 
 void GameWorld::finishBirdStep(const std::array<double, 2>& stepStart)

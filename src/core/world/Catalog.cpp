@@ -143,6 +143,28 @@ const BirdType* Catalog::findBird(std::string_view name) const
     return findByName(m_birds, name);
 }
 
+void Catalog::replaceMaterial(const Material& material)
+{
+    for (Material& existing : m_materials)
+        if (existing.name == material.name)
+        {
+            existing = material;
+            return;
+        }
+    throw std::invalid_argument("unknown material \"" + material.name + "\"");
+}
+
+void Catalog::putBird(const BirdType& bird)
+{
+    for (BirdType& existing : m_birds)
+        if (existing.name == bird.name)
+        {
+            existing = bird;
+            return;
+        }
+    m_birds.push_back(bird);
+}
+
 const PigType* Catalog::findPig(std::string_view name) const
 {
     return findByName(m_pigs, name);

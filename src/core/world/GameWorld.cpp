@@ -1,6 +1,7 @@
 #include "world/ContactRecorder.hpp"
 #include "world/RollingResistance.hpp"
 
+#include <abalike/level/LevelCatalog.hpp>
 #include <abalike/world/GameWorld.hpp>
 #include <algorithm>
 #include <cmath>
@@ -23,7 +24,7 @@ constexpr int kMaxAutoSettle = 10000;
 } // namespace
 
 GameWorld::GameWorld(const LevelDef& level, const Catalog& catalog, const WorldSettings& settings)
-    : m_level(level), m_catalog(catalog), m_settings(settings)
+    : m_level(level), m_catalog(levelCatalog(level, catalog)), m_settings(settings)
 {
     if (!(settings.dtS > 0.0) || !std::isfinite(settings.dtS))
         throw std::invalid_argument("world time step must be a finite number > 0");

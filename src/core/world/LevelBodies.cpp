@@ -39,6 +39,12 @@ void GameWorld::buildLevel()
         include(p.x);
     for (const TerrainDef& t : m_level.terrain)
         include(t.x);
+    m_lightestBodyKg = 0.0;
+    const auto lightest = [this](double massKg)
+    {
+        if (m_lightestBodyKg == 0.0 || massKg < m_lightestBodyKg)
+            m_lightestBodyKg = massKg;
+    };
     const double left = minX - kWorldMarginM;
     const double right = maxX + kWorldMarginM;
     m_extent = {left, right, m_level.groundY - kWorldDepthM};
@@ -116,6 +122,7 @@ void GameWorld::buildLevel()
         fixture.restitution = static_cast<float>(material->restitution);
         addBlockFixtures(body, b, fixture, static_cast<float>(m_settings.cornerChamferM));
         setBodyMass(body, material->densityKgPerM2 * designedArea(b));
+        lightest(body->GetMass());
         m_entities[static_cast<std::size_t>(index)].body = body;
     }
 
@@ -146,6 +153,7 @@ void GameWorld::buildLevel()
         fixture.restitution = static_cast<float>(type->restitution);
         addCircleFixture(body, type->radiusM, fixture);
         setBodyMass(body, type->densityKgPerM2 * std::numbers::pi * type->radiusM * type->radiusM);
+        lightest(body->GetMass());
         m_entities[static_cast<std::size_t>(index)].body = body;
     }
 }

@@ -1,0 +1,84 @@
+#include "cli/WindowOptions.hpp"
+
+#include "cli/Arguments.hpp"
+#include "cli/UsageError.hpp"
+#include "input/ScriptedInput.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+namespace abalike::app
+{
+
+namespace
+{
+void requireFolderOf(const std::string& file, const char* option)
+{
+    const auto folder = std::filesystem::path(file).parent_path();
+    std::error_code ec;
+    if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+        throw UsageError(std::string(option) + ": folder " + folder.string() + " does not exist");
+}
+} // namespace
+
+void addWindowOptions(CLI::App& command, WindowArgs& args)
+{
+    command.add_option("--frames", args.frames, "exit after N frames (game time advances 1/60 s per frame)");
+    command.add_option("--screenshot", args.screenshot, "save the last frame to this PNG file");
+    command.add_option("--script", args.script,
+                       "JSON array of timed input events (keys, mouse, wheel, text) injected like real input");
+    command.add_option("--trace", args.trace, "write what happens (screens, levels, shots, results) as JSON lines");
+    command.add_option("--size", args.size, "window size WIDTHxHEIGHT (default: the saved size, 1280x720 at first)");
+}
+
+void applyWindowOptions(const WindowArgs& args, AppOptions& options)
+{
+    if (args.frames)
+    {
+        if (*args.frames <= 0)
+            throw UsageError("--frames: must be > 0, got " + std::to_string(*args.frames));
+        options.frames = args.frames;
+    }
+    if (!args.screenshot.empty())
+    {
+        requireFolderOf(args.screenshot, "--screenshot");
+        options.screenshotPath = args.screenshot;
+    }
+    if (!args.trace.empty())
+    {
+        requireFolderOf(args.trace, "--trace");
+        options.tracePath = args.trace;
+    }
+    if (!args.size.empty())
+    {
+        const auto [width, height] = parseSize(args.size);
+        options.width = width;
+        options.height = height;
+    }
+}
+
+void loadWindowScript(const WindowArgs& args, const SaveStore& store, AppOptions& options)
+{
+    if (!args.script.empty())
+    {
+        const unsigned width = options.width.value_or(store.settings().windowWidth);
+        const unsigned height = options.height.value_or(store.settings().windowHeight);
+        options.script = loadScript(args.script, width, height);
+        options.hasScript = true;
+    }
+}
+
+bool haveDisplay()
+{
+#if defined(__unix__) && !defined(__APPLE__)
+    if (std::getenv("DISPLAY") == nullptr)
+    {
+        std::cerr << "abalike: no display (DISPLAY is not set); for offline frames run under xvfb-run\n";
+        return false;
+    }
+#endif
+    return true;
+}
+
+} // namespace abalike::app

@@ -1,0 +1,37 @@
+#pragma once
+
+#include "screens/AppOptions.hpp"
+
+#include <CLI/CLI.hpp>
+#include <abalike/save/SaveStore.hpp>
+#include <optional>
+#include <string>
+
+namespace abalike::app
+{
+
+/// The options every command that opens the game window takes (play, edit): offline frames, a screenshot, an input
+/// script, a trace and the window size.
+struct WindowArgs
+{
+    std::optional<int> frames;
+    std::string screenshot;
+    std::string script;
+    std::string trace;
+    std::string size;
+};
+
+/// Registers --frames, --screenshot, --script, --trace and --size on a subcommand.
+void addWindowOptions(CLI::App& command, WindowArgs& args);
+
+/// Checks --frames, --screenshot, --trace and --size and fills them into options. Throws UsageError.
+void applyWindowOptions(const WindowArgs& args, AppOptions& options);
+
+/// Loads --script, if given: its coordinates are window pixels of the window the run opens (--size, else the saved
+/// size). Its errors throw as the script loader reports them.
+void loadWindowScript(const WindowArgs& args, const SaveStore& store, AppOptions& options);
+
+/// SFML aborts the process when it cannot reach an X server; false (with one line on stderr) when there is none.
+bool haveDisplay();
+
+} // namespace abalike::app

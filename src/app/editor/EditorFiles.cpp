@@ -1,0 +1,350 @@
+#include "editor/EditorScreen.hpp"
+
+#include "cli/DataPaths.hpp"
+#include "screens/App.hpp"
+
+#include <abalike/edit/Autosave.hpp>
+#include <abalike/save/DataDirectory.hpp>
+#include <abalike/save/SaveError.hpp>
+#include <algorithm>
+#include <imgui.h>
+#include <imgui_stdlib.h>
+#include <iostream>
+
+namespace abalike::app
+{
+
+namespace
+{
+/// Autosave at most this often while there are unsaved changes.
+constexpr auto kAutosaveEvery = std::chrono::seconds(5);
+
+/// Level files in a folder, sorted, for the open and save dialogs.
+std::vector<std::filesystem::path> levelFilesIn(const std::filesystem::path& folder)
+{
+    std::vector<std::filesystem::path> files;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
+        if (entry.path().extension() == ".json" && entry.path().filename() != "campaign.json")
+            files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+} // namespace
+
+std::filesystem::path EditorScreen::schemaPath() const
+{
+    return std::filesystem::path(levelsDirectory()) / "schema" / "level.schema.json";
+}
+
+std::filesystem::path EditorScreen::defaultSavePath() const
+{
+    if (!m_editor->path().empty())
+        return m_editor->path();
+    // A new scene goes with the player's files, not into the game's own levels.
+    const std::filesystem::path data = defaultDataDirectory();
+    const std::string name = (m_editor->level().id.empty() ? std::string("scene") : m_editor->level().id) + ".json";
+    return data.empty() ? std::filesystem::path(name) : data / "levels" / name;
+}
+
+void EditorScreen::requestSave()
+{
+    if (m_editor->path().empty())
+    {
+        m_fileDialogSaves = true;
+        m_fileDialogPath = defaultSavePath().string();
+        m_showFileDialog = true;
+        return;
+    }
+    saveTo(m_editor->path());
+}
+
+bool EditorScreen::saveTo(const std::filesystem::path& path)
+{
+    try
+    {
+        std::error_code ec;
+        if (path.has_parent_path() && !std::filesystem::exists(path.parent_path(), ec) &&
+            path.parent_path() == defaultSavePath().parent_path())
+            std::filesystem::create_directories(path.parent_path(), ec); // the player's own levels folder
+        const std::vector<LevelIssue> geometry = m_editor->save(path, schemaPath());
+        m_checks.setOpeningIssues({}, m_editor->revision());
+        if (!geometry.empty())
+            m_checks.runGeometry(m_editor->level(), m_editor->revision());
+        m_message = "Saved " + path.string() +
+                    (geometry.empty() ? std::string()
+                                      : " (" + std::to_string(geometry.size()) +
+                                            " geometry problem(s), marked: `abalike check` will fail it)");
+        m_messageIsError = !geometry.empty();
+        m_app.trace().write("editor-save", {{"path", path.string()}, {"problems", geometry.size()}});
+        if (!m_app.scripted())
+            removeAutosave(autosavePath(defaultDataDirectory()));
+        return true;
+    }
+    catch (const LevelLoadError& error)
+    {
+        m_message = "Not saved: " + (error.issues().empty()
+                                         ? std::string(error.what())
+                                         : error.issues().front().pointer + ": " + error.issues().front().message);
+    }
+    catch (const std::exception& error)
+    {
+        m_message = std::string("Not saved: ") + error.what();
+    }
+    m_messageIsError = true;
+    m_app.trace().write("editor-save-failed", {{"path", path.string()}, {"why", m_message}});
+    return false;
+}
+
+void EditorScreen::request(Pending action)
+{
+    if (m_editor->dirty() && action != Pending::None)
+    {
+        m_pending = action;
+        m_showUnsaved = true;
+        return;
+    }
+    carryOut(action);
+}
+
+void EditorScreen::carryOut(Pending action)
+{
+    m_pending = Pending::None;
+    switch (action)
+    {
+    case Pending::Leave:
+        stopPlay();
+        m_app.screens().pop();
+        break;
+    case Pending::Quit:
+        m_app.quit(0);
+        break;
+    case Pending::New:
+        resetScene(sandboxSource());
+        break;
+    case Pending::Open:
+        m_fileDialogSaves = false;
+        m_fileDialogPath = m_editor->path().empty() ? levelsDirectory() + "/" : m_editor->path().string();
+        m_showFileDialog = true;
+        break;
+    case Pending::None:
+        break;
+    }
+}
+
+void EditorScreen::resetScene(EditorSource source)
+{
+    stopPlay();
+    m_editor = std::make_unique<SceneEditor>(source.level);
+    m_editor->setPath(source.path);
+    m_checks.clear();
+    m_checks.setOpeningIssues(source.issues, m_editor->revision());
+    m_scene.reset();
+    m_tool = Tool::Select;
+    m_viewFitted = false;
+    m_message = source.path.empty() ? "New sandbox scene" : "Opened " + source.path.string();
+    m_messageIsError = false;
+    m_app.trace().write("editor", {{"level", m_editor->level().id}, {"path", source.path.string()}});
+}
+
+void EditorScreen::openFile(const std::filesystem::path& path)
+{
+    try
+    {
+        resetScene(editorSourceFor(path));
+        m_showFileDialog = false;
+    }
+    catch (const LevelLoadError& error)
+    {
+        m_message = error.issues().empty() ? error.what() : error.issues().front().format();
+        m_messageIsError = true;
+        for (const LevelIssue& issue : error.issues())
+            std::cerr << issue.format() << "\n";
+    }
+}
+
+void EditorScreen::autosaveIfDue()
+{
+    // Scripted runs never write the player's files.
+    if (m_app.scripted())
+        return;
+    if (!m_editor->dirty())
+    {
+        // Undone back to what was saved: nothing is left to recover.
+        if (m_autosaveWritten)
+            removeAutosave(autosavePath(defaultDataDirectory()));
+        m_autosaveWritten = false;
+        return;
+    }
+    if (m_editor->revision() == m_autosavedRevision)
+        return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - m_lastAutosave < kAutosaveEvery)
+        return;
+    m_lastAutosave = now;
+    m_autosavedRevision = m_editor->revision();
+    const std::filesystem::path dir = defaultDataDirectory();
+    if (dir.empty())
+        return;
+    try
+    {
+        std::error_code ec;
+        std::filesystem::create_directories(dir, ec);
+        writeAutosave(autosavePath(dir), m_editor->level(), m_editor->path(), Catalog::builtin());
+        m_autosaveWritten = true;
+    }
+    catch (const std::exception& error)
+    {
+        m_message = std::string("Autosave failed: ") + error.what();
+        m_messageIsError = true;
+    }
+}
+
+void EditorScreen::dialogs()
+{
+    if (m_recovered && !ImGui::IsPopupOpen("Recover an unsaved scene"))
+        ImGui::OpenPopup("Recover an unsaved scene");
+    recoverDialog();
+    if (m_showUnsaved && !ImGui::IsPopupOpen("Unsaved changes"))
+        ImGui::OpenPopup("Unsaved changes");
+    unsavedDialog();
+    const char* fileTitle = m_fileDialogSaves ? "Save level as" : "Open a level";
+    if (m_showFileDialog && !ImGui::IsPopupOpen(fileTitle))
+        ImGui::OpenPopup(fileTitle);
+    fileDialog();
+    m_modalOpen = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+}
+
+void EditorScreen::recoverDialog()
+{
+    const ImVec2 centre(0.5f * static_cast<float>(m_app.windowSize().x),
+                        0.5f * static_cast<float>(m_app.windowSize().y));
+    ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal("Recover an unsaved scene", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+        return;
+    const EditorSource& source = *m_recovered;
+    ImGui::Text("The editor kept a scene that was never saved:");
+    ImGui::BulletText("\"%s\", %zu blocks, %zu pigs", source.level.title.c_str(), source.level.blocks.size(),
+                      source.level.pigs.size());
+    ImGui::BulletText("it belongs to %s", source.path.empty() ? "no file yet" : source.path.string().c_str());
+    if (ImGui::Button("Open it"))
+    {
+        EditorSource recovered = std::move(*m_recovered);
+        m_recovered.reset();
+        resetScene(std::move(recovered));
+        m_editor->markUnsaved();
+        m_message = "Recovered the unsaved scene; save it to keep it.";
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard it"))
+    {
+        m_recovered.reset();
+        removeAutosave(autosavePath(defaultDataDirectory()));
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Not now"))
+    {
+        m_recovered.reset();
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+void EditorScreen::unsavedDialog()
+{
+    const ImVec2 centre(0.5f * static_cast<float>(m_app.windowSize().x),
+                        0.5f * static_cast<float>(m_app.windowSize().y));
+    ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+        return;
+    const std::string name = m_editor->path().empty() ? m_editor->level().title : m_editor->path().string();
+    ImGui::Text("\"%s\" has changes that are not saved.", name.c_str());
+    ImGui::TextDisabled("(An autosave keeps them in the data folder until you decide.)");
+    if (ImGui::Button("Save"))
+    {
+        m_showUnsaved = false;
+        ImGui::CloseCurrentPopup();
+        if (m_editor->path().empty())
+            requestSave(); // the save dialog carries on with the pending action once saved
+        else if (saveTo(m_editor->path()))
+            carryOut(m_pending);
+        else
+            m_pending = Pending::None;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard changes"))
+    {
+        m_showUnsaved = false;
+        ImGui::CloseCurrentPopup();
+        if (!m_app.scripted())
+            removeAutosave(autosavePath(defaultDataDirectory()));
+        carryOut(m_pending);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel"))
+    {
+        m_showUnsaved = false;
+        m_pending = Pending::None;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+void EditorScreen::fileDialog()
+{
+    const char* title = m_fileDialogSaves ? "Save level as" : "Open a level";
+    const sf::Vector2f window(m_app.windowSize());
+    ImGui::SetNextWindowPos(ImVec2(0.5f * window.x, 0.5f * window.y), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(std::min(window.x - 40.0f, 720.0f * m_app.uiScale()), 0.0f), ImGuiCond_Always);
+    if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoResize))
+        return;
+    ImGui::TextUnformatted("File:");
+    ImGui::PushItemWidth(-FLT_MIN);
+    if (ImGui::IsWindowAppearing())
+        ImGui::SetKeyboardFocusHere();
+    const bool entered = ImGui::InputText("##path", &m_fileDialogPath, ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::PopItemWidth();
+    // Level files nearby: the file's own folder, the game's levels and the player's.
+    std::vector<std::filesystem::path> folders{std::filesystem::path(m_fileDialogPath).parent_path(), levelsDirectory(),
+                                               defaultSavePath().parent_path()};
+    std::sort(folders.begin(), folders.end());
+    folders.erase(std::unique(folders.begin(), folders.end()), folders.end());
+    ImGui::BeginChild("files", ImVec2(0.0f, 9.0f * ImGui::GetTextLineHeightWithSpacing()), true);
+    for (const std::filesystem::path& folder : folders)
+        for (const std::filesystem::path& file : levelFilesIn(folder))
+            if (ImGui::Selectable(file.string().c_str(), file.string() == m_fileDialogPath,
+                                  ImGuiSelectableFlags_AllowDoubleClick))
+            {
+                m_fileDialogPath = file.string();
+                if (ImGui::IsMouseDoubleClicked(0) && !m_fileDialogSaves)
+                    openFile(file);
+            }
+    ImGui::EndChild();
+    if (m_messageIsError && !m_message.empty())
+        ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.45f, 1.0f), "%s", m_message.c_str());
+    const bool go = ImGui::Button(m_fileDialogSaves ? "Save" : "Open") || entered;
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel"))
+    {
+        m_showFileDialog = false;
+        m_pending = Pending::None;
+        ImGui::CloseCurrentPopup();
+    }
+    else if (go && !m_fileDialogPath.empty())
+    {
+        if (!m_fileDialogSaves)
+            openFile(m_fileDialogPath);
+        else if (saveTo(m_fileDialogPath))
+        {
+            m_showFileDialog = false;
+            carryOut(m_pending); // Save from the unsaved-changes prompt: now do what was asked
+        }
+        if (!m_showFileDialog)
+            ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+} // namespace abalike::app

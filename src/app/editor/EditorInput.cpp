@@ -1,0 +1,251 @@
+#include "editor/EditorScreen.hpp"
+
+#include "screens/App.hpp"
+
+#include <abalike/edit/Snapping.hpp>
+#include <cmath>
+#include <imgui.h>
+
+namespace abalike::app
+{
+
+namespace
+{
+constexpr float kZoomStep = 1.15f;
+constexpr float kHandlePx = 9.0f; ///< half the size of a resize handle
+constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+
+sf::Vector2f pixelOf(const sf::Event& event)
+{
+    switch (event.type)
+    {
+    case sf::Event::MouseMoved:
+        return {static_cast<float>(event.mouseMove.x), static_cast<float>(event.mouseMove.y)};
+    case sf::Event::MouseWheelScrolled:
+        return {static_cast<float>(event.mouseWheelScroll.x), static_cast<float>(event.mouseWheelScroll.y)};
+    default:
+        return {static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y)};
+    }
+}
+
+/// The top-right corner of a block or terrain piece in its own frame, where its resize handle is (m).
+std::optional<sf::Vector2f> handleCorner(const ObjectDef& def)
+{
+    double x = 0.0, y = 0.0, w = 0.0, h = 0.0, a = 0.0;
+    if (const auto* b = std::get_if<BlockDef>(&def))
+    {
+        x = b->x;
+        y = b->y;
+        w = b->widthM;
+        h = b->heightM;
+        a = b->angleDeg;
+    }
+    else if (const auto* t = std::get_if<TerrainDef>(&def))
+    {
+        x = t->x;
+        y = t->y;
+        w = t->widthM;
+        h = t->heightM;
+        a = t->angleDeg;
+    }
+    else
+        return std::nullopt;
+    const double c = std::cos(a * kDegToRad);
+    const double s = std::sin(a * kDegToRad);
+    return sf::Vector2f(static_cast<float>(x + c * w / 2 - s * h / 2), static_cast<float>(y + s * w / 2 + c * h / 2));
+}
+} // namespace
+
+std::optional<ObjectRef> EditorScreen::resizeHandleAt(sf::Vector2f pixel) const
+{
+    if (m_editor->selection().size() != 1)
+        return std::nullopt;
+    const ObjectRef ref = m_editor->selection()[0];
+    const auto corner = handleCorner(objectDef(m_editor->level(), ref));
+    if (!corner)
+        return std::nullopt;
+    const sf::Vector2f at = m_view.camera(m_app.windowSize()).toScreen(*corner);
+    const float reach = (kHandlePx + 3.0f) * m_app.uiScale();
+    if (std::abs(at.x - pixel.x) <= reach && std::abs(at.y - pixel.y) <= reach)
+        return ref;
+    return std::nullopt;
+}
+
+ObjectDef EditorScreen::toolObject(sf::Vector2f world) const
+{
+    switch (m_tool)
+    {
+    case Tool::Block:
+        return withCentre(m_blockTemplate, world.x, world.y);
+    case Tool::Pig:
+        return withCentre(m_pigTemplate, world.x, world.y);
+    case Tool::Terrain:
+        return withCentre(m_terrainTemplate, world.x, world.y);
+    case Tool::Slingshot:
+    {
+        SlingshotDef sling = m_editor->level().slingshot;
+        sling.x = world.x;
+        sling.y = world.y;
+        return sling;
+    }
+    case Tool::Select:
+        break;
+    }
+    return m_blockTemplate;
+}
+
+void EditorScreen::handleSceneMouse(const sf::Event& event)
+{
+    const sf::Vector2f pixel = pixelOf(event);
+    m_pointer = pixel;
+    const bool busy = m_dragFrom || m_bandFrom || m_panFrom || m_resizing;
+    const bool overPanels = pointerOverPanels(pixel) || ImGui::IsAnyItemActive();
+    m_pointerOnScene = !overPanels;
+    if (overPanels && !busy)
+        return;
+
+    if (event.type == sf::Event::MouseWheelScrolled)
+    {
+        m_view.zoomAt(pixel, std::pow(kZoomStep, event.mouseWheelScroll.delta));
+        return;
+    }
+    // Panning is the same in both modes: the right or middle button.
+    if (event.type == sf::Event::MouseButtonPressed &&
+        (event.mouseButton.button == sf::Mouse::Right || event.mouseButton.button == sf::Mouse::Middle))
+    {
+        m_panFrom = pixel;
+        return;
+    }
+    if (m_panFrom)
+    {
+        if (event.type == sf::Event::MouseMoved)
+        {
+            m_view.pan(pixel - *m_panFrom);
+            m_panFrom = pixel;
+        }
+        else if (event.type == sf::Event::MouseButtonReleased && event.mouseButton.button != sf::Mouse::Left)
+            m_panFrom.reset();
+        return;
+    }
+    if (event.type == sf::Event::MouseButtonPressed)
+        m_focusScene = true; // the keys belong to the scene again
+    if (playing())
+    {
+        m_play->handleEvent(event);
+        return;
+    }
+    if (event.type == sf::Event::MouseButtonPressed && event.mouseButton.button == sf::Mouse::Left)
+        pressOnScene(pixel, m_app.input().shift(), m_app.input().ctrl());
+    else if (event.type == sf::Event::MouseMoved)
+        moveOnScene(pixel);
+    else if (event.type == sf::Event::MouseButtonReleased && event.mouseButton.button == sf::Mouse::Left)
+        releaseOnScene(pixel);
+}
+
+void EditorScreen::pressOnScene(sf::Vector2f pixel, bool shift, bool ctrl)
+{
+    const sf::Vector2f world = m_view.toWorld(pixel);
+    if (m_tool != Tool::Select)
+    {
+        try
+        {
+            const ObjectRef placed = m_editor->place(toolObject(world));
+            const auto at = centreOf(objectDef(m_editor->level(), placed));
+            m_app.trace().write("editor-place", {{"object", pointerOf(placed)}, {"x", at[0]}, {"y", at[1]}});
+            m_message.clear();
+        }
+        catch (const std::exception& error)
+        {
+            m_message = error.what();
+            m_messageIsError = true;
+        }
+        // Shift places several; otherwise back to selecting, with the new object selected to adjust.
+        if (!shift)
+            m_tool = Tool::Select;
+        return;
+    }
+    if (const auto handle = resizeHandleAt(pixel))
+    {
+        m_resizing = handle;
+        return;
+    }
+    const std::optional<ObjectRef> hit = m_editor->objectAt(world.x, world.y);
+    if (!hit)
+    {
+        // A rectangle selects what it encloses; Shift or Ctrl adds to the selection.
+        m_bandFrom = world;
+        m_bandAdds = shift || ctrl;
+        return;
+    }
+    if (shift || ctrl)
+    {
+        m_editor->select(*hit, SelectMode::Toggle);
+        return;
+    }
+    m_editor->beginDrag(*hit);
+    m_dragFrom = world;
+}
+
+void EditorScreen::moveOnScene(sf::Vector2f pixel)
+{
+    const sf::Vector2f world = m_view.toWorld(pixel);
+    if (m_dragFrom)
+        m_editor->dragTo(world.x - m_dragFrom->x, world.y - m_dragFrom->y);
+    else if (m_resizing)
+    {
+        // The handle follows the pointer in the object's own frame; the bottom edge stays where it is.
+        const ObjectDef def = objectDef(m_editor->level(), *m_resizing);
+        double x = 0.0, y = 0.0, h = 0.0, a = 0.0;
+        if (const auto* b = std::get_if<BlockDef>(&def))
+            std::tie(x, y, h, a) = std::tuple(b->x, b->y, b->heightM, b->angleDeg);
+        else if (const auto* t = std::get_if<TerrainDef>(&def))
+            std::tie(x, y, h, a) = std::tuple(t->x, t->y, t->heightM, t->angleDeg);
+        const double c = std::cos(a * kDegToRad);
+        const double s = std::sin(a * kDegToRad);
+        const double dx = world.x - x;
+        const double dy = world.y - y;
+        const double localX = c * dx + s * dy;
+        const double localY = -s * dx + c * dy;
+        const double step = m_editor->snapSettings().grid ? m_editor->snapSettings().gridM : 0.01;
+        const auto snapped = [step](double v)
+        {
+            return std::max(step, std::round(v / step) * step);
+        };
+        const double width = snapped(2.0 * localX);
+        const double height = snapped(localY + h / 2.0);
+        const std::string why = m_editor->resizeObject(*m_resizing, width, height, "resize-handle");
+        if (!why.empty())
+        {
+            m_message = why;
+            m_messageIsError = true;
+        }
+    }
+}
+
+void EditorScreen::releaseOnScene(sf::Vector2f pixel)
+{
+    const sf::Vector2f world = m_view.toWorld(pixel);
+    if (m_dragFrom)
+    {
+        m_editor->endDrag();
+        m_dragFrom.reset();
+    }
+    if (m_resizing)
+    {
+        m_editor->endGesture();
+        m_resizing.reset();
+    }
+    if (m_bandFrom)
+    {
+        const sf::Vector2f from = *m_bandFrom;
+        m_bandFrom.reset();
+        const bool click = std::hypot(world.x - from.x, world.y - from.y) * m_view.pixelsPerMetre() < 4.0f;
+        if (click && !m_bandAdds)
+            m_editor->clearSelection();
+        else if (!click)
+            m_editor->selectInRect(from.x, from.y, world.x, world.y,
+                                   m_bandAdds ? SelectMode::Add : SelectMode::Replace);
+    }
+}
+
+} // namespace abalike::app

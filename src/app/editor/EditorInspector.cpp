@@ -1,0 +1,739 @@
+#include "editor/EditorScreen.hpp"
+
+#include "screens/App.hpp"
+
+#include <abalike/edit/Snapping.hpp>
+#include <abalike/flight/GravityPresets.hpp>
+#include <abalike/flight/StandardAtmosphere.hpp>
+#include <abalike/level/LevelCatalog.hpp>
+#include <abalike/world/BirdBody.hpp>
+#include <box2d/b2_body.h>
+#include <cstdio>
+#include <imgui.h>
+#include <imgui_internal.h>
+#include <imgui_stdlib.h>
+#include <regex>
+
+namespace abalike::app
+{
+
+namespace
+{
+constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                         ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoFocusOnAppearing |
+                                         ImGuiWindowFlags_NoSavedSettings;
+
+bool sliderDouble(const char* label, double& value, double min, double max, const char* format,
+                  ImGuiSliderFlags flags = 0)
+{
+    return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format, flags);
+}
+
+/// A number typed in: true on every edit, so the scene follows as it is typed (one undo step per field); `released`
+/// is set when the field is let go.
+bool inputDouble(const char* label, double& value, bool& released, const char* format = "%.3f")
+{
+    const bool changed = ImGui::InputDouble(label, &value, 0.0, 0.0, format);
+    released |= ImGui::IsItemDeactivated();
+    return changed;
+}
+
+void heading(const char* text)
+{
+    ImGui::Spacing();
+    ImGui::TextDisabled("%s", text);
+    ImGui::Separator();
+}
+
+const char* shapeNames[] = {"box", "circle", "triangle", "hollow_box"};
+
+/// The loader's messages name objects by JSON pointer ("overlaps /blocks/0"); the editor names them as it lists them.
+std::string readablePointers(const LevelDef& level, std::string text)
+{
+    static const std::regex pointer(R"(/(blocks|pigs|terrain)/\d+)");
+    std::string out;
+    std::sregex_iterator it(text.begin(), text.end(), pointer);
+    std::size_t last = 0;
+    for (; it != std::sregex_iterator(); ++it)
+    {
+        out += text.substr(last, static_cast<std::size_t>(it->position()) - last);
+        const auto ref = objectOfPointer(it->str());
+        out += ref ? describe(level, *ref) : it->str();
+        last = static_cast<std::size_t>(it->position() + it->length());
+    }
+    return out + text.substr(last);
+}
+} // namespace
+
+void EditorScreen::inspectorPanel()
+{
+    const float menu = ImGui::GetFrameHeight();
+    const float status = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().WindowPadding.y;
+    const sf::Vector2f window(m_app.windowSize());
+    const float width = window.x - sceneArea().left - sceneArea().width;
+    ImGui::SetNextWindowPos(ImVec2(window.x - width, menu), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width, window.y - menu - status), ImGuiCond_Always);
+    ImGui::Begin(playing() ? "Sandbox (playing)" : "Inspector", nullptr, kPanelFlags);
+    recordPanel();
+    if (ImGui::BeginTabBar("tabs"))
+    {
+        if (!playing() && ImGui::BeginTabItem("Object"))
+        {
+            selectionTab();
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Bird"))
+        {
+            birdTab();
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Air"))
+        {
+            environmentTab();
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Materials"))
+        {
+            materialsTab();
+            ImGui::EndTabItem();
+        }
+        if (!playing() && ImGui::BeginTabItem("Level"))
+        {
+            levelTab();
+            ImGui::EndTabItem();
+        }
+        if (!playing() && ImGui::BeginTabItem("Checks"))
+        {
+            checksTab();
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
+    }
+    ImGui::End();
+}
+
+void EditorScreen::selectionTab()
+{
+    const auto& selection = m_editor->selection();
+    if (selection.empty())
+    {
+        ImGui::TextWrapped("Nothing selected. Click an object, drag a rectangle around several, or pick something "
+                           "from the palette and click the scene to place it.");
+        return;
+    }
+    if (selection.size() > 1)
+    {
+        ImGui::Text("%zu objects selected", selection.size());
+    }
+    else
+    {
+        const ObjectRef ref = selection[0];
+        ImGui::TextUnformatted(describe(m_editor->level(), ref).c_str());
+        // Its mass as the world builds it (the scene's own material values included).
+        if (m_scene && (ref.kind == ObjectKind::Block || ref.kind == ObjectKind::Pig))
+            for (const Entity& entity : m_scene->world().entities())
+                if (entity.body != nullptr && entity.defIndex == static_cast<int>(ref.index) &&
+                    entity.kind == (ref.kind == ObjectKind::Block ? EntityKind::Block : EntityKind::Pig))
+                {
+                    ImGui::SameLine();
+                    ImGui::TextDisabled("  %.3g kg, breaks at %.3g N s", static_cast<double>(entity.body->GetMass()),
+                                        entity.maxHealth);
+                }
+        ObjectDef def = objectDef(m_editor->level(), ref);
+        bool changed = false;
+        const char* key = "";
+        ImGui::PushItemWidth(-110.0f * m_app.uiScale());
+        if (auto* block = std::get_if<BlockDef>(&def))
+        {
+            int shape = static_cast<int>(block->shape);
+            if (ImGui::Combo("Shape", &shape, shapeNames, 4))
+            {
+                block->shape = static_cast<BlockShape>(shape);
+                if (block->shape == BlockShape::Circle)
+                    block->heightM = block->widthM;
+                changed = true;
+            }
+            int material = 0;
+            const auto& materials = Catalog::builtin().materials();
+            std::vector<const char*> names;
+            for (std::size_t i = 0; i < materials.size(); ++i)
+            {
+                names.push_back(materials[i].name.c_str());
+                if (materials[i].name == block->material)
+                    material = static_cast<int>(i);
+            }
+            if (ImGui::Combo("Material", &material, names.data(), static_cast<int>(names.size())))
+            {
+                block->material = materials[static_cast<std::size_t>(material)].name;
+                changed = true;
+            }
+            changed |= inputDouble("x (m)", block->x, m_fieldReleased);
+            changed |= inputDouble("y (m)", block->y, m_fieldReleased);
+            changed |= inputDouble(block->shape == BlockShape::Circle ? "Diameter (m)" : "Width (m)", block->widthM,
+                                   m_fieldReleased);
+            if (block->shape != BlockShape::Circle)
+                changed |= inputDouble("Height (m)", block->heightM, m_fieldReleased);
+            else
+                block->heightM = block->widthM;
+            if (block->shape != BlockShape::Circle)
+                changed |= inputDouble("Angle (\u00B0)", block->angleDeg, m_fieldReleased, "%.1f");
+            if (block->shape == BlockShape::HollowBox)
+                changed |= inputDouble("Wall (m)", block->wallM, m_fieldReleased);
+            key = "object";
+        }
+        else if (auto* pig = std::get_if<PigDef>(&def))
+        {
+            int type = 0;
+            const auto& pigs = Catalog::builtin().pigs();
+            std::vector<const char*> names;
+            for (std::size_t i = 0; i < pigs.size(); ++i)
+            {
+                names.push_back(pigs[i].name.c_str());
+                if (pigs[i].name == pig->type)
+                    type = static_cast<int>(i);
+            }
+            if (ImGui::Combo("Type", &type, names.data(), static_cast<int>(names.size())))
+            {
+                pig->type = pigs[static_cast<std::size_t>(type)].name;
+                changed = true;
+            }
+            changed |= inputDouble("x (m)", pig->x, m_fieldReleased);
+            changed |= inputDouble("y (m)", pig->y, m_fieldReleased);
+        }
+        else if (auto* terrain = std::get_if<TerrainDef>(&def))
+        {
+            changed |= inputDouble("x (m)", terrain->x, m_fieldReleased);
+            changed |= inputDouble("y (m)", terrain->y, m_fieldReleased);
+            changed |= inputDouble("Width (m)", terrain->widthM, m_fieldReleased);
+            changed |= inputDouble("Height (m)", terrain->heightM, m_fieldReleased);
+            changed |= inputDouble("Angle (\u00B0)", terrain->angleDeg, m_fieldReleased, "%.1f");
+        }
+        else if (auto* sling = std::get_if<SlingshotDef>(&def))
+        {
+            changed |= inputDouble("x (m)", sling->x, m_fieldReleased);
+            changed |= inputDouble("Pouch y (m)", sling->y, m_fieldReleased);
+            changed |= inputDouble("Max force (N)", sling->maxForceN, m_fieldReleased, "%.0f");
+        }
+        ImGui::PopItemWidth();
+        (void)key;
+        if (changed)
+        {
+            // Typed values are checked as the loader would; a value it refuses waits in the field until it is fixed.
+            const std::string why =
+                m_editor->changeObject(ref, def, "Edit " + describe(m_editor->level(), ref), "object-fields");
+            m_message = why;
+            m_messageIsError = !why.empty();
+        }
+        // Typing into one field is one undo step; the next field, or the same one later, is another.
+        if (m_fieldReleased)
+            m_editor->endGesture();
+        m_fieldReleased = false;
+        for (const Finding* finding : m_checks.findingsOn(ref))
+        {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.5f, 0.45f, 1.0f));
+            ImGui::TextWrapped("! %s", readablePointers(m_editor->level(), finding->message).c_str());
+            ImGui::PopStyleColor();
+        }
+    }
+    ImGui::Spacing();
+    if (ImGui::Button("Duplicate"))
+        m_editor->duplicateSelection();
+    ImGui::SameLine();
+    if (ImGui::Button("Delete"))
+        m_editor->deleteSelection();
+    ImGui::SameLine();
+    if (ImGui::Button("\u21BA 15\u00B0"))
+    {
+        m_editor->rotateSelection(15.0);
+        m_editor->endGesture();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("\u21BB 15\u00B0"))
+    {
+        m_editor->rotateSelection(-15.0);
+        m_editor->endGesture();
+    }
+}
+
+void EditorScreen::environmentTab()
+{
+    LevelDef next = m_editor->level();
+    EnvironmentDef& env = next.environment;
+    ImGui::PushItemWidth(-120.0f * m_app.uiScale());
+    heading("Gravity");
+    if (sliderDouble("g (m/s\u00B2)", env.gravity, 0.0, 100.0, "%.2f", ImGuiSliderFlags_Logarithmic))
+        setProperties(next, "Gravity", "gravity");
+    endGestureIfReleased();
+    for (const GravityPreset& preset : gravityPresets())
+    {
+        const std::string label(preset.name);
+        if (ImGui::Button(label.c_str()))
+        {
+            env.gravity = preset.gravity;
+            setProperties(next, "Gravity preset", "");
+        }
+        ImGui::SameLine();
+    }
+    ImGui::NewLine();
+
+    heading("Air");
+    bool air = env.airDensity > 0.0;
+    if (ImGui::Checkbox("Air resistance", &air))
+    {
+        if (air)
+            env.airDensity = standardAtmosphereDensity(m_altitudeM);
+        else
+        {
+            // Wind acts only through drag: without air there is none.
+            env.airDensity = 0.0;
+            env.windX = env.windY = 0.0;
+            env.gusts.reset();
+        }
+        setProperties(next, air ? "Air on" : "Air off", "");
+    }
+    if (air)
+    {
+        if (sliderDouble("\u03C1 (kg/m\u00B3)", env.airDensity, 0.001, 10.0, "%.3f", ImGuiSliderFlags_Logarithmic))
+            setProperties(next, "Air density", "air");
+        endGestureIfReleased();
+        if (sliderDouble("Altitude (m)", m_altitudeM, 0.0, 20000.0, "%.0f"))
+        {
+            // The U.S. Standard Atmosphere 1976 gives the density at that height, as PhET's altitude slider does.
+            env.airDensity = standardAtmosphereDensity(m_altitudeM);
+            setProperties(next, "Altitude", "air");
+        }
+        endGestureIfReleased();
+        double wind[2] = {env.windX, env.windY};
+        const double windMax = 30.0;
+        const double windMin = -30.0;
+        if (ImGui::SliderScalarN("Wind (m/s)", ImGuiDataType_Double, wind, 2, &windMin, &windMax, "%.1f"))
+        {
+            env.windX = wind[0];
+            env.windY = wind[1];
+            setProperties(next, "Wind", "wind");
+        }
+        endGestureIfReleased();
+        int gustKind = !env.gusts ? 0 : env.gusts->kind == GustDef::Kind::Sine ? 1 : 2;
+        const char* gustNames[] = {"No gusts", "Breathing (sine)", "Steps"};
+        if (ImGui::Combo("Gusts", &gustKind, gustNames, 3))
+        {
+            if (gustKind == 0)
+                env.gusts.reset();
+            else if (gustKind == 1)
+            {
+                GustDef g;
+                g.kind = GustDef::Kind::Sine;
+                g.amplitudeX = 5.0;
+                g.periodS = 3.0;
+                env.gusts = g;
+            }
+            else
+            {
+                GustDef g;
+                g.kind = GustDef::Kind::Steps;
+                g.steps = {{1.0, -8.0, 0.0}, {2.0, 0.0, 0.0}};
+                env.gusts = g;
+            }
+            setProperties(next, "Gusts", "");
+        }
+        if (env.gusts && env.gusts->kind == GustDef::Kind::Sine)
+        {
+            double amplitude[2] = {env.gusts->amplitudeX, env.gusts->amplitudeY};
+            if (ImGui::SliderScalarN("Amplitude", ImGuiDataType_Double, amplitude, 2, &windMin, &windMax, "%.1f"))
+            {
+                env.gusts->amplitudeX = amplitude[0];
+                env.gusts->amplitudeY = amplitude[1];
+                setProperties(next, "Gust amplitude", "gust");
+            }
+            endGestureIfReleased();
+            if (sliderDouble("Period (s)", env.gusts->periodS, 0.1, 30.0, "%.1f"))
+                setProperties(next, "Gust period", "gust");
+            endGestureIfReleased();
+            double phaseDeg = env.gusts->phaseRad * 180.0 / 3.14159265358979323846;
+            if (sliderDouble("Phase (\u00B0)", phaseDeg, -180.0, 180.0, "%.0f"))
+            {
+                env.gusts->phaseRad = phaseDeg * 3.14159265358979323846 / 180.0;
+                setProperties(next, "Gust phase", "gust");
+            }
+            endGestureIfReleased();
+        }
+        else if (env.gusts)
+        {
+            ImGui::TextDisabled("From t (s after launch) the gust is (wx, wy):");
+            for (std::size_t i = 0; i < env.gusts->steps.size(); ++i)
+            {
+                ImGui::PushID(static_cast<int>(i));
+                double step[3] = {env.gusts->steps[i].startS, env.gusts->steps[i].windX, env.gusts->steps[i].windY};
+                if (ImGui::InputScalarN("##step", ImGuiDataType_Double, step, 3, nullptr, nullptr, "%.1f",
+                                        ImGuiInputTextFlags_EnterReturnsTrue))
+                {
+                    env.gusts->steps[i] = {step[0], step[1], step[2]};
+                    setProperties(next, "Gust step", "");
+                }
+                ImGui::PopID();
+            }
+            if (ImGui::Button("Add step") && env.gusts->steps.size() < 100)
+            {
+                env.gusts->steps.push_back({env.gusts->steps.back().startS + 1.0, 0.0, 0.0});
+                setProperties(next, "Add gust step", "");
+            }
+            ImGui::SameLine();
+            if (ImGui::Button("Remove last") && env.gusts->steps.size() > 1)
+            {
+                env.gusts->steps.pop_back();
+                setProperties(next, "Remove gust step", "");
+            }
+        }
+    }
+    ImGui::PopItemWidth();
+    if (playing())
+        ImGui::TextWrapped("Changes act at once, on the bird in flight too (its shot then gets no prediction score).");
+}
+
+void EditorScreen::birdTab()
+{
+    LevelDef next = m_editor->level();
+    ImGui::PushItemWidth(-120.0f * m_app.uiScale());
+    if (playing())
+    {
+        // The world runs or stands still; the panels work either way.
+        if (ImGui::Button(m_play->frozen() ? "Resume (P)" : "Pause (P)"))
+            m_play->setFrozen(!m_play->frozen());
+        ImGui::SameLine();
+        if (ImGui::Button("Step 1/60 s") && m_play->frozen())
+            m_play->stepOnce();
+        heading("Launch");
+        const double maxSpeed = m_play->maxSpeedMps();
+        // The sliders show the aim however it was set (mouse, keys or these sliders).
+        if (const auto aim = m_play->aim(); aim && !ImGui::IsAnyItemActive())
+        {
+            m_playAngleDeg = aim->angleDeg;
+            m_playSpeedMps = aim->speedMps;
+        }
+        bool aimChanged = sliderDouble("Angle (\u00B0)", m_playAngleDeg, -90.0, 90.0, "%.1f");
+        m_playSpeedMps = std::min(m_playSpeedMps, maxSpeed);
+        ImGui::Checkbox("Set the force instead of the speed", &m_aimByForce);
+        const BirdType* bird = m_play->session().currentBird();
+        const double releaseS = m_play->session().catalog().slingshotReleaseTimeS();
+        if (m_aimByForce && bird != nullptr)
+        {
+            // F = m v0 / t: the same pull sends a heavy bird slower.
+            double force = m_playSpeedMps * bird->massKg / releaseS;
+            const double maxForce = maxSpeed * bird->massKg / releaseS;
+            if (sliderDouble("Force (N)", force, 0.0, std::max(maxForce, 0.1), "%.0f"))
+            {
+                m_playSpeedMps = force * releaseS / bird->massKg;
+                aimChanged = true;
+            }
+        }
+        else
+            aimChanged |= sliderDouble("Speed (m/s)", m_playSpeedMps, 0.0, std::max(maxSpeed, 0.1), "%.2f");
+        if (aimChanged)
+            m_play->aimAt(m_playAngleDeg, m_playSpeedMps);
+        if (const auto aim = m_play->aim())
+            ImGui::TextWrapped("F = m v\u2080 / t = %.3g kg \u00D7 %.2f m/s / %.2f s = %.0f N", aim->massKg,
+                               aim->speedMps, aim->releaseTimeS, aim->massKg * aim->speedMps / aim->releaseTimeS);
+        if (ImGui::Button("Fire", ImVec2(-FLT_MIN, 0.0f)))
+        {
+            m_play->aimAt(m_playAngleDeg, m_playSpeedMps);
+            m_play->fire();
+        }
+        if (ImGui::Button("Play the scene again from the start (R)", ImVec2(-FLT_MIN, 0.0f)))
+            m_play->restart();
+        const GameSession& session = m_play->session();
+        ImGui::Text("Birds left: %d", session.birdsRemaining());
+        if (!m_message.empty())
+            ImGui::TextWrapped("%s", m_message.c_str());
+        if (session.finished())
+            ImGui::TextWrapped("%s", session.phase() == Phase::Won
+                                         ? "Every pig is down. R plays the scene again; Esc returns to editing."
+                                         : "All birds are used. R plays the scene again; Esc returns to editing.");
+    }
+
+    // The birds list and the slingshot belong to the scene; the running copy keeps its own until it is played
+    // again, so they are edited while the scene is not playing.
+    if (!playing())
+        birdListAndSlingshot(next);
+    heading("Custom bird (PhET Lab's ranges)");
+    bool custom = next.customBird.has_value();
+    if (ImGui::Checkbox("Use a custom bird", &custom))
+    {
+        if (custom)
+        {
+            next.customBird = CustomBirdDef{};
+            next.birds.insert(next.birds.begin(), kCustomBirdName);
+            if (next.birds.size() > 20)
+                next.birds.pop_back();
+        }
+        else
+        {
+            next.customBird.reset();
+            std::erase(next.birds, std::string(kCustomBirdName));
+            if (next.birds.empty())
+                next.birds.push_back("red");
+        }
+        setProperties(next, custom ? "Custom bird" : "No custom bird", "");
+    }
+    if (next.customBird)
+    {
+        CustomBirdDef& bird = *next.customBird;
+        bool changed = sliderDouble("Mass (kg)", bird.massKg, 0.01, 5000.0, "%.4g", ImGuiSliderFlags_Logarithmic);
+        changed |= sliderDouble("Diameter (m)", bird.diameterM, 0.01, 3.0, "%.3g", ImGuiSliderFlags_Logarithmic);
+        changed |= sliderDouble("Drag coeff. Cd", bird.dragCoefficient, 0.04, 1.2, "%.2f");
+        if (changed)
+            setProperties(next, "Custom bird", "custom-bird");
+        endGestureIfReleased();
+        // Say what the world does with it, here as well as when it is played.
+        if (m_scene)
+        {
+            const std::string text =
+                describeBirdBody(m_scene->world().birdBody(customBirdType(*m_editor->level().customBird)));
+            if (!text.empty())
+                ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.3f, 1.0f), "%s", "Box2D:");
+            if (!text.empty())
+                ImGui::TextWrapped("%s", text.c_str());
+        }
+    }
+    ImGui::PopItemWidth();
+}
+
+void EditorScreen::birdListAndSlingshot(LevelDef& next)
+{
+    heading("Birds, in launch order");
+    std::vector<std::string> names;
+    for (const BirdType& bird : Catalog::builtin().birds())
+        names.push_back(bird.name);
+    if (next.customBird)
+        names.emplace_back(kCustomBirdName);
+    for (std::size_t i = 0; i < next.birds.size(); ++i)
+    {
+        ImGui::PushID(static_cast<int>(i));
+        if (ImGui::BeginCombo("##bird", next.birds[i].c_str()))
+        {
+            for (const std::string& name : names)
+                if (ImGui::Selectable(name.c_str(), name == next.birds[i]))
+                {
+                    next.birds[i] = name;
+                    setProperties(next, "Bird", "");
+                }
+            ImGui::EndCombo();
+        }
+        ImGui::SameLine();
+        if (ImGui::SmallButton("x") && next.birds.size() > 1)
+        {
+            next.birds.erase(next.birds.begin() + static_cast<std::ptrdiff_t>(i));
+            setProperties(next, "Remove a bird", "");
+            ImGui::PopID();
+            break;
+        }
+        ImGui::PopID();
+    }
+    if (next.birds.size() < 20 && ImGui::Button("Add a bird"))
+    {
+        next.birds.push_back(next.birds.back());
+        setProperties(next, "Add a bird", "");
+    }
+
+    heading("Slingshot");
+    double force = next.slingshot.maxForceN;
+    if (sliderDouble("Max force (N)", force, 1.0, 1.0e6, "%.0f", ImGuiSliderFlags_Logarithmic))
+    {
+        next.slingshot.maxForceN = force;
+        setProperties(next, "Slingshot force", "force");
+    }
+    endGestureIfReleased();
+}
+
+void EditorScreen::materialsTab()
+{
+    LevelDef next = m_editor->level();
+    const Catalog scene = levelCatalog(next, Catalog::builtin());
+    ImGui::TextWrapped("This scene's values; the catalog's are the defaults. Blocks already in the air keep "
+                       "theirs until the scene is played again.");
+    ImGui::PushItemWidth(-150.0f * m_app.uiScale());
+    for (const Material& base : Catalog::builtin().materials())
+    {
+        ImGui::PushID(base.name.c_str());
+        heading(base.name.c_str());
+        auto it = std::find_if(next.materials.begin(), next.materials.end(),
+                               [&](const MaterialOverrideDef& m) { return m.material == base.name; });
+        const Material& current = *scene.findMaterial(base.name);
+        double density = current.bulkDensityKgPerM3;
+        double friction = current.friction;
+        double restitution = current.restitution;
+        double strength = current.strengthNs;
+        bool changed = false;
+        const auto edit = [&](std::optional<double> MaterialOverrideDef::*field, double value)
+        {
+            if (it == next.materials.end())
+            {
+                next.materials.push_back({base.name, {}, {}, {}, {}});
+                it = next.materials.end() - 1;
+            }
+            (*it).*field = value;
+            changed = true;
+        };
+        if (sliderDouble("Density (kg/m\u00B3)", density, 50.0, 25000.0, "%.0f", ImGuiSliderFlags_Logarithmic))
+            edit(&MaterialOverrideDef::densityKgPerM3, density);
+        endGestureIfReleased();
+        if (sliderDouble("Friction \u03BC", friction, 0.0, 2.0, "%.2f"))
+            edit(&MaterialOverrideDef::friction, friction);
+        endGestureIfReleased();
+        if (sliderDouble("Restitution e", restitution, 0.0, 1.0, "%.2f"))
+            edit(&MaterialOverrideDef::restitution, restitution);
+        endGestureIfReleased();
+        if (sliderDouble("Strength (N s)", strength, 1.0, 1.0e6, "%.0f", ImGuiSliderFlags_Logarithmic))
+            edit(&MaterialOverrideDef::strengthNs, strength);
+        endGestureIfReleased();
+        if (changed)
+            setProperties(next, "Material", ("material-" + base.name).c_str());
+        if (it != next.materials.end() && ImGui::Button("Back to the catalog's values"))
+        {
+            next.materials.erase(it);
+            setProperties(next, "Reset material", "");
+        }
+        ImGui::PopID();
+    }
+    ImGui::PopItemWidth();
+}
+
+void EditorScreen::levelTab()
+{
+    LevelDef next = m_editor->level();
+    ImGui::PushItemWidth(-110.0f * m_app.uiScale());
+    const auto text = [&](const char* label, std::string& value, const char* undo, bool multiline = false)
+    {
+        // ImGui edits a buffer of ours; it follows the scene while the field is idle and is applied when let go.
+        const ImGuiID id = ImGui::GetID(label);
+        std::string& buffer = m_textFields[id];
+        if (ImGui::GetActiveID() != id)
+            buffer = value;
+        if (multiline)
+            ImGui::InputTextMultiline(label, &buffer, ImVec2(-FLT_MIN, 3.5f * ImGui::GetTextLineHeight()));
+        else
+            ImGui::InputText(label, &buffer);
+        if (ImGui::IsItemDeactivatedAfterEdit() && buffer != value)
+        {
+            value = buffer;
+            setProperties(next, undo, "");
+        }
+    };
+    text("Id", next.id, "Level id");
+    text("Title", next.title, "Title");
+    text("Episode", next.episode, "Episode");
+    ImGui::TextUnformatted("Concept (the physics it teaches)");
+    text("##concept", next.lesson, "Concept", true);
+    heading("Hints");
+    for (std::size_t i = 0; i < next.hints.size(); ++i)
+    {
+        ImGui::PushID(static_cast<int>(i));
+        text("##hint", next.hints[i], "Hint");
+        ImGui::SameLine();
+        if (ImGui::SmallButton("x"))
+        {
+            next.hints.erase(next.hints.begin() + static_cast<std::ptrdiff_t>(i));
+            setProperties(next, "Remove a hint", "");
+            ImGui::PopID();
+            break;
+        }
+        ImGui::PopID();
+    }
+    if (next.hints.size() < 20 && ImGui::Button("Add a hint"))
+    {
+        next.hints.emplace_back("A hint for the player.");
+        setProperties(next, "Add a hint", "");
+    }
+    heading("Scoring");
+    int stars[3] = {next.starScores[0], next.starScores[1], next.starScores[2]};
+    if (ImGui::InputInt3("Stars at", stars, ImGuiInputTextFlags_EnterReturnsTrue))
+    {
+        next.starScores = {stars[0], stars[1], stars[2]};
+        setProperties(next, "Star scores", "");
+    }
+    bool limited = next.timeLimitS.has_value();
+    if (ImGui::Checkbox("Time limit", &limited))
+    {
+        next.timeLimitS = limited ? std::optional<double>(60.0) : std::nullopt;
+        setProperties(next, "Time limit", "");
+    }
+    if (next.timeLimitS)
+    {
+        double limit = *next.timeLimitS;
+        if (sliderDouble("Seconds", limit, 1.0, 600.0, "%.0f"))
+        {
+            next.timeLimitS = limit;
+            setProperties(next, "Time limit", "time-limit");
+        }
+        endGestureIfReleased();
+    }
+    bool reference = next.referenceShot.has_value();
+    if (ImGui::Checkbox("Reference shot", &reference))
+    {
+        next.referenceShot = reference ? std::optional<ReferenceShotDef>(ReferenceShotDef{45.0, 10.0}) : std::nullopt;
+        setProperties(next, "Reference shot", "");
+    }
+    if (next.referenceShot)
+    {
+        double shot[2] = {next.referenceShot->angleDeg, next.referenceShot->speedMps};
+        if (ImGui::InputScalarN("Angle, speed", ImGuiDataType_Double, shot, 2, nullptr, nullptr, "%.1f",
+                                ImGuiInputTextFlags_EnterReturnsTrue))
+        {
+            next.referenceShot = ReferenceShotDef{shot[0], shot[1]};
+            setProperties(next, "Reference shot", "");
+        }
+    }
+    heading("Scene");
+    if (ImGui::Checkbox("Sandbox scene (may have no pig)", &next.sandbox))
+        setProperties(next, next.sandbox ? "Sandbox scene" : "Campaign level", "");
+    double ground = next.groundY;
+    if (inputDouble("Ground y (m)", ground, m_fieldReleased))
+    {
+        next.groundY = cleanMetres(ground);
+        setProperties(next, "Ground", "");
+    }
+    ImGui::PopItemWidth();
+}
+
+void EditorScreen::checksTab()
+{
+    ImGui::TextWrapped("Findings are outlined in red on their objects; hover one for what was found.");
+    if (ImGui::Button("Geometry and reach", ImVec2(-FLT_MIN, 0.0f)))
+        m_checks.runGeometry(m_editor->level(), m_editor->revision());
+    if (ImGui::Button("Rest test (10 s)", ImVec2(-FLT_MIN, 0.0f)))
+        m_checks.runRest(m_editor->level(), m_editor->revision());
+    if (m_checks.solving())
+        ImGui::ProgressBar(m_checks.solverProgress(), ImVec2(-FLT_MIN, 0.0f), "solving...");
+    else if (m_editor->level().pigs.empty())
+        ImGui::TextDisabled("Solve: place a pig first");
+    else if (ImGui::Button("Solve", ImVec2(-FLT_MIN, 0.0f)))
+        m_checks.startSolver(m_editor->level(), m_editor->revision());
+    ImGui::Separator();
+    for (const std::string& summary : m_checks.summaries())
+        ImGui::TextWrapped("%s", summary.c_str());
+    ImGui::Separator();
+    int id = 0;
+    for (const Finding& finding : m_checks.findings())
+    {
+        ImGui::PushID(id++);
+        const std::string where =
+            finding.object ? describe(m_editor->level(), *finding.object) : std::string("the level");
+        // The object's name selects it; what was found wraps under it.
+        if (ImGui::Selectable(where.c_str(), finding.object && m_editor->isSelected(*finding.object)) &&
+            finding.object && exists(m_editor->level(), *finding.object))
+            m_editor->select(*finding.object);
+        ImGui::Indent();
+        ImGui::TextWrapped("%s", readablePointers(m_editor->level(), finding.message).c_str());
+        ImGui::Unindent();
+        ImGui::PopID();
+    }
+    const std::vector<LevelIssue> problems = m_editor->saveProblems();
+    if (!problems.empty())
+    {
+        ImGui::Separator();
+        ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.45f, 1.0f), "Cannot be saved as a level yet:");
+        for (const LevelIssue& issue : problems)
+            ImGui::BulletText("%s", issue.message.c_str());
+    }
+}
+
+} // namespace abalike::app

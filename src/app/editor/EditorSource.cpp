@@ -1,0 +1,44 @@
+#include "editor/EditorSource.hpp"
+
+#include "editor/EditorScreen.hpp"
+#include "screens/App.hpp"
+
+#include <abalike/edit/SceneEditor.hpp>
+#include <abalike/world/Catalog.hpp>
+
+namespace abalike::app
+{
+
+EditorSource sandboxSource()
+{
+    EditorSource source;
+    source.level = emptyScene();
+    return source;
+}
+
+EditorSource editorSourceFor(const std::filesystem::path& path)
+{
+    EditorSource source;
+    source.path = path;
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
+    {
+        // A new level: an empty scene, named after the file, that the first Save writes there.
+        source.level = emptyScene();
+        source.level.id = path.stem().string().empty() ? "level" : path.stem().string();
+        source.level.title = source.level.id;
+        source.newFile = true;
+        return source;
+    }
+    EditableLevel level = loadLevelForEditing(path.string(), Catalog::builtin());
+    source.level = std::move(level.level);
+    source.issues = std::move(level.geometryIssues);
+    return source;
+}
+
+void openEditor(App& app, EditorSource source)
+{
+    app.screens().push(std::make_unique<EditorScreen>(app, std::move(source)));
+}
+
+} // namespace abalike::app

@@ -1,0 +1,53 @@
+#include "screens/PlayDrawing.hpp"
+
+#include "screens/App.hpp"
+
+namespace abalike::app
+{
+
+namespace
+{
+constexpr float kLastShotFade = 0.45f;
+} // namespace
+
+void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, OverlayRenderer& overlay, const Hud& hud,
+              sf::Vector2f pullOffset, const std::vector<std::unique_ptr<PlayLayer>>& layers)
+{
+    const GameSession& session = view.session();
+    const Camera& camera = view.camera();
+    world.drawBackground(target, camera, session);
+
+    // While the next bird is aimed, the last shot stays as a faded reference.
+    const ShotRecord* lastShot = session.shots().empty() ? nullptr : &session.shots().back();
+    const float opacity = session.phase() == Phase::Aiming ? kLastShotFade : 1.0f;
+    if (lastShot != nullptr)
+        overlay.drawShotPaths(target, camera, *lastShot, opacity);
+    world.drawForeground(target, camera, session, pullOffset);
+    if (lastShot != nullptr)
+        overlay.drawShotMarkers(target, camera, *lastShot, opacity);
+    if (const PredictedFlight* preview = view.preview())
+        overlay.drawPreview(target, camera, *preview);
+    for (const auto& layer : layers)
+        layer->drawWorld(target, view);
+
+    hud.draw(target, target.getSize(), session, view.aim());
+    for (const auto& layer : layers)
+        layer->drawScreen(target, view);
+}
+
+bool launchRequested(App& app, GameSession& session, const ScriptedShot& shot)
+{
+    try
+    {
+        session.launch(shot.angleDeg, shot.speedMps);
+        app.trace().write("launch", {{"angle_deg", shot.angleDeg}, {"speed", shot.speedMps}});
+        return true;
+    }
+    catch (const LaunchError& error)
+    {
+        app.notify(error.what());
+        return false;
+    }
+}
+
+} // namespace abalike::app

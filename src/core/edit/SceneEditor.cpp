@@ -1,0 +1,577 @@
+#include "edit/ConvexShape.hpp"
+#include "edit/EditCommand.hpp"
+#include "edit/History.hpp"
+#include "level/LevelLimits.hpp"
+
+#include <abalike/edit/SceneEditor.hpp>
+#include <abalike/level/LevelCatalog.hpp>
+#include <abalike/level/LevelWriter.hpp>
+#include <abalike/save/AtomicWrite.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace abalike
+{
+
+namespace
+{
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+/// Half the width of the slingshot's frame and how far above the pouch it reaches, for picking it (m).
+constexpr double kSlingshotPickHalfWidthM = 0.4;
+constexpr double kSlingshotPickAboveM = 0.4;
+
+double clampCoordinate(double value)
+{
+    return std::clamp(cleanMetres(value), -limits::kWorldExtentM, limits::kWorldExtentM);
+}
+
+/// Angles are kept in (-180, 180] so that turning never leaves the format's -360..360.
+double normaliseAngle(double degrees)
+{
+    double a = std::fmod(degrees, 360.0);
+    if (a > 180.0)
+        a -= 360.0;
+    else if (a <= -180.0)
+        a += 360.0;
+    return std::round(a * 1e9) / 1e9;
+}
+
+std::string plural(std::size_t count, const char* what)
+{
+    return std::to_string(count) + " " + what + (count == 1 ? "" : "s");
+}
+
+std::string labelFor(const char* verb, std::size_t count)
+{
+    return std::string(verb) + " " + plural(count, "object");
+}
+
+/// Bounds of an object for rectangle selection: its shape's, or the slingshot's point.
+std::array<Vec2, 2> objectBounds(const ObjectDef& def, const Catalog& catalog)
+{
+    const ConvexShape shape = objectShape(def, catalog);
+    if (!shape.empty())
+        return shapeBounds(shape);
+    const auto c = centreOf(def);
+    return {Vec2{c[0], c[1]}, Vec2{c[0], c[1]}};
+}
+
+/// Every object of the level, in drawing order from the back: terrain, the slingshot, blocks, pigs.
+std::vector<ObjectRef> allObjects(const LevelDef& level)
+{
+    std::vector<ObjectRef> out;
+    for (std::size_t i = 0; i < level.terrain.size(); ++i)
+        out.push_back({ObjectKind::Terrain, i});
+    out.push_back({ObjectKind::Slingshot, 0});
+    for (std::size_t i = 0; i < level.blocks.size(); ++i)
+        out.push_back({ObjectKind::Block, i});
+    for (std::size_t i = 0; i < level.pigs.size(); ++i)
+        out.push_back({ObjectKind::Pig, i});
+    return out;
+}
+
+/// A level of properties only, with the one object in it, for checking that object's values.
+LevelDef levelWithOnly(const LevelDef& level, const ObjectDef& def)
+{
+    LevelDef out = level;
+    out.blocks.clear();
+    out.pigs.clear();
+    out.terrain.clear();
+    out.sandbox = true; // no pig needed
+    if (const auto* block = std::get_if<BlockDef>(&def))
+        out.blocks.push_back(*block);
+    else if (const auto* pig = std::get_if<PigDef>(&def))
+        out.pigs.push_back(*pig);
+    else if (const auto* terrain = std::get_if<TerrainDef>(&def))
+        out.terrain.push_back(*terrain);
+    else
+        out.slingshot = std::get<SlingshotDef>(def);
+    return out;
+}
+
+} // namespace
+
+LevelDef emptyScene()
+{
+    LevelDef level;
+    level.id = "sandbox";
+    level.title = "Sandbox";
+    level.sandbox = true;
+    level.slingshot = SlingshotDef{0.0, 1.5, 1200.0};
+    level.birds = {"red", "red", "red"};
+    return level;
+}
+
+SceneEditor::SceneEditor(LevelDef level, const Catalog& catalog)
+    : m_level(std::move(level)), m_catalog(catalog), m_history(std::make_unique<History>())
+{
+    m_savedState = m_history->state();
+}
+
+SceneEditor::~SceneEditor() = default;
+
+// ---------------------------------------------------------------- selection
+
+bool SceneEditor::isSelected(const ObjectRef& ref) const
+{
+    return std::binary_search(m_selection.begin(), m_selection.end(), ref);
+}
+
+void SceneEditor::applySelection(std::vector<ObjectRef> refs)
+{
+    refs.erase(std::remove_if(refs.begin(), refs.end(), [this](const ObjectRef& r) { return !exists(m_level, r); }),
+               refs.end());
+    std::sort(refs.begin(), refs.end());
+    refs.erase(std::unique(refs.begin(), refs.end()), refs.end());
+    m_selection = std::move(refs);
+}
+
+void SceneEditor::select(const ObjectRef& ref, SelectMode mode)
+{
+    if (!exists(m_level, ref))
+        return;
+    std::vector<ObjectRef> next = mode == SelectMode::Replace ? std::vector<ObjectRef>{} : m_selection;
+    const auto it = std::find(next.begin(), next.end(), ref);
+    if (mode == SelectMode::Toggle && it != next.end())
+        next.erase(it);
+    else
+        next.push_back(ref);
+    applySelection(std::move(next));
+}
+
+void SceneEditor::selectInRect(double x0, double y0, double x1, double y1, SelectMode mode)
+{
+    const double left = std::min(x0, x1);
+    const double right = std::max(x0, x1);
+    const double bottom = std::min(y0, y1);
+    const double top = std::max(y0, y1);
+    std::vector<ObjectRef> inside;
+    for (const ObjectRef& ref : allObjects(m_level))
+    {
+        const auto [lo, hi] = objectBounds(objectDef(m_level, ref), m_catalog);
+        if (lo[0] >= left && hi[0] <= right && lo[1] >= bottom && hi[1] <= top)
+            inside.push_back(ref);
+    }
+    if (mode == SelectMode::Replace)
+    {
+        applySelection(std::move(inside));
+        return;
+    }
+    for (const ObjectRef& ref : inside)
+        select(ref, mode);
+}
+
+void SceneEditor::selectAll()
+{
+    applySelection(allObjects(m_level));
+}
+
+void SceneEditor::clearSelection()
+{
+    m_selection.clear();
+}
+
+std::vector<std::array<double, 2>> SceneEditor::outline(const ObjectRef& ref) const
+{
+    if (!exists(m_level, ref))
+        return {};
+    return outlineOf(objectDef(m_level, ref));
+}
+
+std::vector<std::array<double, 2>> SceneEditor::outlineOf(const ObjectDef& def) const
+{
+    if (const auto* s = std::get_if<SlingshotDef>(&def))
+    {
+        const double bottom = std::min(m_level.groundY, s->y - kSlingshotPickAboveM);
+        const double top = s->y + kSlingshotPickAboveM;
+        return {{s->x - kSlingshotPickHalfWidthM, bottom},
+                {s->x + kSlingshotPickHalfWidthM, bottom},
+                {s->x + kSlingshotPickHalfWidthM, top},
+                {s->x - kSlingshotPickHalfWidthM, top}};
+    }
+    return objectShape(def, levelCatalog(m_level, m_catalog));
+}
+
+std::optional<ObjectRef> SceneEditor::objectAt(double x, double y) const
+{
+    const std::vector<ObjectRef> objects = allObjects(m_level);
+    for (auto it = objects.rbegin(); it != objects.rend(); ++it)
+    {
+        if (it->kind == ObjectKind::Slingshot)
+        {
+            const SlingshotDef& s = m_level.slingshot;
+            if (std::abs(x - s.x) <= kSlingshotPickHalfWidthM && y <= s.y + kSlingshotPickAboveM &&
+                y >= std::min(m_level.groundY, s.y - kSlingshotPickAboveM))
+                return *it;
+            continue;
+        }
+        if (shapeContains(objectShape(objectDef(m_level, *it), m_catalog), {x, y}))
+            return *it;
+    }
+    return std::nullopt;
+}
+
+// ---------------------------------------------------------------- edits
+
+void SceneEditor::push(std::unique_ptr<EditCommand> command)
+{
+    const auto after = command->selectionAfter();
+    m_history->push(std::move(command), m_level);
+    ++m_revision;
+    if (after)
+        applySelection(*after);
+}
+
+std::string SceneEditor::validateObject(const ObjectDef& def) const
+{
+    const auto issues = checkLevelFields(levelWithOnly(m_level, def), m_catalog);
+    if (issues.empty())
+        return {};
+    // "/blocks/0/w: ..." -> "w: ...": the object is the one being edited.
+    const LevelIssue& first = issues.front();
+    std::string where = first.pointer;
+    if (const auto object = objectOfPointer(where))
+        where = where.substr(std::min(where.size(), pointerOf(*object).size() + 1));
+    return (where.empty() ? "" : where + ": ") + first.message;
+}
+
+SnapResult SceneEditor::snap(const ObjectDef& def, const std::vector<ObjectRef>& ignore) const
+{
+    return snapObject(m_level, levelCatalog(m_level, m_catalog), def, ignore, m_snap);
+}
+
+ObjectRef SceneEditor::place(const ObjectDef& def)
+{
+    const SnapResult at = snap(def);
+    const ObjectDef placed = withCentre(def, clampCoordinate(at.x), clampCoordinate(at.y));
+    if (const std::string why = validateObject(placed); !why.empty())
+        throw std::invalid_argument("cannot place it: " + why);
+    m_history->seal();
+    if (kindOf(placed) == ObjectKind::Slingshot)
+    {
+        const ObjectRef ref{ObjectKind::Slingshot, 0};
+        push(makeChangeObjects("Move the slingshot", {ref}, {objectDef(m_level, ref)}, {placed}, {}));
+        m_history->seal();
+        return ref;
+    }
+    const char* what = kindOf(placed) == ObjectKind::Block ? "Place a block"
+                       : kindOf(placed) == ObjectKind::Pig ? "Place a pig"
+                                                           : "Place terrain";
+    push(makeAddObjects(what, m_level, {placed}));
+    m_history->seal();
+    return m_selection.front();
+}
+
+void SceneEditor::moveSelection(double dx, double dy)
+{
+    const std::vector<ObjectRef> refs = m_selection;
+    if (refs.empty())
+        return;
+    std::vector<ObjectDef> before;
+    std::vector<ObjectDef> after;
+    for (const ObjectRef& ref : refs)
+    {
+        before.push_back(objectDef(m_level, ref));
+        const auto c = centreOf(before.back());
+        after.push_back(withCentre(before.back(), clampCoordinate(c[0] + dx), clampCoordinate(c[1] + dy)));
+    }
+    push(makeChangeObjects(labelFor("Move", refs.size()), refs, std::move(before), std::move(after), "move"));
+}
+
+void SceneEditor::beginDrag(const ObjectRef& grabbed)
+{
+    if (!exists(m_level, grabbed))
+        return;
+    if (!isSelected(grabbed))
+        select(grabbed);
+    m_history->seal();
+    Drag drag;
+    drag.grabbed = grabbed;
+    drag.refs = m_selection;
+    for (const ObjectRef& ref : drag.refs)
+        drag.start.push_back(objectDef(m_level, ref));
+    m_drag = std::move(drag);
+}
+
+void SceneEditor::dragTo(double dx, double dy)
+{
+    if (!m_drag)
+        return;
+    const Drag& drag = *m_drag;
+    const std::size_t grabbed =
+        static_cast<std::size_t>(std::find(drag.refs.begin(), drag.refs.end(), drag.grabbed) - drag.refs.begin());
+    // Snap the grabbed object; the rest of the selection keeps its place relative to it.
+    const auto c = centreOf(drag.start[grabbed]);
+    const SnapResult at = snap(withCentre(drag.start[grabbed], c[0] + dx, c[1] + dy), drag.refs);
+    const double sx = at.x - c[0];
+    const double sy = at.y - c[1];
+    std::vector<ObjectDef> before;
+    std::vector<ObjectDef> after;
+    for (std::size_t i = 0; i < drag.refs.size(); ++i)
+    {
+        before.push_back(objectDef(m_level, drag.refs[i]));
+        const auto p = centreOf(drag.start[i]);
+        after.push_back(withCentre(drag.start[i], clampCoordinate(p[0] + sx), clampCoordinate(p[1] + sy)));
+    }
+    if (before == after)
+        return;
+    push(makeChangeObjects(labelFor("Move", drag.refs.size()), drag.refs, std::move(before), std::move(after), "drag"));
+}
+
+void SceneEditor::endDrag()
+{
+    m_drag.reset();
+    m_history->seal();
+}
+
+void SceneEditor::rotateSelection(double deltaDeg)
+{
+    const std::vector<ObjectRef> refs = m_selection;
+    if (refs.empty() || deltaDeg == 0.0)
+        return;
+    double px = 0.0;
+    double py = 0.0;
+    for (const ObjectRef& ref : refs)
+    {
+        const auto c = centreOf(objectDef(m_level, ref));
+        px += c[0] / static_cast<double>(refs.size());
+        py += c[1] / static_cast<double>(refs.size());
+    }
+    const double c = std::cos(deltaDeg * kDegToRad);
+    const double s = std::sin(deltaDeg * kDegToRad);
+    std::vector<ObjectDef> before;
+    std::vector<ObjectDef> after;
+    for (const ObjectRef& ref : refs)
+    {
+        before.push_back(objectDef(m_level, ref));
+        const auto p = centreOf(before.back());
+        ObjectDef turned = before.back();
+        if (refs.size() > 1)
+            turned = withCentre(turned, clampCoordinate(px + c * (p[0] - px) - s * (p[1] - py)),
+                                clampCoordinate(py + s * (p[0] - px) + c * (p[1] - py)));
+        if (auto* block = std::get_if<BlockDef>(&turned))
+            block->angleDeg = normaliseAngle(block->angleDeg + deltaDeg);
+        else if (auto* terrain = std::get_if<TerrainDef>(&turned))
+            terrain->angleDeg = normaliseAngle(terrain->angleDeg + deltaDeg);
+        after.push_back(std::move(turned));
+    }
+    push(makeChangeObjects(labelFor("Rotate", refs.size()), refs, std::move(before), std::move(after), "rotate"));
+}
+
+std::string SceneEditor::resizeObject(const ObjectRef& ref, double widthM, double heightM, const std::string& mergeKey)
+{
+    if (!exists(m_level, ref))
+        return "no such object";
+    ObjectDef def = objectDef(m_level, ref);
+    const auto grow = [](double& x, double& y, double angleDeg, double oldH, double newH)
+    {
+        // Keep the bottom edge where it is: the centre moves up (along the object's own up) by half the growth.
+        const double a = angleDeg * kDegToRad;
+        x = cleanMetres(x - std::sin(a) * (newH - oldH) / 2.0);
+        y = cleanMetres(y + std::cos(a) * (newH - oldH) / 2.0);
+    };
+    widthM = cleanMetres(widthM);
+    heightM = cleanMetres(heightM);
+    if (auto* block = std::get_if<BlockDef>(&def))
+    {
+        if (block->shape == BlockShape::Circle)
+            heightM = widthM;
+        grow(block->x, block->y, block->angleDeg, block->heightM, heightM);
+        block->widthM = widthM;
+        block->heightM = heightM;
+    }
+    else if (auto* terrain = std::get_if<TerrainDef>(&def))
+    {
+        grow(terrain->x, terrain->y, terrain->angleDeg, terrain->heightM, heightM);
+        terrain->widthM = widthM;
+        terrain->heightM = heightM;
+    }
+    else
+        return "only blocks and terrain have a size";
+    return changeObject(ref, def, "Resize " + describe(m_level, ref), mergeKey);
+}
+
+void SceneEditor::duplicateSelection()
+{
+    std::vector<ObjectDef> copies;
+    double left = std::numeric_limits<double>::infinity();
+    double right = -left;
+    const Catalog catalog = levelCatalog(m_level, m_catalog);
+    for (const ObjectRef& ref : m_selection)
+    {
+        if (ref.kind == ObjectKind::Slingshot)
+            continue;
+        copies.push_back(objectDef(m_level, ref));
+        const auto [lo, hi] = objectBounds(copies.back(), catalog);
+        left = std::min(left, lo[0]);
+        right = std::max(right, hi[0]);
+    }
+    if (copies.empty())
+        return;
+    // Beside the originals, touching them: duplicating a tower builds the next one. On the grid when it is on.
+    double dx = right - left;
+    if (m_snap.grid && m_snap.gridM > 0.0)
+        dx = std::ceil(dx / m_snap.gridM - 1e-9) * m_snap.gridM;
+    for (ObjectDef& copy : copies)
+    {
+        const auto c = centreOf(copy);
+        copy = withCentre(copy, clampCoordinate(c[0] + dx), c[1]);
+    }
+    m_history->seal();
+    push(makeAddObjects(labelFor("Duplicate", copies.size()), m_level, std::move(copies)));
+    m_history->seal();
+}
+
+void SceneEditor::deleteSelection()
+{
+    std::vector<ObjectRef> refs;
+    for (const ObjectRef& ref : m_selection)
+        if (ref.kind != ObjectKind::Slingshot)
+            refs.push_back(ref);
+    if (refs.empty())
+        return;
+    m_drag.reset();
+    m_history->seal();
+    const std::size_t count = refs.size();
+    push(makeRemoveObjects(labelFor("Delete", count), m_level, std::move(refs)));
+    m_history->seal();
+}
+
+std::string SceneEditor::changeObject(const ObjectRef& ref, const ObjectDef& def, const std::string& label,
+                                      const std::string& mergeKey)
+{
+    if (!exists(m_level, ref) || kindOf(def) != ref.kind)
+        return "no such object";
+    if (std::string why = validateObject(def); !why.empty())
+        return why;
+    const ObjectDef before = objectDef(m_level, ref);
+    if (before == def)
+        return {};
+    if (mergeKey.empty())
+        m_history->seal();
+    push(makeChangeObjects(label, {ref}, {before}, {def}, mergeKey));
+    if (mergeKey.empty())
+        m_history->seal();
+    return {};
+}
+
+std::string SceneEditor::setProperties(const LevelDef& properties, const std::string& label,
+                                       const std::string& mergeKey)
+{
+    LevelDef check = properties;
+    check.blocks.clear();
+    check.pigs.clear();
+    check.terrain.clear();
+    check.sandbox = true; // the pigs are not a property; saveProblems() reports a level without any
+    if (const auto issues = checkLevelFields(check, m_catalog); !issues.empty())
+        return issues.front().pointer + ": " + issues.front().message;
+    if (mergeKey.empty())
+        m_history->seal();
+    push(makeSetProperties(label, m_level, properties, mergeKey));
+    if (mergeKey.empty())
+        m_history->seal();
+    return {};
+}
+
+// ---------------------------------------------------------------- history
+
+bool SceneEditor::undo()
+{
+    m_drag.reset();
+    const EditCommand* command = m_history->undo(m_level);
+    if (command == nullptr)
+        return false;
+    ++m_revision;
+    if (const auto before = command->selectionBefore())
+        applySelection(*before);
+    else
+        applySelection(m_selection); // drops what no longer exists
+    return true;
+}
+
+bool SceneEditor::redo()
+{
+    m_drag.reset();
+    const EditCommand* command = m_history->redo(m_level);
+    if (command == nullptr)
+        return false;
+    ++m_revision;
+    if (const auto after = command->selectionAfter())
+        applySelection(*after);
+    else
+        applySelection(m_selection);
+    return true;
+}
+
+bool SceneEditor::canUndo() const
+{
+    return m_history->canUndo();
+}
+
+bool SceneEditor::canRedo() const
+{
+    return m_history->canRedo();
+}
+
+std::string SceneEditor::undoLabel() const
+{
+    return m_history->undoLabel();
+}
+
+std::string SceneEditor::redoLabel() const
+{
+    return m_history->redoLabel();
+}
+
+void SceneEditor::endGesture()
+{
+    m_history->seal();
+}
+
+// ---------------------------------------------------------------- file
+
+bool SceneEditor::dirty() const
+{
+    return m_history->state() != m_savedState;
+}
+
+void SceneEditor::markSaved()
+{
+    m_savedState = m_history->state();
+}
+
+void SceneEditor::markUnsaved()
+{
+    m_savedState = ~m_history->state(); // differs from every state until a save
+}
+
+std::vector<LevelIssue> SceneEditor::saveProblems() const
+{
+    return checkLevelFields(m_level, m_catalog);
+}
+
+std::vector<LevelIssue> SceneEditor::save(const std::filesystem::path& path, const std::filesystem::path& schemaPath)
+{
+    if (auto problems = saveProblems(); !problems.empty())
+    {
+        for (LevelIssue& issue : problems)
+            issue.file = path.string();
+        throw LevelLoadError(std::move(problems));
+    }
+    const std::string text = writeLevelJson(m_level, schemaReferenceFor(path, schemaPath));
+    // Read it back before writing: a file the editor writes always opens again.
+    EditableLevel reread = parseLevelForEditing(text, path.string(), m_catalog);
+    writeFileAtomically(path, text);
+    m_path = path;
+    m_level.sourcePath = path.string();
+    markSaved();
+    for (LevelIssue& issue : reread.geometryIssues)
+        issue.line = issue.column = 0;
+    return reread.geometryIssues;
+}
+
+} // namespace abalike
