@@ -77,7 +77,7 @@ public:
         if (coin())
             level.timeLimitS = number(1, 3600);
         if (coin())
-            level.referenceShot = ReferenceShotDef{number(-90, 90), number(0, 1000)};
+            level.referenceShot = ReferenceShotDef{number(-90, 90), number(0, Catalog::builtin().maxLaunchSpeedMps())};
         return level;
     }
 
