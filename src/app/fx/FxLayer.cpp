@@ -68,7 +68,12 @@ void FxLayer::drawWorld(sf::RenderTarget& target, PlayView& view)
     m_mesh.clear();
     m_particles.paint(m_mesh);
     m_mesh.draw(target, camera.transform());
+}
 
+void FxLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
+{
+    // Points over the HUD and the labels, so a panel never hides them.
+    const Camera& camera = view.camera();
     const sf::Font* font = view.app().font();
     if (font == nullptr)
         return;

@@ -21,6 +21,7 @@ public:
     void afterStep(PlayView& view) override;
     void frameUpdate(PlayView& view, double frameS) override;
     void drawWorld(sf::RenderTarget& target, PlayView& view) override;
+    void drawScreen(sf::RenderTarget& target, PlayView& view) override;
 
 private:
     struct PopUp

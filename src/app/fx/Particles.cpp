@@ -58,12 +58,12 @@ void Particles::burstBlock(std::string_view material, sf::Vector2f centreM, floa
         piece.velocityMps = {speed * std::cos(angle), speed * std::sin(angle)};
         piece.angleRad = uniform(0.0f, 6.28f);
         piece.spinRadps = uniform(-12.0f, 12.0f);
-        piece.sizeM = sizeM * uniform(0.18f, 0.35f);
+        piece.sizeM = sizeM * uniform(0.3f, 0.55f);
         piece.lifeS = uniform(0.9f, 1.6f);
         const int pick = i % 3;
-        piece.colour = pick == 0 ? colours.fill : pick == 1 ? colours.detail : colours.highlight;
-        if (shape == Shape::Shard)
-            piece.colour.a = 200;
+        // The outline colour for a third of the pieces: ice's fill alone vanishes against a pale sky.
+        piece.colour = pick == 0 ? colours.outline : pick == 1 ? colours.fill : colours.detail;
+        piece.colour.a = shape == Shape::Shard ? 230 : 255;
         m_pieces.push_back(piece);
     }
 }
