@@ -11,8 +11,11 @@
 #include <abalike/world/StressScenes.hpp>
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
+#include <unistd.h>
 
 namespace abalike::app
 {
@@ -88,16 +91,23 @@ SceneFrames playScene(const std::string& name, const std::string& path, const Le
     {
         result.frameMs.push_back(1000.0 * frameS);
     };
-    // Every overlay on, nothing read from or written to the player's files.
-    SaveStore store{std::filesystem::path()};
+    // Every overlay on, and the player's own files left alone: the settings come from a folder of our own (a
+    // scripted run reads its data folder and never writes it).
     Settings settings;
     settings.teachingOverlay = true;
     settings.showPreview = true;
     settings.showActualPath = true;
-    store.saveSettings(settings);
+    const std::filesystem::path dataDir =
+        std::filesystem::temp_directory_path() / ("abalike-bench-frames-" + std::to_string(getpid()));
+    std::filesystem::create_directories(dataDir);
+    std::ofstream(dataDir / "settings.json") << settingsToJson(settings);
+    SaveStore store(dataDir);
+    store.load();
     App app(std::move(options), std::move(campaign), std::move(store), loadGameFont());
     app.run();
     result.rssKb = residentKb();
+    std::error_code ignored;
+    std::filesystem::remove_all(dataDir, ignored);
     return result;
 }
 

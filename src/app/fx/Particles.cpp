@@ -100,6 +100,14 @@ void Particles::update(float dtS)
     std::erase_if(m_pieces, [](const Piece& piece) { return piece.ageS >= piece.lifeS; });
 }
 
+std::vector<sf::Vector2f> Particles::positionsM() const
+{
+    std::vector<sf::Vector2f> positions;
+    for (const Piece& piece : m_pieces)
+        positions.push_back(piece.positionM);
+    return positions;
+}
+
 void Particles::paint(Mesh& mesh) const
 {
     for (const Piece& piece : m_pieces)

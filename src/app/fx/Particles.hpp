@@ -37,6 +37,8 @@ public:
     void paint(Mesh& mesh) const;
 
     std::size_t size() const { return m_pieces.size(); }
+    /// Where every piece is now (metres).
+    std::vector<sf::Vector2f> positionsM() const;
 
 private:
     struct Piece
