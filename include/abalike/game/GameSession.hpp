@@ -104,6 +104,8 @@ public:
     double timeSinceLaunch() const { return m_world->time() - m_shotStartTime; }
 
     const std::vector<ShotRecord>& shots() const { return m_shots; }
+    /// Everything destroyed since the level (re)started, in order (the game's particles and score pop-ups).
+    const std::vector<DestroyedEvent>& destroyed() const { return m_destroyed; }
     ScoreBreakdown score() const { return m_score; }
     int stars() const;
     double simTime() const { return m_world->time(); }
@@ -131,6 +133,7 @@ private:
     int m_nextBird = 0;
     double m_shotStartTime = 0.0;
     std::vector<ShotRecord> m_shots;
+    std::vector<DestroyedEvent> m_destroyed;
     std::string m_notice;
     ScoreBreakdown m_score;
 };

@@ -18,5 +18,6 @@ int runStabilityBench(const BenchOptions& options); ///< stiff and extreme cases
 int runReferenceBench(const BenchOptions& options); ///< predicted vs actual first contact on the reference shots
 int runPerfBench(const BenchOptions& options);      ///< world step times and headless speed (world issue)
 int runSoakBench(const BenchOptions& options);      ///< 10 000 shots, resident memory start to end (reliability)
+int runFramesBench(const BenchOptions& options);    ///< the game loop's frame times under the display (game issue)
 
 } // namespace abalike::app

@@ -124,6 +124,15 @@ std::string loadAverageNote()
     return out.str();
 }
 
+long residentKb()
+{
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("VmRSS:", 0) == 0)
+            return std::stol(line.substr(6));
+    return -1;
+}
+
 bool writeReportFile(const std::string& dir, const std::string& name, const std::string& content)
 {
     const std::filesystem::path path = std::filesystem::path(dir) / name;

@@ -31,6 +31,9 @@ std::string formatSignificant(double value, int digits = 3);
 /// while other work runs are slower, and a report should say so.
 std::string loadAverageNote();
 
+/// Resident memory of this process in kB (VmRSS in /proc/self/status); -1 where there is no such file.
+long residentKb();
+
 /// Writes text to dir/name; false (and a line on stderr) if it cannot.
 bool writeReportFile(const std::string& dir, const std::string& name, const std::string& content);
 

@@ -1,4 +1,5 @@
 #include "bench/BenchSuite.hpp"
+#include "bench/ReportTable.hpp"
 #include "cli/DataPaths.hpp"
 
 #include <abalike/game/GameSession.hpp>
@@ -26,16 +27,6 @@ constexpr std::uint64_t kSeed = 20240601u; ///< same shots on every run
 constexpr double kMinAngleDeg = -10.0;
 constexpr double kMaxAngleDeg = 80.0;
 constexpr double kMinSpeedShare = 0.2; ///< of the bird's maximum launch speed
-
-/// Resident memory of this process in kB (VmRSS in /proc/self/status); -1 where there is no such file.
-long residentKb()
-{
-    std::ifstream status("/proc/self/status");
-    for (std::string line; std::getline(status, line);)
-        if (line.rfind("VmRSS:", 0) == 0)
-            return std::stol(line.substr(6));
-    return -1;
-}
 
 /// What the soak did, for the report.
 struct SoakTally

@@ -44,6 +44,8 @@ CommandRunner addBenchCommand(CLI::App& app)
         {"reference", "predicted vs actual first contact on the reference shots", runReferenceBench},
         {"perf", "world step times per level, overhead against raw Box2D, headless speed", runPerfBench},
         {"soak", "10 000 random headless shots across the campaign; fails if resident memory grows > 5%", runSoakBench},
+        {"frames", "frame times of the game loop under the current display (1280x720, every overlay on)",
+         runFramesBench},
     };
     for (const auto& suite : suites)
     {

@@ -28,6 +28,30 @@ void Backdrop::paintSky(Mesh& mesh, const Camera& camera, float groundY)
         mesh.addCircle({x - 0.8f * size, y + 0.4f * size}, 0.9f * size, palette::kCloud, 20);
         mesh.addCircle({x + 0.5f * size, y + 0.6f * size}, 1.1f * size, palette::kCloud, 20);
     }
+    paintHills(mesh, view, groundY, 0.25f, 26.0f, sf::Color(176, 212, 206), 3);
+    paintHills(mesh, view, groundY, 0.5f, 17.0f, sf::Color(150, 200, 150), 5);
+}
+
+void Backdrop::paintHills(Mesh& mesh, const sf::FloatRect& view, float groundY, float depth, float periodM,
+                          sf::Color colour, std::uint64_t seed)
+{
+    // Parallax: the row is laid out in its own coordinate u = x - left * (1 - depth), so when the camera moves by
+    // d the hills move by only depth * d in the world shown, and so cross the window slower than the level: far
+    // away. Each hill is seeded by its index, so a hill keeps its shape as it scrolls.
+    const float right = view.left + view.width;
+    const float offset = view.left * (1.0f - depth);
+    const auto first = static_cast<long long>(std::floor((view.left - offset) / periodM)) - 2;
+    for (long long k = first;; ++k)
+    {
+        DetailRandom random(seed * 1000003ull + static_cast<std::uint64_t>(k + (1ll << 40)));
+        const float x = offset + (static_cast<float>(k) + random.range(0.0f, 0.6f)) * periodM;
+        const float radius = periodM * random.range(0.7f, 1.1f);
+        if (x - radius > right)
+            break;
+        // Low, so the structure, the preview dots and the labels stand out against the sky, not against a hill.
+        const float height = periodM * random.range(0.07f, 0.13f) * (depth < 0.4f ? 1.3f : 1.0f);
+        mesh.addEllipse({x, groundY}, radius, height, colour, 32);
+    }
 }
 
 void Backdrop::paintGround(Mesh& mesh, const Camera& camera, float groundY)

@@ -93,8 +93,10 @@ int App::run()
     openFirstScreen();
     const bool offline = m_options.frames.has_value();
     sf::Clock clock;
+    sf::Clock frameClock;
     while (!m_exitCode)
     {
+        frameClock.restart();
         ++m_frame;
         m_trace.setFrame(m_frame);
         for (const sf::Event& event : m_script.eventsForFrame(static_cast<int>(m_frame)))
@@ -120,6 +122,8 @@ int App::run()
             m_window.display();
         }
         m_screens.applyPending();
+        if (m_options.onFrameTimed && !lastFrame)
+            m_options.onFrameTimed(static_cast<double>(frameClock.getElapsedTime().asMicroseconds()) * 1e-6);
         if (m_screens.empty())
             quit(m_exitCode.value_or(0));
         if (lastFrame)

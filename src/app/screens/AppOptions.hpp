@@ -31,6 +31,9 @@ struct AppOptions
     std::optional<unsigned> width; ///< `--size` wins over the saved window size
     std::optional<unsigned> height;
 
+    /// Called after every frame with the wall time it took (events, physics, drawing, display): `bench frames`.
+    std::function<void(double frameWallS)> onFrameTimed;
+
     /// Opens this screen first instead of the title or a level (`abalike edit` opens the editor this way).
     std::function<std::unique_ptr<Screen>(App&)> firstScreen;
 

@@ -30,6 +30,7 @@ void GameSession::restart()
     m_nextBird = 0;
     m_shotStartTime = 0.0;
     m_shots.clear();
+    m_destroyed.clear();
     m_score = {};
 }
 
@@ -191,6 +192,7 @@ void GameSession::collectEvents()
     ShotRecord* shot = m_shots.empty() ? nullptr : &m_shots.back();
     for (const DestroyedEvent& event : m_world->takeDestroyedEvents())
     {
+        m_destroyed.push_back(event);
         if (event.kind == EntityKind::Block && event.points > 0)
         {
             m_score.blockPoints += event.points;

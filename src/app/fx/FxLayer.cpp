@@ -1,0 +1,101 @@
+#include "fx/FxLayer.hpp"
+
+#include "render/Palette.hpp"
+#include "screens/App.hpp"
+
+#include <SFML/Graphics/Text.hpp>
+#include <abalike/save/Settings.hpp>
+#include <algorithm>
+#include <cmath>
+
+namespace abalike::app
+{
+
+namespace
+{
+
+constexpr float kPopUpLifeS = 1.2f;
+constexpr float kPopUpRiseMps = 1.2f;
+
+} // namespace
+
+void FxLayer::onLevelStart(PlayView& view)
+{
+    m_particles.reset();
+    m_popUps.clear();
+    m_seen = view.session().destroyed().size();
+}
+
+void FxLayer::afterStep(PlayView& view)
+{
+    const std::vector<DestroyedEvent>& destroyed = view.session().destroyed();
+    if (destroyed.size() < m_seen) // the session restarted without telling us
+        m_seen = 0;
+    const bool reduced = view.app().settings().reducedMotion;
+    for (std::size_t i = m_seen; i < destroyed.size(); ++i)
+    {
+        const DestroyedEvent& event = destroyed[i];
+        const sf::Vector2f at(static_cast<float>(event.x), static_cast<float>(event.y));
+        if (event.kind == EntityKind::Block && event.points > 0) // unscored: fell off the world, not broken
+            m_particles.burstBlock(event.typeName, at, 0.6f, reduced ? 4 : 16);
+        else if (event.kind == EntityKind::Pig)
+            m_particles.burstPig(at, 0.5f, reduced ? 3 : 12);
+        if (event.points > 0)
+        {
+            // append, not "+" + to_string(): GCC 12 warns falsely (-Wrestrict) on operator+ with a temporary.
+            std::string text = "+";
+            text.append(std::to_string(event.points));
+            m_popUps.push_back({std::move(text), at, 0.0f, event.kind == EntityKind::Pig});
+        }
+    }
+    m_seen = destroyed.size();
+}
+
+void FxLayer::frameUpdate(PlayView& view, double frameS)
+{
+    (void)view;
+    // A long frame (a stall, a breakpoint) must not throw every piece out of the window at once.
+    const float dtS = static_cast<float>(std::min(frameS, 0.1));
+    m_particles.update(dtS);
+    for (PopUp& popUp : m_popUps)
+        popUp.ageS += dtS;
+    std::erase_if(m_popUps, [](const PopUp& popUp) { return popUp.ageS >= kPopUpLifeS; });
+}
+
+void FxLayer::drawWorld(sf::RenderTarget& target, PlayView& view)
+{
+    const Camera& camera = view.camera();
+    m_mesh.clear();
+    m_particles.paint(m_mesh);
+    m_mesh.draw(target, camera.transform());
+}
+
+void FxLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
+{
+    // Points over the HUD and the labels, so a panel never hides them.
+    const Camera& camera = view.camera();
+    const sf::Font* font = view.app().font();
+    if (font == nullptr)
+        return;
+    const bool reduced = view.app().settings().reducedMotion;
+    for (const PopUp& popUp : m_popUps)
+    {
+        const float along = popUp.ageS / kPopUpLifeS;
+        sf::Vector2f at = popUp.positionM;
+        if (!reduced)
+            at.y += kPopUpRiseMps * popUp.ageS;
+        sf::Text text(popUp.text, *font, view.app().textSize(popUp.pig ? 26.0f : 18.0f));
+        text.setStyle(sf::Text::Bold);
+        const float alpha = std::clamp((1.0f - along) / 0.3f, 0.0f, 1.0f);
+        text.setFillColor(faded(popUp.pig ? palette::kStar : palette::kText, alpha));
+        text.setOutlineColor(faded(sf::Color(30, 24, 16), alpha));
+        text.setOutlineThickness(2.0f);
+        const sf::FloatRect bounds = text.getLocalBounds();
+        text.setOrigin(bounds.left + bounds.width / 2.0f, bounds.top + bounds.height / 2.0f);
+        const sf::Vector2f screen = camera.toScreen(at);
+        text.setPosition(std::round(screen.x), std::round(screen.y));
+        target.draw(text);
+    }
+}
+
+} // namespace abalike::app

@@ -1,0 +1,41 @@
+#pragma once
+
+#include "fx/Particles.hpp"
+#include "screens/PlayLayer.hpp"
+
+#include <SFML/System/Vector2.hpp>
+#include <string>
+#include <vector>
+
+namespace abalike::app
+{
+
+/// Break debris by material and score pop-ups where things were destroyed, driven by GameSession::destroyed().
+/// Visual only: it reads the session and never changes it. Reduced motion: a quarter of the pieces, pop-ups that
+/// fade in place.
+class FxLayer : public PlayLayer
+{
+public:
+    std::string_view name() const override { return "fx"; }
+    void onLevelStart(PlayView& view) override;
+    void afterStep(PlayView& view) override;
+    void frameUpdate(PlayView& view, double frameS) override;
+    void drawWorld(sf::RenderTarget& target, PlayView& view) override;
+    void drawScreen(sf::RenderTarget& target, PlayView& view) override;
+
+private:
+    struct PopUp
+    {
+        std::string text;
+        sf::Vector2f positionM;
+        float ageS = 0.0f;
+        bool pig = false;
+    };
+
+    Particles m_particles;
+    std::vector<PopUp> m_popUps;
+    std::size_t m_seen = 0; ///< events of session.destroyed() already turned into effects
+    Mesh m_mesh;
+};
+
+} // namespace abalike::app

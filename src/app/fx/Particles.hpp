@@ -1,0 +1,64 @@
+#pragma once
+
+#include "render/Mesh.hpp"
+
+#include <SFML/Graphics/Color.hpp>
+#include <SFML/System/Vector2.hpp>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+namespace abalike::app
+{
+
+/// Debris and puffs thrown out when something breaks: purely visual, in world metres (y up), never touching the
+/// simulation. Seeded, so the same events give the same pictures (screenshots stay reproducible).
+class Particles
+{
+public:
+    /// What a piece looks like.
+    enum class Shape
+    {
+        Splinter, ///< wood: a thin spinning slat
+        Shard,    ///< ice: a translucent triangle
+        Chunk,    ///< stone: a rough quad
+        Puff,     ///< a pig popping: a growing, fading cloud
+    };
+
+    /// Starts over with no pieces and a fixed seed.
+    void reset();
+    /// Throws out the pieces of a broken block of the given material and size at (x, y); `count` pieces.
+    void burstBlock(std::string_view material, sf::Vector2f centreM, float sizeM, int count);
+    /// A cloud of green and white puffs where a pig was defeated.
+    void burstPig(sf::Vector2f centreM, float radiusM, int count);
+    /// Moves every piece on by dtS (ballistic, with a little air drag) and retires the expired ones.
+    void update(float dtS);
+    /// Adds every piece to the mesh, in world metres.
+    void paint(Mesh& mesh) const;
+
+    std::size_t size() const { return m_pieces.size(); }
+    /// Where every piece is now (metres).
+    std::vector<sf::Vector2f> positionsM() const;
+
+private:
+    struct Piece
+    {
+        Shape shape = Shape::Chunk;
+        sf::Vector2f positionM;
+        sf::Vector2f velocityMps;
+        float angleRad = 0.0f;
+        float spinRadps = 0.0f;
+        float sizeM = 0.1f;
+        float ageS = 0.0f;
+        float lifeS = 1.0f;
+        sf::Color colour;
+    };
+
+    /// Uniform in [lo, hi).
+    float uniform(float lo, float hi);
+
+    std::vector<Piece> m_pieces;
+    std::uint32_t m_state = 1;
+};
+
+} // namespace abalike::app
