@@ -16,6 +16,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <utility>
 
 namespace abalike::app
 {
@@ -101,11 +102,15 @@ int App::run()
         m_trace.setFrame(m_frame);
         for (const sf::Event& event : m_script.eventsForFrame(static_cast<int>(m_frame)))
             dispatch(event);
+        for (const sf::Event& posted : std::exchange(m_posted, {}))
+            dispatch(posted);
         sf::Event event{};
         while (m_window.pollEvent(event))
             dispatch(event);
 
         const double frameS = offline ? kStepS : std::min(static_cast<double>(clock.restart().asSeconds()), kMaxFrameS);
+        for (const sf::Event& repeat : m_gamepad.tick(frameS))
+            dispatch(repeat);
         const int steps = stepsForFrame(frameS);
         for (int i = 0; i < steps && !m_exitCode && m_screens.top() != nullptr; ++i)
             m_screens.top()->fixedUpdate(kStepS);
@@ -167,6 +172,17 @@ int App::stepsForFrame(double frameS)
 
 void App::dispatch(const sf::Event& event)
 {
+    const bool gamepad = event.type == sf::Event::JoystickButtonPressed ||
+                         event.type == sf::Event::JoystickButtonReleased || event.type == sf::Event::JoystickMoved ||
+                         event.type == sf::Event::JoystickDisconnected;
+    if (gamepad || event.type == sf::Event::LostFocus)
+    {
+        // A pad speaks through the keys it stands for, so every screen understands it.
+        for (const sf::Event& key : gamepad ? m_gamepad.translate(event) : m_gamepad.reset())
+            dispatch(key);
+        if (gamepad)
+            return;
+    }
     m_input.apply(event);
     if (handleGlobal(event))
         return;
@@ -189,6 +205,20 @@ bool App::handleGlobal(const sf::Event& event)
         m_screens.resize(size);
         return true;
     }
+    case sf::Event::MouseButtonReleased:
+        if (Screen* top = m_screens.top();
+            event.mouseButton.button == sf::Mouse::Right && top != nullptr && top->rightClickIsBack())
+        {
+            // The mouse's way back out of a menu: the same Escape the keyboard and the pad's B press.
+            sf::Event back{};
+            back.type = sf::Event::KeyPressed;
+            back.key.code = sf::Keyboard::Escape;
+            post(back);
+            back.type = sf::Event::KeyReleased;
+            post(back);
+            return true;
+        }
+        return false;
     case sf::Event::KeyPressed:
         if (event.key.code == sf::Keyboard::F1)
         {

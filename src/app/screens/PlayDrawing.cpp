@@ -1,5 +1,6 @@
 #include "screens/PlayDrawing.hpp"
 
+#include "render/TrailPainter.hpp"
 #include "screens/App.hpp"
 
 namespace abalike::app
@@ -17,6 +18,9 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
     const Camera& camera = view.camera();
     world.drawBackground(target, camera, session);
 
+    // Earlier shots on this level stay as dimmed trails (unless the player turned flown paths off).
+    if (view.app().settings().showActualPath)
+        drawShotTrails(target, camera, view.trails(), view.app().uiScale());
     // While the next bird is aimed, the last shot stays as a faded reference.
     const ShotRecord* lastShot = session.shots().empty() ? nullptr : &session.shots().back();
     const float opacity = session.phase() == Phase::Aiming ? kLastShotFade : 1.0f;
