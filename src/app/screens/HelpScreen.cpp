@@ -77,9 +77,8 @@ void HelpScreen::handleEvent(const sf::Event& event)
 }
 
 std::vector<std::vector<HelpScreen::Line>> HelpScreen::paginate(const sf::Font& font, float usableHeight,
-                                                                bool stacked) const
+                                                                const std::vector<float>& rowHeights) const
 {
-    const float rowHeight = font.getLineSpacing(m_app.textSize(kRowNominal));
     const float headHeight = font.getLineSpacing(m_app.textSize(kHeadNominal)) * 1.3f;
     const std::vector<ControlBinding>& table = controlTable();
     std::vector<std::vector<Line>> pages(1);
@@ -87,7 +86,7 @@ std::vector<std::vector<HelpScreen::Line>> HelpScreen::paginate(const sf::Font& 
     for (std::size_t i = 0; i < table.size(); ++i)
     {
         const bool newGroup = i == 0 || table[i].where != table[i - 1].where;
-        const float lineHeight = stacked ? 2.0f * rowHeight + 0.25f * rowHeight : rowHeight;
+        const float lineHeight = rowHeights[i];
         const float need = lineHeight + (newGroup ? headHeight : 0.0f);
         if (used + need > usableHeight && !pages.back().empty())
         {
@@ -132,7 +131,7 @@ void HelpScreen::draw(sf::RenderTarget& target)
         keysWidth = std::max(keysWidth, measureText(*font, utf8(orDash(row.keys)), rowSize).x);
         mouseWidth = std::max(mouseWidth, measureText(*font, utf8(orDash(row.mouse)), rowSize).x);
         padWidth = std::max(padWidth, measureText(*font, utf8(orDash(row.gamepad)), rowSize).x);
-        stackedWidth = std::max({stackedWidth, measureText(*font, utf8(row.action), rowSize).x,
+        stackedWidth = std::max({stackedWidth, measureText(*font, utf8(row.action), rowSize).x + 16.0f * scale,
                                  measureText(*font, utf8(waysLine(row)), rowSize).x});
     }
     const float gap = 24.0f * scale;
@@ -144,7 +143,15 @@ void HelpScreen::draw(sf::RenderTarget& target)
 
     const float chrome =
         font->getLineSpacing(titleSize) + (stacked ? 0.0f : rowHeight * 1.4f) + 2.0f * pad + 1.5f * rowHeight;
-    const std::vector<std::vector<Line>> pages = paginate(*font, window.y - 20.0f - chrome, stacked);
+    // Stacked: the action, then every way to do it, wrapped to the card.
+    std::vector<std::vector<std::string>> ways(table.size());
+    std::vector<float> rowHeights(table.size(), rowHeight);
+    for (std::size_t i = 0; stacked && i < table.size(); ++i)
+    {
+        ways[i] = wrapText(*font, waysLine(table[i]), rowSize, width - 2.0f * pad - 16.0f * scale);
+        rowHeights[i] = (1.25f + static_cast<float>(ways[i].size())) * rowHeight;
+    }
+    const std::vector<std::vector<Line>> pages = paginate(*font, window.y - 20.0f - chrome, rowHeights);
     m_pages = static_cast<int>(pages.size());
     m_page = std::min(m_page, m_pages - 1);
     const std::vector<Line>& page = pages[static_cast<std::size_t>(m_page)];
@@ -177,7 +184,12 @@ void HelpScreen::draw(sf::RenderTarget& target)
         else if (stacked)
         {
             drawLabel(target, *font, utf8(row.action), {actionX, y}, rowSize, palette::kText);
-            drawLabel(target, *font, utf8(waysLine(row)), {actionX, y + rowHeight}, rowSize, palette::kTextDim);
+            float wayY = y + rowHeight;
+            for (const std::string& way : ways[line.row])
+            {
+                drawLabel(target, *font, utf8(way), {actionX + 16.0f * scale, wayY}, rowSize, palette::kTextDim);
+                wayY += rowHeight;
+            }
         }
         else
         {

@@ -35,8 +35,9 @@ private:
         bool heading = false;
         float height = 0.0f;
     };
-    /// The table cut into pages that fit the window's height.
-    std::vector<std::vector<Line>> paginate(const sf::Font& font, float usableHeight, bool stacked) const;
+    /// The table cut into pages that fit the window's height; rowHeights holds each control's height.
+    std::vector<std::vector<Line>> paginate(const sf::Font& font, float usableHeight,
+                                            const std::vector<float>& rowHeights) const;
     void turnPage(int delta);
 
     App& m_app;
