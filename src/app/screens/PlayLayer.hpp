@@ -77,6 +77,12 @@ public:
         (void)view;
     }
     /// Drawn over the HUD, in window pixels (panels, charts).
+    /// How far this layer shakes the world's picture this frame, in window pixels (the HUD stays still).
+    virtual sf::Vector2f worldShakePx(PlayView& view) const
+    {
+        (void)view;
+        return {0.0f, 0.0f};
+    }
     virtual void drawScreen(sf::RenderTarget& target, PlayView& view)
     {
         (void)target;
