@@ -85,6 +85,27 @@ TEST_F(ScreenFlow, HelpOpensAnywhereAndAnyKeyClosesIt)
     EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"title"}));
 }
 
+TEST_F(ScreenFlow, TheToolbarAndTheRightButtonGiveTheMouseEveryMenuKey)
+{
+    // The pause button (top right) pauses, a right click backs out (resume), the ? button opens help, a right click
+    // closes it. Buttons are 34 px squares 6 px apart, 10 px from the top right corner at 1280x720.
+    const std::string level = sourceFile("levels/1-1-first-flight.json");
+    const GameRun run = play(std::string("'").append(level).append("' --frames 40") + script(R"([
+        {"frame": 2, "mouse": "press", "button": "left", "x": 1253, "y": 27},
+        {"frame": 3, "mouse": "release", "button": "left", "x": 1253, "y": 27},
+        {"frame": 10, "mouse": "press", "button": "right", "x": 640, "y": 360},
+        {"frame": 11, "mouse": "release", "button": "right", "x": 640, "y": 360},
+        {"frame": 20, "mouse": "press", "button": "left", "x": 1213, "y": 27},
+        {"frame": 21, "mouse": "release", "button": "left", "x": 1213, "y": 27},
+        {"frame": 30, "mouse": "press", "button": "right", "x": 640, "y": 360},
+        {"frame": 31, "mouse": "release", "button": "right", "x": 640, "y": 360}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.values("push", "screen"), (std::vector<std::string>{"play", "pause", "help"}));
+    EXPECT_EQ(run.values("pop", "screen"), (std::vector<std::string>{"pause", "help"}));
+    EXPECT_TRUE(run.values("launch", "angle_deg").empty()) << "a click on a button never aims or launches";
+    EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"play"}));
+}
+
 TEST_F(ScreenFlow, ALevelOnTheCommandLineGoesStraightToIt)
 {
     const std::string level = sourceFile("levels/2-1-dominoes.json");
