@@ -5,6 +5,8 @@
 #include "screens/App.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
+#include <algorithm>
+#include <cmath>
 
 namespace abalike::app
 {
@@ -14,6 +16,7 @@ namespace
 constexpr float kMarginPx = 10.0f;
 constexpr float kSizePx = 34.0f;
 constexpr float kGapPx = 6.0f;
+constexpr float kMaxButtonGrowth = 1.25f;
 
 sf::Event keyEvent(sf::Keyboard::Key key, bool pressed)
 {
@@ -55,14 +58,21 @@ std::vector<sf::FloatRect> PlayToolbar::layout(sf::Vector2u windowSize, float sc
     return rects;
 }
 
-float PlayToolbar::bottomPx(float scale)
+float PlayToolbar::bottomPx(float buttonScale)
 {
-    return (kMarginPx + kSizePx) * scale;
+    return (kMarginPx + kSizePx) * buttonScale;
+}
+
+float PlayToolbar::buttonScale(const App& app)
+{
+    const float textScale = static_cast<float>(app.settings().textScale);
+    const float windowScale = app.uiScale() / std::max(textScale, 1e-3f);
+    return windowScale * std::min(textScale, kMaxButtonGrowth);
 }
 
 std::optional<std::size_t> PlayToolbar::buttonAt(sf::Vector2f pixel, PlayView& view) const
 {
-    const std::vector<sf::FloatRect> rects = layout(view.app().windowSize(), view.app().uiScale());
+    const std::vector<sf::FloatRect> rects = layout(view.app().windowSize(), buttonScale(view.app()));
     for (std::size_t i = 0; i < rects.size(); ++i)
         if (rects[i].contains(pixel))
             return i;
@@ -104,10 +114,10 @@ bool PlayToolbar::handleEvent(const sf::Event& event, PlayView& view)
 void PlayToolbar::drawScreen(sf::RenderTarget& target, PlayView& view)
 {
     App& app = view.app();
-    const float scale = app.uiScale();
+    const float scale = buttonScale(app);
     const std::vector<sf::FloatRect> rects = layout(target.getSize(), scale);
     const sf::Font* font = app.font();
-    const unsigned textSize = app.textSize(17.0f);
+    const auto textSize = static_cast<unsigned>(std::round(17.0f * scale));
     for (std::size_t i = 0; i < rects.size(); ++i)
     {
         const sf::FloatRect& rect = rects[i];
@@ -137,9 +147,10 @@ void PlayToolbar::drawScreen(sf::RenderTarget& target, PlayView& view)
     {
         // The action under the pointer, right-aligned under the row, on a panel so it reads over any sky.
         const unsigned tipSize = app.textSize(15.0f);
+        const float tipScale = app.uiScale();
         const sf::String tip = utf8(buttons()[*m_hover].action);
         const sf::Vector2f extent = measureText(*font, tip, tipSize);
-        const float pad = 6.0f * scale;
+        const float pad = 6.0f * tipScale;
         const float right = rects.back().left + rects.back().width;
         const sf::FloatRect panel(right - extent.x - 2.0f * pad, bottomPx(scale) + pad, extent.x + 2.0f * pad,
                                   font->getLineSpacing(tipSize) + pad);

@@ -31,10 +31,13 @@ public:
 
     /// The buttons, left to right.
     static const std::vector<Button>& buttons();
-    /// Where each button sits in a window of this size at this UI scale.
-    static std::vector<sf::FloatRect> layout(sf::Vector2u windowSize, float scale);
+    /// Where each button sits in a window of this size at this button scale.
+    static std::vector<sf::FloatRect> layout(sf::Vector2u windowSize, float buttonScale);
     /// The toolbar's bottom edge in window pixels: panels in the top right start below it.
-    static float bottomPx(float scale);
+    static float bottomPx(float buttonScale);
+    /// How large the buttons are drawn: with the window and the text scale, but at most 125 % of the window's own
+    /// scale, so that at a 200 % text scale the row still fits beside the aim readout (tooltips take the full scale).
+    static float buttonScale(const App& app);
 
 private:
     std::optional<std::size_t> buttonAt(sf::Vector2f pixel, PlayView& view) const;

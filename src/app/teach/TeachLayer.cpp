@@ -128,7 +128,7 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
 
     // Right column: the flying bird's forces and energy, or after its first contact the impact; while aiming, the
     // chart and the comparison.
-    sf::Vector2f right(window.x - margin, PlayToolbar::bottomPx(scale) + gap);
+    sf::Vector2f right(window.x - margin, PlayToolbar::bottomPx(PlayToolbar::buttonScale(m_app)) + gap);
     const auto below = [&](const sf::FloatRect& rect)
     {
         if (rect.height > 0.0f)
