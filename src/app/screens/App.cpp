@@ -15,7 +15,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <utility>
 
 namespace abalike::app
@@ -23,6 +25,21 @@ namespace abalike::app
 
 namespace
 {
+/// Whether a level file given on the command line is this campaign level: the same file, or a copy with the same
+/// bytes (a build tree plays the staged copy of levels/, while designers name the source file).
+bool sameLevelFile(const std::string& campaignPath, const std::string& givenPath)
+{
+    std::error_code ec;
+    if (std::filesystem::equivalent(campaignPath, givenPath, ec))
+        return true;
+    const auto size = std::filesystem::file_size(campaignPath, ec);
+    if (ec || size != std::filesystem::file_size(givenPath, ec) || ec)
+        return false;
+    std::ifstream a(campaignPath, std::ios::binary);
+    std::ifstream b(givenPath, std::ios::binary);
+    return std::equal(std::istreambuf_iterator<char>(a), {}, std::istreambuf_iterator<char>(b), {});
+}
+
 constexpr double kMaxFrameS = 0.25; // a slow frame cannot start a spiral of death
 constexpr double kNoticeS = 6.0;
 constexpr std::size_t kMaxNotices = 4;
@@ -71,9 +88,8 @@ void App::openFirstScreen()
         // A level given on the command line: straight into it. If it is a campaign level, "next" follows the
         // campaign from there.
         std::optional<std::size_t> index;
-        std::error_code ec;
         for (std::size_t i = 0; i < m_campaign.levels.size() && !index; ++i)
-            if (std::filesystem::equivalent(m_campaign.levels[i].path, m_options.levelPath, ec))
+            if (sameLevelFile(m_campaign.levels[i].path, m_options.levelPath))
                 index = i;
         m_screens.push(std::make_unique<PlayScreen>(*this, PlaySource{*m_options.level, m_options.levelPath, index}));
     }

@@ -46,7 +46,10 @@ void PlayScreen::startSession()
     m_frozen = false;
     resetAim();
     m_reloadErrors.clear();
-    m_app.trace().write("level", {{"id", m_source.level.id}, {"title", m_source.level.title}});
+    nlohmann::json event{{"id", m_source.level.id}, {"title", m_source.level.title}};
+    if (m_source.campaignIndex)
+        event["campaign_index"] = *m_source.campaignIndex;
+    m_app.trace().write("level", event);
     m_trails.onLevelStart(*m_session);
     for (const auto& layer : m_layers)
         layer->onLevelStart(*this);
