@@ -113,33 +113,39 @@ TEST(TeachPaths, SamplesCarryVelocitiesFromTheFlownPath)
     EXPECT_TRUE(samplesOf({}).empty());
 }
 
-TEST(TeachPaths, HistoryKeepsTheLastFiveShotsAcrossRestartsAndForgetsAnotherLevel)
+TEST(TeachPaths, TrailsKeepTheLastFiveShotsAcrossRestartsAndForgetAnotherLevel)
 {
     GameSession session(sourceLevel("levels/1-1-first-flight.json"));
-    PathHistory history;
-    history.onLevelStart(session);
+    ShotTrails trails;
+    trails.onLevelStart(session);
     for (int shot = 0; shot < 7; ++shot)
     {
         if (session.currentBird() == nullptr || session.finished())
         {
             session.restart();
-            history.onLevelStart(session);
+            trails.onLevelStart(session);
+            EXPECT_FALSE(trails.newestIsCurrentShot()); // after a restart every kept path is an earlier one
         }
         session.launch(20.0 + shot, 8.0);
         while (session.phase() == Phase::Flying)
         {
             session.step();
-            history.update(session);
+            trails.update(session);
         }
+        EXPECT_TRUE(trails.newestIsCurrentShot());
     }
-    ASSERT_EQ(history.paths().size(), PathHistory::kMaxPaths);
-    EXPECT_EQ(history.paths().back().name, "shot 7");
-    EXPECT_EQ(history.paths().front().name, "shot 3");
-    EXPECT_GT(history.paths().back().samples.size(), 10u);
+    ASSERT_EQ(trails.paths().size(), ShotTrails::kMaxPaths);
+    EXPECT_EQ(trails.paths().back().name, "shot 7");
+    EXPECT_EQ(trails.paths().front().name, "shot 3");
+    EXPECT_GT(trails.paths().back().samples.size(), 10u);
+    // The newest kept path is the flown path, point for point.
+    const std::vector<std::array<double, 3>>& flown = session.shots().back().actualPath;
+    ASSERT_EQ(trails.paths().back().samples.size(), flown.size());
+    EXPECT_DOUBLE_EQ(trails.paths().back().samples.back().x, flown.back()[1]);
 
     GameSession other(sourceLevel("levels/1-2-the-long-shot.json"));
-    history.onLevelStart(other);
-    EXPECT_TRUE(history.paths().empty());
+    trails.onLevelStart(other);
+    EXPECT_TRUE(trails.paths().empty());
 }
 
 } // namespace

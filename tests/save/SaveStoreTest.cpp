@@ -95,6 +95,25 @@ TEST(SaveStore, ADamagedFileIsKeptAsideAndDefaultsAreUsed)
     EXPECT_EQ(readText(dir / names[0]), damaged);
 }
 
+TEST(SaveStore, AScriptedRunLeavesADamagedFileExactlyAsItWas)
+{
+    const TempDir dir;
+    const std::string damaged = R"({"text_scale": 2.0})"; // no "format"
+    writeText(dir / "settings.json", damaged);
+    SaveStore store(dir.path());
+    store.load(SaveStore::Damaged::LeaveAlone);
+    EXPECT_EQ(store.settings(), Settings{});
+    const auto messages = store.takeMessages();
+    ASSERT_EQ(messages.size(), 1u);
+    EXPECT_NE(messages[0].find("settings.json is damaged (missing \"format\")"), std::string::npos) << messages[0];
+    EXPECT_NE(messages[0].find("leaves the file untouched"), std::string::npos) << messages[0];
+    ASSERT_EQ(entries(dir.path()), std::vector<std::string>{"settings.json"}) << "nothing renamed or added";
+    EXPECT_EQ(readText(dir / "settings.json"), damaged);
+    // And a save in that state never overwrites it.
+    EXPECT_FALSE(store.saveSettings(Settings{}));
+    EXPECT_EQ(readText(dir / "settings.json"), damaged);
+}
+
 TEST(SaveStore, TwoDamagedFilesInOneSecondKeepBothBackups)
 {
     const TempDir dir;

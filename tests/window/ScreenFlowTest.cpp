@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+
 namespace abalike::test
 {
 namespace
@@ -85,6 +88,27 @@ TEST_F(ScreenFlow, HelpOpensAnywhereAndAnyKeyClosesIt)
     EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"title"}));
 }
 
+TEST_F(ScreenFlow, TheToolbarAndTheRightButtonGiveTheMouseEveryMenuKey)
+{
+    // The pause button (top right) pauses, a right click backs out (resume), the ? button opens help, a right click
+    // closes it. Buttons are 34 px squares 6 px apart, 10 px from the top right corner at 1280x720.
+    const std::string level = sourceFile("levels/1-1-first-flight.json");
+    const GameRun run = play(std::string("'").append(level).append("' --frames 40") + script(R"([
+        {"frame": 2, "mouse": "press", "button": "left", "x": 1253, "y": 27},
+        {"frame": 3, "mouse": "release", "button": "left", "x": 1253, "y": 27},
+        {"frame": 10, "mouse": "press", "button": "right", "x": 640, "y": 360},
+        {"frame": 11, "mouse": "release", "button": "right", "x": 640, "y": 360},
+        {"frame": 20, "mouse": "press", "button": "left", "x": 1213, "y": 27},
+        {"frame": 21, "mouse": "release", "button": "left", "x": 1213, "y": 27},
+        {"frame": 30, "mouse": "press", "button": "right", "x": 640, "y": 360},
+        {"frame": 31, "mouse": "release", "button": "right", "x": 640, "y": 360}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.values("push", "screen"), (std::vector<std::string>{"play", "pause", "help"}));
+    EXPECT_EQ(run.values("pop", "screen"), (std::vector<std::string>{"pause", "help"}));
+    EXPECT_TRUE(run.values("launch", "angle_deg").empty()) << "a click on a button never aims or launches";
+    EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"play"}));
+}
+
 TEST_F(ScreenFlow, ALevelOnTheCommandLineGoesStraightToIt)
 {
     const std::string level = sourceFile("levels/2-1-dominoes.json");
@@ -99,16 +123,26 @@ TEST_F(ScreenFlow, ShotsWithoutALevelStartTheCampaignAndAWinLeadsOn)
     // 1-1 as the solver wins it (abalike solve): two shots; then N goes to 1-2.
     const GameRun run = play("--shot 30,18 --shot 5,30 --frames 1500" + script(R"([{"frame": 1490, "key": "N"}])"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const std::vector<std::string> levels = run.values("level", "id");
-    ASSERT_FALSE(levels.empty());
-    EXPECT_EQ(levels.front(), "1-1");
-    const std::vector<std::string> finished = run.values("finished", "won");
-    ASSERT_EQ(finished.size(), 1u) << "the two shots should decide 1-1";
-    if (finished[0] == "true")
-    {
-        EXPECT_EQ(levels, (std::vector<std::string>{"1-1", "1-2"}));
-        EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"play"}));
-    }
+    EXPECT_EQ(run.values("finished", "won"), (std::vector<std::string>{"true"})) << "the two shots win 1-1";
+    EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"1-1", "1-2"}));
+    EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"play"}));
+}
+
+TEST_F(ScreenFlow, TheSourceFileOfACampaignLevelIsThatLevel)
+{
+    // The build plays a staged copy of levels/; a designer names the source file. Same bytes: the same campaign
+    // level, so its result counts and "next level" follows. A level of their own is not in the campaign.
+    const GameRun source =
+        play(std::string("'").append(sourceFile("levels/1-1-first-flight.json")).append("' --frames 3"));
+    ASSERT_EQ(source.exitCode, 0) << source.err;
+    EXPECT_EQ(source.values("level", "campaign_index"), (std::vector<std::string>{"0"}));
+    std::ifstream original(sourceFile("levels/1-1-first-flight.json"));
+    const std::string text((std::istreambuf_iterator<char>(original)), std::istreambuf_iterator<char>());
+    const std::string own = m_dir.write("own.json", text + "\n");
+    const GameRun copy = play("'" + own + "' --frames 3");
+    ASSERT_EQ(copy.exitCode, 0) << copy.err;
+    EXPECT_EQ(copy.values("level", "id"), (std::vector<std::string>{"1-1"}));
+    EXPECT_TRUE(copy.values("level", "campaign_index").empty()) << "one byte more is another file";
 }
 
 TEST_F(ScreenFlow, ScriptedRunsReadTheSavedProgressButNeverWriteIt)

@@ -19,8 +19,15 @@ public:
     /// Files live in dir, which is created on the first save; an empty dir means nothing is ever saved.
     explicit SaveStore(std::filesystem::path dir);
 
+    /// What load() does with a damaged file.
+    enum class Damaged
+    {
+        SetAside,   ///< rename it to NAME.corrupt-TIMESTAMP, so the next save starts a fresh file (a player's run)
+        LeaveAlone, ///< touch nothing and never overwrite it: scripted runs, which must not write the data folder
+    };
+
     /// Reads progress.json and settings.json; missing files give defaults without a message.
-    void load();
+    void load(Damaged damaged = Damaged::SetAside);
 
     const Progress& progress() const { return m_progress; }
     const Settings& settings() const { return m_settings; }
@@ -47,7 +54,7 @@ private:
     };
 
     template <class T>
-    T loadFile(FileState& state, const std::filesystem::path& path, T (*parse)(std::string_view));
+    T loadFile(FileState& state, const std::filesystem::path& path, T (*parse)(std::string_view), Damaged damaged);
     bool saveFile(FileState& state, const std::filesystem::path& path, const std::string& text);
 
     std::filesystem::path m_dir;

@@ -102,7 +102,7 @@ SceneFrames playScene(const std::string& name, const std::string& path, const Le
     std::filesystem::create_directories(dataDir);
     std::ofstream(dataDir / "settings.json") << settingsToJson(settings);
     SaveStore store(dataDir);
-    store.load();
+    store.load(SaveStore::Damaged::LeaveAlone);
     App app(std::move(options), std::move(campaign), std::move(store), loadGameFont());
     app.run();
     result.rssKb = residentKb();

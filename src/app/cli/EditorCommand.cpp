@@ -58,7 +58,9 @@ int runEditCommand(const EditArgs& a)
         // The editor does not need the campaign; the title and level select it leaves to do.
     }
     SaveStore store(defaultDataDirectory());
-    store.load();
+    // A scripted run never writes the data folder, not even to set a damaged file aside.
+    const bool scripted = options.scripted() || !a.window.script.empty();
+    store.load(scripted ? SaveStore::Damaged::LeaveAlone : SaveStore::Damaged::SetAside);
     loadWindowScript(a.window, store, options);
     if (!haveDisplay())
         return kUsageExitCode;

@@ -59,7 +59,9 @@ int runPlayCommand(const PlayArgs& a)
         campaign = loadCampaignLevels(options.campaignPath, Catalog::builtin());
 
     SaveStore store(defaultDataDirectory());
-    store.load();
+    // A scripted run never writes the data folder, not even to set a damaged file aside.
+    const bool scripted = options.scripted() || !a.window.script.empty();
+    store.load(scripted ? SaveStore::Damaged::LeaveAlone : SaveStore::Damaged::SetAside);
     loadWindowScript(a.window, store, options);
     if (!haveDisplay())
         return kUsageExitCode;

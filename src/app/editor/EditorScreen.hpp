@@ -40,6 +40,7 @@ public:
     ~EditorScreen() override;
 
     std::string_view name() const override { return kName; }
+    bool rightClickIsBack() const override { return false; }
     bool wantsTextInput() const override;
     void handleEvent(const sf::Event& event) override;
     void fixedUpdate(double dtS) override;

@@ -26,6 +26,7 @@ void ScenePlay::restart()
     m_frozen = false;
     m_previewStale = true;
     m_app.trace().write("level", {{"id", m_level.id}, {"title", m_level.title}, {"editor", true}});
+    m_trails.onLevelStart(*m_session);
     for (const auto& layer : m_layers)
         layer->onLevelStart(*this);
 }
@@ -123,6 +124,7 @@ void ScenePlay::physicsStep()
         m_app.notify(m_session->notice());
         m_session->clearNotice();
     }
+    m_trails.update(*m_session);
     for (const auto& layer : m_layers)
         layer->afterStep(*this);
     if (m_session->phase() == Phase::Aiming)

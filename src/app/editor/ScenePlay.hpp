@@ -6,6 +6,7 @@
 #include "render/OverlayRenderer.hpp"
 #include "render/WorldRenderer.hpp"
 #include "screens/PlayLayer.hpp"
+#include "screens/ShotTrails.hpp"
 
 #include <SFML/Window/Event.hpp>
 #include <abalike/game/GameSession.hpp>
@@ -55,6 +56,8 @@ public:
     const Camera& camera() const override { return m_camera; }
     const PredictedFlight* preview() const override { return m_preview ? &*m_preview : nullptr; }
     std::optional<AimReadout> aim() const override;
+    const ShotTrails& trails() const override { return m_trails; }
+    void clearTrails() override { m_trails.clear(); }
     bool frozen() const override { return m_frozen; }
     void setFrozen(bool frozen) override { m_frozen = frozen; }
     void stepOnce() override;
@@ -67,6 +70,7 @@ private:
     LevelDef m_level;
     std::unique_ptr<GameSession> m_session;
     Camera m_camera;
+    ShotTrails m_trails;
     AimController m_aim;
     std::optional<ScriptedShot> m_requestedLaunch;
     bool m_abilityRequested = false;

@@ -17,6 +17,17 @@ namespace
 constexpr float kPopUpLifeS = 1.2f;
 constexpr float kPopUpRiseMps = 1.2f;
 
+/// How hard a break shakes the view: heavy things more, and nothing for what only fell off the world.
+float shakeKickPx(const DestroyedEvent& event)
+{
+    if (event.points <= 0)
+        return 0.0f;
+    if (event.kind == EntityKind::Pig)
+        return 3.0f;
+    if (event.typeName == "stone")
+        return 5.0f;
+    return event.typeName == "wood" ? 2.0f : 1.0f;
+}
 } // namespace
 
 void FxLayer::onLevelStart(PlayView& view)
@@ -24,6 +35,8 @@ void FxLayer::onLevelStart(PlayView& view)
     m_particles.reset();
     m_popUps.clear();
     m_seen = view.session().destroyed().size();
+    m_explosionsSeen = view.session().shots().size();
+    m_shake.reset();
 }
 
 void FxLayer::afterStep(PlayView& view)
@@ -40,6 +53,8 @@ void FxLayer::afterStep(PlayView& view)
             m_particles.burstBlock(event.typeName, at, 0.6f, reduced ? 4 : 16);
         else if (event.kind == EntityKind::Pig)
             m_particles.burstPig(at, 0.5f, reduced ? 3 : 12);
+        if (!reduced)
+            m_shake.kick(shakeKickPx(event));
         if (event.points > 0)
         {
             // append, not "+" + to_string(): GCC 12 warns falsely (-Wrestrict) on operator+ with a temporary.
@@ -49,6 +64,22 @@ void FxLayer::afterStep(PlayView& view)
         }
     }
     m_seen = destroyed.size();
+
+    // An explosion shakes the most, once per shot.
+    const std::vector<ShotRecord>& shots = view.session().shots();
+    if (shots.size() < m_explosionsSeen)
+        m_explosionsSeen = 0;
+    if (shots.size() > m_explosionsSeen && shots.back().ability && shots.back().ability->ability == "explode")
+    {
+        if (!reduced)
+            m_shake.kick(12.0f);
+        m_explosionsSeen = shots.size();
+    }
+}
+
+sf::Vector2f FxLayer::worldShakePx(PlayView& view) const
+{
+    return m_shake.offsetPx() * view.app().uiScale();
 }
 
 void FxLayer::frameUpdate(PlayView& view, double frameS)
@@ -56,6 +87,7 @@ void FxLayer::frameUpdate(PlayView& view, double frameS)
     (void)view;
     // A long frame (a stall, a breakpoint) must not throw every piece out of the window at once.
     const float dtS = static_cast<float>(std::min(frameS, 0.1));
+    m_shake.update(dtS);
     m_particles.update(dtS);
     for (PopUp& popUp : m_popUps)
         popUp.ageS += dtS;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "fx/CameraShake.hpp"
 #include "fx/Particles.hpp"
 #include "screens/PlayLayer.hpp"
 
@@ -11,8 +12,8 @@ namespace abalike::app
 {
 
 /// Break debris by material and score pop-ups where things were destroyed, driven by GameSession::destroyed().
-/// Visual only: it reads the session and never changes it. Reduced motion: a quarter of the pieces, pop-ups that
-/// fade in place.
+/// Heavy breaks (stone, pigs) and explosions shake the world view a little. Visual only: it reads the session and
+/// never changes it. Reduced motion: a quarter of the pieces, pop-ups that fade in place, and no shake.
 class FxLayer : public PlayLayer
 {
 public:
@@ -22,6 +23,7 @@ public:
     void frameUpdate(PlayView& view, double frameS) override;
     void drawWorld(sf::RenderTarget& target, PlayView& view) override;
     void drawScreen(sf::RenderTarget& target, PlayView& view) override;
+    sf::Vector2f worldShakePx(PlayView& view) const override;
 
 private:
     struct PopUp
@@ -34,7 +36,9 @@ private:
 
     Particles m_particles;
     std::vector<PopUp> m_popUps;
-    std::size_t m_seen = 0; ///< events of session.destroyed() already turned into effects
+    std::size_t m_seen = 0;           ///< events of session.destroyed() already turned into effects
+    std::size_t m_explosionsSeen = 0; ///< shots whose explosion already shook the view
+    CameraShake m_shake;
     Mesh m_mesh;
 };
 

@@ -11,7 +11,9 @@ namespace
 {
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 constexpr double kAngleStepDeg = 1.0;
+constexpr double kCoarseAngleStepDeg = 5.0;
 constexpr double kPowerStep = 0.02;
+constexpr double kCoarsePowerStep = 0.10;
 constexpr float kGrabRadiusM = 1.0f;
 constexpr float kGrabRadiusPx = 36.0f;
 
@@ -83,32 +85,44 @@ bool AimController::handleEvent(const sf::Event& event, const Camera& camera, sf
         return false;
     }
     case sf::Event::KeyPressed:
-        return handleKey(event.key.code);
+        return handleKey(event.key.code, event.key.shift);
     default:
         return false;
     }
 }
 
-bool AimController::handleKey(sf::Keyboard::Key key)
+double AimController::stepOnGrid(double value, double step, int direction)
+{
+    // The next grid point strictly beyond the value, so a dragged 43.2° goes to 44° (or 45° coarse), and repeated
+    // presses read as round numbers. The tolerance keeps a value already on the grid from being counted twice.
+    const double cells = value / step;
+    const double tolerance = 1e-6;
+    const double next = direction > 0 ? std::floor(cells + tolerance) + 1.0 : std::ceil(cells - tolerance) - 1.0;
+    return next * step;
+}
+
+bool AimController::handleKey(sf::Keyboard::Key key, bool coarse)
 {
     if (m_dragging)
         return false;
+    const double angleStep = coarse ? kCoarseAngleStepDeg : kAngleStepDeg;
+    const double powerStep = coarse ? kCoarsePowerStep : kPowerStep;
     switch (key)
     {
     case sf::Keyboard::Up:
-        m_angleDeg = std::min(m_angleDeg + kAngleStepDeg, 90.0);
+        m_angleDeg = std::min(stepOnGrid(m_angleDeg, angleStep, +1), kMaxAngleDeg);
         return false;
     case sf::Keyboard::Down:
-        m_angleDeg = std::max(m_angleDeg - kAngleStepDeg, -90.0);
+        m_angleDeg = std::max(stepOnGrid(m_angleDeg, angleStep, -1), -kMaxAngleDeg);
         return false;
     case sf::Keyboard::Right:
-        // Snap to the 2% grid so repeated presses read as round numbers.
-        m_power = std::min(std::round(m_power / kPowerStep) * kPowerStep + kPowerStep, 1.0);
+        m_power = std::min(stepOnGrid(m_power, powerStep, +1), 1.0);
         return false;
     case sf::Keyboard::Left:
-        m_power = std::max(std::round(m_power / kPowerStep) * kPowerStep - kPowerStep, kPowerStep);
+        m_power = std::max(stepOnGrid(m_power, powerStep, -1), kPowerStep);
         return false;
     case sf::Keyboard::Space:
+    case sf::Keyboard::Enter:
         return m_power * kMaxPullM >= kMinPullM;
     default:
         return false;

@@ -17,6 +17,7 @@ public:
     static constexpr double kMinPullM = 0.25; ///< shorter drags are taken as a change of mind, not a shot
     static constexpr double kDefaultAngleDeg = 45.0;
     static constexpr double kDefaultPower = 0.5;
+    static constexpr double kMaxAngleDeg = 90.0; ///< keys aim between straight down and straight up
 
     AimController() { reset(); }
 
@@ -26,7 +27,8 @@ public:
     void set(double angleDeg, double powerFraction);
 
     /// Handles mouse and keyboard input while a bird is ready; `pouch` is where the bird leaves the slingshot.
-    /// Returns true when the player let go of a drag or pressed Space: launch with the current aim.
+    /// Arrows step the angle by 1° and the power by 2 % (Shift: 5° and 10 %). Returns true when the player let go of
+    /// a drag or pressed Space or Enter: launch with the current aim.
     bool handleEvent(const sf::Event& event, const Camera& camera, sf::Vector2f pouch);
 
     double angleDeg() const { return m_angleDeg; }
@@ -35,8 +37,11 @@ public:
     /// Where the bird sits relative to the pouch: pulled back against the launch direction by the power.
     sf::Vector2f pullOffset() const;
 
+    /// The next multiple of step above (direction > 0) or below the value: keyboard steps land on round numbers.
+    static double stepOnGrid(double value, double step, int direction);
+
 private:
-    bool handleKey(sf::Keyboard::Key key);
+    bool handleKey(sf::Keyboard::Key key, bool coarse);
     void aimFromPointer(sf::Vector2f world, sf::Vector2f pouch);
 
     double m_angleDeg = kDefaultAngleDeg;

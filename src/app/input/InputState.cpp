@@ -10,7 +10,12 @@ void InputState::apply(const sf::Event& event)
     case sf::Event::KeyPressed:
     case sf::Event::KeyReleased:
         if (event.key.code >= 0 && event.key.code < sf::Keyboard::KeyCount)
-            m_keys[static_cast<std::size_t>(event.key.code)] = event.type == sf::Event::KeyPressed;
+        {
+            const auto index = static_cast<std::size_t>(event.key.code);
+            if (event.type == sf::Event::KeyPressed)
+                m_lastPressRepeated = m_keys[index];
+            m_keys[index] = event.type == sf::Event::KeyPressed;
+        }
         break;
     case sf::Event::MouseButtonPressed:
     case sf::Event::MouseButtonReleased:

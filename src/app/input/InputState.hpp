@@ -23,6 +23,8 @@ public:
     bool buttonDown(sf::Mouse::Button button) const;
     bool shift() const { return keyDown(sf::Keyboard::LShift) || keyDown(sf::Keyboard::RShift); }
     bool ctrl() const { return keyDown(sf::Keyboard::LControl) || keyDown(sf::Keyboard::RControl); }
+    /// True when the last key press came from holding the key down (the system's key repeat), not a new press.
+    bool lastPressRepeated() const { return m_lastPressRepeated; }
     /// Last known pointer position in window pixels.
     sf::Vector2i pointer() const { return m_pointer; }
 
@@ -30,6 +32,7 @@ private:
     std::array<bool, sf::Keyboard::KeyCount> m_keys{};
     std::array<bool, sf::Mouse::ButtonCount> m_buttons{};
     sf::Vector2i m_pointer{0, 0};
+    bool m_lastPressRepeated = false;
 };
 
 } // namespace abalike::app

@@ -41,7 +41,7 @@ std::vector<sf::Vector2f> cap(float radius, float chordY)
 }
 } // namespace
 
-void CharacterPainter::paintBird(Mesh& mesh, std::string_view type, float r, float pixelM)
+void CharacterPainter::paintBird(Mesh& mesh, std::string_view type, float r, float pixelM, BirdMood mood)
 {
     const BirdColours colours = birdColours(type);
     const float stroke = std::max(0.06f * r, 1.5f * pixelM);
@@ -67,12 +67,24 @@ void CharacterPainter::paintBird(Mesh& mesh, std::string_view type, float r, flo
     mesh.addTriangle({0.5f * r, -0.02f * r}, {1.22f * r, -0.16f * r}, {0.55f * r, -0.3f * r}, palette::kBeak);
     mesh.addTriangle({0.55f * r, -0.3f * r}, {1.05f * r, -0.26f * r}, {0.55f * r, -0.46f * r}, palette::kBeakDark);
 
+    const float brow = 0.13f * r;
+    if (mood == BirdMood::Dazed)
+    {
+        // Crossed eyes under raised brows, and stars circling the head.
+        eye(mesh, {0.2f * r, 0.22f * r}, 0.21f * r, {0.9f, -0.4f}, stroke);
+        eye(mesh, {0.62f * r, 0.22f * r}, 0.19f * r, {-0.9f, 0.4f}, stroke);
+        mesh.addLine({-0.02f * r, 0.5f * r}, {0.36f * r, 0.6f * r}, brow, colours.brow);
+        mesh.addLine({0.46f * r, 0.6f * r}, {0.84f * r, 0.5f * r}, brow, colours.brow);
+        for (const sf::Vector2f at : {sf::Vector2f(-0.55f * r, 1.25f * r), sf::Vector2f(0.15f * r, 1.55f * r),
+                                      sf::Vector2f(0.85f * r, 1.2f * r)})
+            mesh.addStar(at, 0.22f * r, 0.09f * r, palette::kStar);
+        return;
+    }
     const sf::Vector2f look(1.0f, 0.0f);
     eye(mesh, {0.2f * r, 0.22f * r}, 0.21f * r, look, stroke);
     eye(mesh, {0.62f * r, 0.22f * r}, 0.19f * r, look, stroke);
 
     // Angry brows slanting down towards the beak.
-    const float brow = 0.13f * r;
     mesh.addLine({-0.06f * r, 0.56f * r}, {0.38f * r, 0.36f * r}, brow, colours.brow);
     mesh.addLine({0.44f * r, 0.36f * r}, {0.86f * r, 0.52f * r}, brow, colours.brow);
 }
@@ -121,6 +133,28 @@ void CharacterPainter::paintPig(Mesh& mesh, float r, bool helmet, float healthFr
     mesh.addEllipse({0.0f, -0.08f * r}, 0.4f * r - stroke, 0.3f * r - stroke, palette::kPigSnout, 24);
     mesh.addEllipse({-0.14f * r, -0.08f * r}, 0.07f * r, 0.12f * r, palette::kPigNostril, 12);
     mesh.addEllipse({0.14f * r, -0.08f * r}, 0.07f * r, 0.12f * r, palette::kPigNostril, 12);
+
+    // The mouth tells how the pig is doing: a smug grin, a frown, then a wobble.
+    const float lip = 0.07f * r;
+    if (healthFraction >= 0.66f)
+    {
+        mesh.addRoundLine({-0.36f * r, -0.5f * r}, {-0.12f * r, -0.6f * r}, lip, palette::kPigOutline);
+        mesh.addRoundLine({-0.12f * r, -0.6f * r}, {0.12f * r, -0.6f * r}, lip, palette::kPigOutline);
+        mesh.addRoundLine({0.12f * r, -0.6f * r}, {0.36f * r, -0.5f * r}, lip, palette::kPigOutline);
+    }
+    else if (healthFraction >= 0.33f)
+    {
+        mesh.addRoundLine({-0.3f * r, -0.66f * r}, {-0.1f * r, -0.58f * r}, lip, palette::kPigOutline);
+        mesh.addRoundLine({-0.1f * r, -0.58f * r}, {0.1f * r, -0.58f * r}, lip, palette::kPigOutline);
+        mesh.addRoundLine({0.1f * r, -0.58f * r}, {0.3f * r, -0.66f * r}, lip, palette::kPigOutline);
+    }
+    else
+    {
+        mesh.addRoundLine({-0.32f * r, -0.6f * r}, {-0.16f * r, -0.52f * r}, lip, palette::kPigOutline);
+        mesh.addRoundLine({-0.16f * r, -0.52f * r}, {0.0f, -0.62f * r}, lip, palette::kPigOutline);
+        mesh.addRoundLine({0.0f, -0.62f * r}, {0.16f * r, -0.52f * r}, lip, palette::kPigOutline);
+        mesh.addRoundLine({0.16f * r, -0.52f * r}, {0.32f * r, -0.6f * r}, lip, palette::kPigOutline);
+    }
 
     if (helmet)
     {

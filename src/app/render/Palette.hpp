@@ -60,6 +60,8 @@ inline const sf::Color kPreviewDot(255, 255, 255);
 inline const sf::Color kPreviewOutline(30, 34, 48);
 inline const sf::Color kActualPath(255, 140, 0);
 inline const sf::Color kActualContact(220, 40, 30);
+inline const sf::Color kTrailPuff(255, 255, 255); ///< earlier shots' paths, drawn faded
+inline const sf::Color kTrailRim(60, 66, 84);
 inline const sf::Color kPanel(20, 28, 44, 200);
 inline const sf::Color kText(255, 255, 255);
 inline const sf::Color kTextDim(200, 210, 225);

@@ -113,11 +113,13 @@ void WorldRenderer::drawForeground(sf::RenderTarget& target, const Camera& camer
         else if (entity.kind == EntityKind::Pig)
             addPig(entity, session.catalog(), pixelM);
     }
-    for (const Entity& entity : entities)
+    updateDazed(session);
+    for (std::size_t i = 0; i < entities.size(); ++i)
     {
+        const Entity& entity = entities[i];
         if (entity.alive && entity.body != nullptr && entity.kind == EntityKind::Bird)
         {
-            addBird(entity, pixelM);
+            addBird(entity, i, pixelM);
             addOffscreenMarker(entity, camera);
         }
     }
@@ -174,13 +176,36 @@ void WorldRenderer::addPig(const Entity& entity, const Catalog& catalog, float p
     m_mesh.resetLocalTransform();
 }
 
-void WorldRenderer::addBird(const Entity& entity, float pixelM)
+void WorldRenderer::updateDazed(const GameSession& session)
+{
+    const GameWorld& world = session.world();
+    // A new world, or the same one started again (its clock went back), has no dazed birds yet.
+    if (&world != m_dazedWorld || world.time() < m_dazedTimeS)
+        m_dazed.clear();
+    m_dazedWorld = &world;
+    m_dazedTimeS = world.time();
+    const std::vector<Entity>& entities = world.entities();
+    m_dazed.resize(entities.size(), false);
+    for (std::size_t i = 0; i < entities.size(); ++i)
+    {
+        const Entity& entity = entities[i];
+        if (m_dazed[i] || entity.kind != EntityKind::Bird || entity.body == nullptr)
+            continue;
+        for (const b2ContactEdge* edge = entity.body->GetContactList(); edge != nullptr; edge = edge->next)
+            if (edge->contact->IsTouching())
+                m_dazed[i] = true;
+    }
+}
+
+void WorldRenderer::addBird(const Entity& entity, std::size_t index, float pixelM)
 {
     m_mesh.setLocalTransform(bodyTransform(*entity.body));
+    const auto mood = index < m_dazed.size() && m_dazed[index] ? CharacterPainter::BirdMood::Dazed
+                                                               : CharacterPainter::BirdMood::Angry;
     if (entity.typeName == "egg")
         CharacterPainter::paintEgg(m_mesh, static_cast<float>(0.5 * entity.widthM), pixelM);
     else
-        CharacterPainter::paintBird(m_mesh, entity.typeName, static_cast<float>(0.5 * entity.widthM), pixelM);
+        CharacterPainter::paintBird(m_mesh, entity.typeName, static_cast<float>(0.5 * entity.widthM), pixelM, mood);
     m_mesh.resetLocalTransform();
 }
 

@@ -5,6 +5,7 @@
 
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <abalike/game/GameSession.hpp>
+#include <vector>
 
 namespace abalike::app
 {
@@ -25,11 +26,16 @@ private:
     void addTerrain(const Entity& entity, float pixelM);
     void addBlock(const Entity& entity, std::size_t index, float pixelM);
     void addPig(const Entity& entity, const Catalog& catalog, float pixelM);
-    void addBird(const Entity& entity, float pixelM);
+    void addBird(const Entity& entity, std::size_t index, float pixelM);
+    /// Remembers which birds have touched something (they look dazed from then on); forgets on a new world.
+    void updateDazed(const GameSession& session);
     void addWaitingBirds(const GameSession& session, float pixelM);
     void addOffscreenMarker(const Entity& bird, const Camera& camera);
 
     Mesh m_mesh;
+    std::vector<bool> m_dazed; ///< by entity index
+    const GameWorld* m_dazedWorld = nullptr;
+    double m_dazedTimeS = 0.0;
 };
 
 } // namespace abalike::app

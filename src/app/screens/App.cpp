@@ -15,13 +15,31 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <iterator>
+#include <utility>
 
 namespace abalike::app
 {
 
 namespace
 {
+/// Whether a level file given on the command line is this campaign level: the same file, or a copy with the same
+/// bytes (a build tree plays the staged copy of levels/, while designers name the source file).
+bool sameLevelFile(const std::string& campaignPath, const std::string& givenPath)
+{
+    std::error_code ec;
+    if (std::filesystem::equivalent(campaignPath, givenPath, ec))
+        return true;
+    const auto size = std::filesystem::file_size(campaignPath, ec);
+    if (ec || size != std::filesystem::file_size(givenPath, ec) || ec)
+        return false;
+    std::ifstream a(campaignPath, std::ios::binary);
+    std::ifstream b(givenPath, std::ios::binary);
+    return std::equal(std::istreambuf_iterator<char>(a), {}, std::istreambuf_iterator<char>(b), {});
+}
+
 constexpr double kMaxFrameS = 0.25; // a slow frame cannot start a spiral of death
 constexpr double kNoticeS = 6.0;
 constexpr std::size_t kMaxNotices = 4;
@@ -70,9 +88,8 @@ void App::openFirstScreen()
         // A level given on the command line: straight into it. If it is a campaign level, "next" follows the
         // campaign from there.
         std::optional<std::size_t> index;
-        std::error_code ec;
         for (std::size_t i = 0; i < m_campaign.levels.size() && !index; ++i)
-            if (std::filesystem::equivalent(m_campaign.levels[i].path, m_options.levelPath, ec))
+            if (sameLevelFile(m_campaign.levels[i].path, m_options.levelPath))
                 index = i;
         m_screens.push(std::make_unique<PlayScreen>(*this, PlaySource{*m_options.level, m_options.levelPath, index}));
     }
@@ -101,11 +118,15 @@ int App::run()
         m_trace.setFrame(m_frame);
         for (const sf::Event& event : m_script.eventsForFrame(static_cast<int>(m_frame)))
             dispatch(event);
+        for (const sf::Event& posted : std::exchange(m_posted, {}))
+            dispatch(posted);
         sf::Event event{};
         while (m_window.pollEvent(event))
             dispatch(event);
 
         const double frameS = offline ? kStepS : std::min(static_cast<double>(clock.restart().asSeconds()), kMaxFrameS);
+        for (const sf::Event& repeat : m_gamepad.tick(frameS))
+            dispatch(repeat);
         const int steps = stepsForFrame(frameS);
         for (int i = 0; i < steps && !m_exitCode && m_screens.top() != nullptr; ++i)
             m_screens.top()->fixedUpdate(kStepS);
@@ -167,6 +188,17 @@ int App::stepsForFrame(double frameS)
 
 void App::dispatch(const sf::Event& event)
 {
+    const bool gamepad = event.type == sf::Event::JoystickButtonPressed ||
+                         event.type == sf::Event::JoystickButtonReleased || event.type == sf::Event::JoystickMoved ||
+                         event.type == sf::Event::JoystickDisconnected;
+    if (gamepad || event.type == sf::Event::LostFocus)
+    {
+        // A pad speaks through the keys it stands for, so every screen understands it.
+        for (const sf::Event& key : gamepad ? m_gamepad.translate(event) : m_gamepad.reset())
+            dispatch(key);
+        if (gamepad)
+            return;
+    }
     m_input.apply(event);
     if (handleGlobal(event))
         return;
@@ -189,6 +221,20 @@ bool App::handleGlobal(const sf::Event& event)
         m_screens.resize(size);
         return true;
     }
+    case sf::Event::MouseButtonReleased:
+        if (Screen* top = m_screens.top();
+            event.mouseButton.button == sf::Mouse::Right && top != nullptr && top->rightClickIsBack())
+        {
+            // The mouse's way back out of a menu: the same Escape the keyboard and the pad's B press.
+            sf::Event back{};
+            back.type = sf::Event::KeyPressed;
+            back.key.code = sf::Keyboard::Escape;
+            post(back);
+            back.type = sf::Event::KeyReleased;
+            post(back);
+            return true;
+        }
+        return false;
     case sf::Event::KeyPressed:
         if (event.key.code == sf::Keyboard::F1)
         {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "input/Gamepad.hpp"
 #include "input/InputState.hpp"
 #include "input/ScriptedInput.hpp"
 #include "screens/AppOptions.hpp"
@@ -64,6 +65,9 @@ public:
 
     /// A one-line message for the player, shown for a few seconds over every screen (and printed on stderr).
     void notify(const std::string& message);
+    /// Queues an input event to go through the same path as the player's at the start of the next frame: a toolbar
+    /// button presses the key it stands for.
+    void post(const sf::Event& event) { m_posted.push_back(event); }
     /// Ends the run after this frame with this exit code.
     void quit(int exitCode = 0);
 
@@ -92,6 +96,8 @@ private:
     sf::RenderWindow m_window;
     ScreenStack m_screens;
     InputState m_input;
+    GamepadTranslator m_gamepad;
+    std::vector<sf::Event> m_posted;
     ScriptedInput m_script;
     Trace m_trace;
     std::optional<SaveStore> m_store;

@@ -11,14 +11,98 @@
 namespace abalike::app
 {
 
+namespace
+{
+constexpr float kTitleNominal = 30.0f;
+constexpr float kHeadNominal = 17.0f;
+constexpr float kRowNominal = 16.0f;
+
+std::string orDash(const std::string& text)
+{
+    return text.empty() ? "\u2014" : text;
+}
+
+/// The stacked form's second line: every way to do the action.
+std::string waysLine(const ControlBinding& row)
+{
+    return "keys: " + orDash(row.keys) + "   mouse: " + orDash(row.mouse) + "   pad: " + orDash(row.gamepad);
+}
+} // namespace
+
+void HelpScreen::turnPage(int delta)
+{
+    m_page = std::clamp(m_page + delta, 0, m_pages - 1);
+}
+
 void HelpScreen::handleEvent(const sf::Event& event)
 {
-    // F1 and '?' are the app's (they toggle this screen); anything else that is a deliberate input closes it.
-    const bool key = event.type == sf::Event::KeyPressed && event.key.code != sf::Keyboard::F1 &&
-                     event.key.code != sf::Keyboard::LShift && event.key.code != sf::Keyboard::RShift;
-    const bool click = event.type == sf::Event::MouseButtonReleased;
-    if (key || click)
+    // F1 and '?' are the app's (they toggle this screen); page keys turn pages; any other deliberate input closes.
+    if (event.type == sf::Event::KeyPressed)
+    {
+        switch (event.key.code)
+        {
+        case sf::Keyboard::F1:
+        case sf::Keyboard::LShift:
+        case sf::Keyboard::RShift:
+            return;
+        case sf::Keyboard::Right:
+        case sf::Keyboard::Tab:
+        case sf::Keyboard::PageDown:
+            if (m_page + 1 < m_pages)
+            {
+                turnPage(+1);
+                return;
+            }
+            break;
+        case sf::Keyboard::Left:
+        case sf::Keyboard::PageUp:
+            if (m_page > 0)
+            {
+                turnPage(-1);
+                return;
+            }
+            break;
+        default:
+            break;
+        }
         m_app.screens().pop();
+    }
+    else if (event.type == sf::Event::MouseButtonReleased)
+    {
+        if (m_page + 1 < m_pages)
+            turnPage(+1);
+        else
+            m_app.screens().pop();
+    }
+}
+
+std::vector<std::vector<HelpScreen::Line>> HelpScreen::paginate(const sf::Font& font, float usableHeight,
+                                                                const std::vector<float>& rowHeights) const
+{
+    const float headHeight = font.getLineSpacing(m_app.textSize(kHeadNominal)) * 1.3f;
+    const std::vector<ControlBinding>& table = controlTable();
+    std::vector<std::vector<Line>> pages(1);
+    float used = 0.0f;
+    for (std::size_t i = 0; i < table.size(); ++i)
+    {
+        const bool newGroup = i == 0 || table[i].where != table[i - 1].where;
+        const float lineHeight = rowHeights[i];
+        const float need = lineHeight + (newGroup ? headHeight : 0.0f);
+        if (used + need > usableHeight && !pages.back().empty())
+        {
+            pages.emplace_back();
+            used = 0.0f;
+        }
+        // A group continued on a new page repeats its heading.
+        if (newGroup || pages.back().empty())
+        {
+            pages.back().push_back({i, true, headHeight});
+            used += headHeight;
+        }
+        pages.back().push_back({i, false, lineHeight});
+        used += lineHeight;
+    }
+    return pages;
 }
 
 void HelpScreen::draw(sf::RenderTarget& target)
@@ -29,33 +113,52 @@ void HelpScreen::draw(sf::RenderTarget& target)
         return;
     const float scale = m_app.uiScale();
     const sf::Vector2f window(target.getSize());
-    const unsigned titleSize = m_app.textSize(30.0f);
-    const unsigned headSize = m_app.textSize(17.0f);
-    const unsigned rowSize = m_app.textSize(16.0f);
+    const unsigned titleSize = m_app.textSize(kTitleNominal);
+    const unsigned headSize = m_app.textSize(kHeadNominal);
+    const unsigned rowSize = m_app.textSize(kRowNominal);
     const float rowHeight = font->getLineSpacing(rowSize);
     const std::vector<ControlBinding>& table = controlTable();
 
-    // Three columns sized to their widest entry.
+    // Four columns sized to their widest entry, if they fit; otherwise each control takes two lines.
     float actionWidth = 0.0f;
     float keysWidth = 0.0f;
     float mouseWidth = 0.0f;
-    int groups = 0;
-    std::string lastGroup;
+    float padWidth = 0.0f;
+    float stackedWidth = 0.0f;
     for (const ControlBinding& row : table)
     {
         actionWidth = std::max(actionWidth, measureText(*font, utf8(row.action), rowSize).x);
-        keysWidth = std::max(keysWidth, measureText(*font, utf8(row.keys), rowSize).x);
-        mouseWidth = std::max(mouseWidth, measureText(*font, utf8(row.mouse), rowSize).x);
-        if (row.where != lastGroup)
-            ++groups;
-        lastGroup = row.where;
+        keysWidth = std::max(keysWidth, measureText(*font, utf8(orDash(row.keys)), rowSize).x);
+        mouseWidth = std::max(mouseWidth, measureText(*font, utf8(orDash(row.mouse)), rowSize).x);
+        padWidth = std::max(padWidth, measureText(*font, utf8(orDash(row.gamepad)), rowSize).x);
+        stackedWidth = std::max({stackedWidth, measureText(*font, utf8(row.action), rowSize).x + 16.0f * scale,
+                                 measureText(*font, utf8(waysLine(row)), rowSize).x});
     }
-    const float gap = 28.0f * scale;
-    const float pad = 24.0f * scale;
-    const float width = std::min(window.x - 20.0f, actionWidth + keysWidth + mouseWidth + 2.0f * gap + 2.0f * pad);
-    const float height = font->getLineSpacing(titleSize) + rowHeight * 1.4f +
-                         static_cast<float>(table.size()) * rowHeight +
-                         static_cast<float>(groups) * font->getLineSpacing(headSize) * 1.3f + 2.0f * pad + rowHeight;
+    const float gap = 24.0f * scale;
+    const float pad = 20.0f * scale;
+    const float maxWidth = window.x - 20.0f;
+    const float columnsWidth = actionWidth + keysWidth + mouseWidth + padWidth + 3.0f * gap + 2.0f * pad;
+    const bool stacked = columnsWidth > maxWidth;
+    const float width = std::min(maxWidth, stacked ? stackedWidth + 2.0f * pad : columnsWidth);
+
+    const float chrome =
+        font->getLineSpacing(titleSize) + (stacked ? 0.0f : rowHeight * 1.4f) + 2.0f * pad + 1.5f * rowHeight;
+    // Stacked: the action, then every way to do it, wrapped to the card.
+    std::vector<std::vector<std::string>> ways(table.size());
+    std::vector<float> rowHeights(table.size(), rowHeight);
+    for (std::size_t i = 0; stacked && i < table.size(); ++i)
+    {
+        ways[i] = wrapText(*font, waysLine(table[i]), rowSize, width - 2.0f * pad - 16.0f * scale);
+        rowHeights[i] = (1.25f + static_cast<float>(ways[i].size())) * rowHeight;
+    }
+    const std::vector<std::vector<Line>> pages = paginate(*font, window.y - 20.0f - chrome, rowHeights);
+    m_pages = static_cast<int>(pages.size());
+    m_page = std::min(m_page, m_pages - 1);
+    const std::vector<Line>& page = pages[static_cast<std::size_t>(m_page)];
+    float linesHeight = 0.0f;
+    for (const Line& line : page)
+        linesHeight += line.height;
+    const float height = chrome + linesHeight;
     const sf::FloatRect card(0.5f * (window.x - width), std::max(10.0f, 0.5f * (window.y - height)), width, height);
     drawCard(target, card, scale, palette::kButtonOutline);
 
@@ -65,26 +168,47 @@ void HelpScreen::draw(sf::RenderTarget& target)
     const float actionX = card.left + pad;
     const float keysX = actionX + actionWidth + gap;
     const float mouseX = keysX + keysWidth + gap;
-    drawLabel(target, *font, utf8("Keyboard"), {keysX, y}, headSize, palette::kStar);
-    drawLabel(target, *font, utf8("Mouse"), {mouseX, y}, headSize, palette::kStar);
-    y += rowHeight * 1.4f;
-    lastGroup.clear();
-    for (const ControlBinding& row : table)
+    const float padX = mouseX + mouseWidth + gap;
+    if (!stacked)
     {
-        if (row.where != lastGroup)
-        {
-            drawLabel(target, *font, utf8(row.where), {actionX, y}, headSize, palette::kStar);
-            y += font->getLineSpacing(headSize) * 1.3f;
-            lastGroup = row.where;
-        }
-        drawLabel(target, *font, utf8(row.action), {actionX, y}, rowSize, palette::kText);
-        drawLabel(target, *font, utf8(row.keys), {keysX, y}, rowSize, palette::kText);
-        drawLabel(target, *font, utf8(row.mouse.empty() ? "\u2014" : row.mouse), {mouseX, y}, rowSize,
-                  palette::kTextDim);
-        y += rowHeight;
+        drawLabel(target, *font, utf8("Keyboard"), {keysX, y}, headSize, palette::kStar);
+        drawLabel(target, *font, utf8("Mouse"), {mouseX, y}, headSize, palette::kStar);
+        drawLabel(target, *font, utf8("Gamepad"), {padX, y}, headSize, palette::kStar);
+        y += rowHeight * 1.4f;
     }
-    drawLabel(target, *font, utf8("Press any key or click to close"), {card.left + 0.5f * width, y + 0.3f * rowHeight},
-              rowSize, palette::kTextDim, Align::Centre);
+    for (const Line& line : page)
+    {
+        const ControlBinding& row = table[line.row];
+        if (line.heading)
+            drawLabel(target, *font, utf8(row.where), {actionX, y}, headSize, palette::kStar);
+        else if (stacked)
+        {
+            drawLabel(target, *font, utf8(row.action), {actionX, y}, rowSize, palette::kText);
+            float wayY = y + rowHeight;
+            for (const std::string& way : ways[line.row])
+            {
+                drawLabel(target, *font, utf8(way), {actionX + 16.0f * scale, wayY}, rowSize, palette::kTextDim);
+                wayY += rowHeight;
+            }
+        }
+        else
+        {
+            drawLabel(target, *font, utf8(row.action), {actionX, y}, rowSize, palette::kText);
+            drawLabel(target, *font, utf8(orDash(row.keys)), {keysX, y}, rowSize, palette::kText);
+            drawLabel(target, *font, utf8(orDash(row.mouse)), {mouseX, y}, rowSize, palette::kTextDim);
+            drawLabel(target, *font, utf8(orDash(row.gamepad)), {padX, y}, rowSize, palette::kTextDim);
+        }
+        y += line.height;
+    }
+    std::string footer = "Press any key or click to close";
+    if (m_page + 1 < m_pages)
+        footer = "Page " + std::to_string(m_page + 1) + " of " + std::to_string(m_pages) +
+                 ": \u2192, Tab or a click for more; any other key closes";
+    else if (m_pages > 1)
+        footer = "Page " + std::to_string(m_pages) + " of " + std::to_string(m_pages) +
+                 ": \u2190 goes back; any other key or a click closes";
+    drawLabel(target, *font, utf8(footer), {card.left + 0.5f * width, y + 0.3f * rowHeight}, rowSize, palette::kTextDim,
+              Align::Centre);
 }
 
 } // namespace abalike::app

@@ -2,12 +2,19 @@
 
 #include "screens/Screen.hpp"
 
+#include <SFML/Graphics/Font.hpp>
+#include <string>
+#include <vector>
+
 namespace abalike::app
 {
 
 class App;
 
-/// The help overlay (F1 or ? anywhere): every control, by keyboard and by mouse. Any key or click closes it.
+/// The help overlay (F1 or ? anywhere): every control, by keyboard, mouse and gamepad, from the one controls table.
+/// It lays the table out as columns when they fit the window and as stacked rows when they do not (large text
+/// scale, small window), over as many pages as it needs: Right, Tab or a click turn the page; any other key, or a
+/// click on the last page, closes it.
 class HelpScreen : public Screen
 {
 public:
@@ -21,7 +28,21 @@ public:
     void draw(sf::RenderTarget& target) override;
 
 private:
+    /// One line of the card: a group heading or a control.
+    struct Line
+    {
+        std::size_t row = 0; ///< index into controlTable()
+        bool heading = false;
+        float height = 0.0f;
+    };
+    /// The table cut into pages that fit the window's height; rowHeights holds each control's height.
+    std::vector<std::vector<Line>> paginate(const sf::Font& font, float usableHeight,
+                                            const std::vector<float>& rowHeights) const;
+    void turnPage(int delta);
+
     App& m_app;
+    int m_page = 0;
+    int m_pages = 1; ///< as last drawn
 };
 
 } // namespace abalike::app

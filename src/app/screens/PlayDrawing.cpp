@@ -1,6 +1,9 @@
 #include "screens/PlayDrawing.hpp"
 
+#include "render/TrailPainter.hpp"
 #include "screens/App.hpp"
+
+#include <SFML/Graphics/View.hpp>
 
 namespace abalike::app
 {
@@ -15,8 +18,22 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
 {
     const GameSession& session = view.session();
     const Camera& camera = view.camera();
+    // A shake moves the world's picture, never the HUD and panels over it.
+    sf::Vector2f shakePx(0.0f, 0.0f);
+    for (const auto& layer : layers)
+        shakePx += layer->worldShakePx(view);
+    const sf::View still = target.getView();
+    if (shakePx != sf::Vector2f(0.0f, 0.0f))
+    {
+        sf::View shaken = still;
+        shaken.move(-shakePx);
+        target.setView(shaken);
+    }
     world.drawBackground(target, camera, session);
 
+    // Earlier shots on this level stay as dimmed trails (unless the player turned flown paths off).
+    if (view.app().settings().showActualPath)
+        drawShotTrails(target, camera, view.trails(), view.app().uiScale());
     // While the next bird is aimed, the last shot stays as a faded reference.
     const ShotRecord* lastShot = session.shots().empty() ? nullptr : &session.shots().back();
     const float opacity = session.phase() == Phase::Aiming ? kLastShotFade : 1.0f;
@@ -30,6 +47,7 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
     for (const auto& layer : layers)
         layer->drawWorld(target, view);
 
+    target.setView(still);
     hud.draw(target, target.getSize(), session, view.aim());
     for (const auto& layer : layers)
         layer->drawScreen(target, view);

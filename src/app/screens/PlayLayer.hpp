@@ -15,6 +15,8 @@
 namespace abalike::app
 {
 
+class ShotTrails;
+
 class App;
 
 /// What a layer on the play screen can see and do. The play screen implements it.
@@ -30,6 +32,11 @@ public:
     virtual const PredictedFlight* preview() const = 0;
     /// The current aim while a bird waits in the slingshot.
     virtual std::optional<AimReadout> aim() const = 0;
+
+    /// The paths the last shots on this level flew (kept across restarts).
+    virtual const ShotTrails& trails() const = 0;
+    /// Forgets them (key C).
+    virtual void clearTrails() = 0;
 
     /// While frozen the play screen takes no physics steps (the RK4 walkthrough pauses a flight this way).
     virtual bool frozen() const = 0;
@@ -70,6 +77,12 @@ public:
         (void)view;
     }
     /// Drawn over the HUD, in window pixels (panels, charts).
+    /// How far this layer shakes the world's picture this frame, in window pixels (the HUD stays still).
+    virtual sf::Vector2f worldShakePx(PlayView& view) const
+    {
+        (void)view;
+        return {0.0f, 0.0f};
+    }
     virtual void drawScreen(sf::RenderTarget& target, PlayView& view)
     {
         (void)target;

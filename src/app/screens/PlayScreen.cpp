@@ -3,6 +3,7 @@
 #include "screens/App.hpp"
 #include "screens/PauseScreen.hpp"
 #include "screens/PlayDrawing.hpp"
+#include "screens/PlayToolbar.hpp"
 #include "screens/ResultsScreen.hpp"
 
 #include <abalike/level/LevelIO.hpp>
@@ -27,6 +28,9 @@ PlayScreen::PlayScreen(App& app, PlaySource source)
       m_camera(Camera::fitLevel(m_source.level, Catalog::builtin(), app.windowSize())), m_script(app.options().shots),
       m_overlay(app.font()), m_hud(app.font()), m_reloadNotice(app.font()), m_layers(makePlayLayers(app))
 {
+    // On top of the shared layers: the toolbar sees clicks first, so a click on a button neither aims nor fires an
+    // ability. (The editor's play mode has its own panels instead.)
+    m_layers.push_back(std::make_unique<PlayToolbar>());
     startSession();
     if (!m_source.path.empty())
         m_watcher.emplace(m_source.path, Catalog::builtin());
@@ -42,7 +46,11 @@ void PlayScreen::startSession()
     m_frozen = false;
     resetAim();
     m_reloadErrors.clear();
-    m_app.trace().write("level", {{"id", m_source.level.id}, {"title", m_source.level.title}});
+    nlohmann::json event{{"id", m_source.level.id}, {"title", m_source.level.title}};
+    if (m_source.campaignIndex)
+        event["campaign_index"] = *m_source.campaignIndex;
+    m_app.trace().write("level", event);
+    m_trails.onLevelStart(*m_session);
     for (const auto& layer : m_layers)
         layer->onLevelStart(*this);
 }
@@ -54,6 +62,7 @@ void PlayScreen::restartLevel()
     m_frozen = false;
     resetAim();
     m_app.trace().write("restart", {{"id", m_source.level.id}});
+    m_trails.onLevelStart(*m_session);
     for (const auto& layer : m_layers)
         layer->onLevelStart(*this);
 }
@@ -111,9 +120,12 @@ void PlayScreen::handleEvent(const sf::Event& event)
     if (event.type == sf::Event::KeyPressed)
         handleKey(event.key);
 
+    // The ability takes a new press: a Space held since the launch repeats, and must not fire it by accident.
     const bool click = event.type == sf::Event::MouseButtonPressed && event.mouseButton.button == sf::Mouse::Left;
-    const bool space = event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::Space;
-    if ((click || space) && m_session->canActivateAbility() && !m_scriptAbilityAtS)
+    const bool key = event.type == sf::Event::KeyPressed &&
+                     (event.key.code == sf::Keyboard::Space || event.key.code == sf::Keyboard::Enter) &&
+                     !m_app.input().lastPressRepeated();
+    if ((click || key) && m_session->canActivateAbility() && !m_scriptAbilityAtS)
         m_abilityRequested = true;
     if (!playerMayAim())
         return;
@@ -188,6 +200,7 @@ void PlayScreen::physicsStep()
         m_app.notify(m_session->notice());
         m_session->clearNotice();
     }
+    m_trails.update(*m_session);
     for (const auto& layer : m_layers)
         layer->afterStep(*this);
     finishIfDone();

@@ -9,6 +9,7 @@
 #include "render/WorldRenderer.hpp"
 #include "screens/PlayLayer.hpp"
 #include "screens/Screen.hpp"
+#include "screens/ShotTrails.hpp"
 
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/LevelWatcher.hpp>
@@ -47,6 +48,7 @@ public:
     void frameUpdate(double frameS) override;
     void draw(sf::RenderTarget& target) override;
     void onResize(sf::Vector2u size) override;
+    bool rightClickIsBack() const override { return false; }
 
     /// Starts the level again from its definition.
     void restartLevel();
@@ -62,6 +64,8 @@ public:
     const Camera& camera() const override { return m_camera; }
     const PredictedFlight* preview() const override { return m_preview ? &*m_preview : nullptr; }
     std::optional<AimReadout> aim() const override;
+    const ShotTrails& trails() const override { return m_trails; }
+    void clearTrails() override { m_trails.clear(); }
     bool frozen() const override { return m_frozen; }
     void setFrozen(bool frozen) override { m_frozen = frozen; }
     void stepOnce() override;
@@ -101,6 +105,7 @@ private:
     bool m_finishHandled = false;
     bool m_frozen = false;
     Camera m_camera;
+    ShotTrails m_trails;
 
     AimController m_aim;
     ShotScript m_script;

@@ -39,6 +39,9 @@ public:
     /// The window's close button was pressed while this screen is on top. Return true to handle it yourself (the
     /// editor asks to save unsaved changes first, then quits); false lets the app quit at once.
     virtual bool onCloseRequest() { return false; }
+    /// Whether a right click means "back" (Escape) here, the mouse's way back out of every menu. Screens that use
+    /// the right button themselves (play: the tape measure; the editor) say no.
+    virtual bool rightClickIsBack() const { return true; }
 };
 
 } // namespace abalike::app

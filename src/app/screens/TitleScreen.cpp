@@ -3,6 +3,7 @@
 #include "editor/EditorSource.hpp"
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
+#include "render/TitleArt.hpp"
 #include "screens/App.hpp"
 #include "screens/HelpScreen.hpp"
 #include "screens/LevelSelectScreen.hpp"
@@ -76,6 +77,7 @@ void TitleScreen::draw(sf::RenderTarget& target)
     m_world.drawBackground(target, m_camera, *m_scenery);
     m_world.drawForeground(target, m_camera, *m_scenery, {0.0f, 0.0f});
     drawScrim(target);
+    drawTitleArt(target, m_app.uiScale());
 
     const float scale = m_app.uiScale();
     const sf::Vector2f window(target.getSize());

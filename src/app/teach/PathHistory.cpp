@@ -21,9 +21,6 @@ constexpr int kDotsPerSecond = 10;
 /// How near (pixels at scale 1) the mouse must be to a path point to read it.
 constexpr float kPickRadiusPx = 10.0f;
 
-/// Distinct colours for successive shots (colour-blind friendly, Okabe-Ito).
-const sf::Color kShotColours[] = {{230, 159, 0}, {86, 180, 233}, {0, 158, 115}, {240, 228, 66}, {204, 121, 167}};
-
 PathSample interpolate(const PathSample& a, const PathSample& b, double t)
 {
     const double u = b.t > a.t ? (t - a.t) / (b.t - a.t) : 0.0;
@@ -42,88 +39,34 @@ float distance(sf::Vector2f a, sf::Vector2f b)
 
 } // namespace
 
-std::vector<PathSample> samplesOf(const std::vector<std::array<double, 3>>& path)
+void PathHistory::onLevelStart()
 {
-    std::vector<PathSample> samples;
-    samples.reserve(path.size());
-    for (std::size_t i = 0; i < path.size(); ++i)
-    {
-        // Central differences inside, one-sided at the ends; a zero-length interval (a contact point recorded at
-        // a step's own time) borrows its neighbour's.
-        const std::size_t lo = i == 0 ? 0 : i - 1;
-        const std::size_t hi = std::min(i + 1, path.size() - 1);
-        const double dt = path[hi][0] - path[lo][0];
-        PathSample s{path[i][0], path[i][1], path[i][2], 0.0, 0.0};
-        if (dt > 1e-9)
-        {
-            s.vx = (path[hi][1] - path[lo][1]) / dt;
-            s.vy = (path[hi][2] - path[lo][2]) / dt;
-        }
-        else if (!samples.empty())
-        {
-            s.vx = samples.back().vx;
-            s.vy = samples.back().vy;
-        }
-        samples.push_back(s);
-    }
-    return samples;
-}
-
-void PathHistory::onLevelStart(const GameSession& session)
-{
-    if (session.level().id != m_levelId)
-        clear();
-    m_levelId = session.level().id;
-    m_seenShots = 0;
-    m_backIsLive = false;
     m_hover.reset();
     m_pinned = false;
+    m_keyPath.reset();
 }
 
 void PathHistory::clear()
 {
-    m_paths.clear();
-    m_backIsLive = false;
-    m_shotNumber = 0;
+    m_keyPath.reset();
+    m_keyTape = false;
     m_hover.reset();
     m_pinned = false;
     m_tape.reset();
     m_taping = false;
 }
 
-void PathHistory::update(const GameSession& session)
+void PathHistory::drawDots(sf::RenderTarget& target, const ShotTrails& trails, const Camera& camera, float scale)
 {
-    const std::vector<ShotRecord>& shots = session.shots();
-    if (shots.size() < m_seenShots)
-    {
-        m_seenShots = 0; // the session restarted under us
-        m_backIsLive = false;
-    }
-    while (m_seenShots < shots.size())
-    {
-        MeasuredPath path;
-        path.name = "shot " + std::to_string(++m_shotNumber);
-        path.colour = kShotColours[static_cast<std::size_t>(m_shotNumber - 1) % std::size(kShotColours)];
-        m_paths.push_back(std::move(path));
-        if (m_paths.size() > kMaxPaths)
-            m_paths.pop_front();
-        ++m_seenShots;
-        m_backIsLive = true;
-    }
-    if (m_backIsLive && !shots.empty() && shots.back().actualPath.size() != m_paths.back().samples.size())
-        m_paths.back().samples = samplesOf(shots.back().actualPath);
-}
-
-void PathHistory::drawDots(sf::RenderTarget& target, const Camera& camera, float scale) const
-{
+    const std::deque<MeasuredPath>& paths = trails.paths();
     Mesh mesh;
-    for (std::size_t p = 0; p < m_paths.size(); ++p)
+    for (std::size_t p = 0; p < paths.size(); ++p)
     {
-        const MeasuredPath& path = m_paths[p];
+        const MeasuredPath& path = paths[p];
         if (path.samples.size() < 2)
             continue;
         // Older paths fade so the newest reads first.
-        const float age = static_cast<float>(m_paths.size() - 1 - p);
+        const float age = static_cast<float>(paths.size() - 1 - p);
         const sf::Color colour = faded(path.colour, 1.0f - 0.15f * age);
         const sf::Color rim = faded(palette::kPreviewOutline, 1.0f - 0.15f * age);
         std::vector<sf::Vector2f> line;
@@ -148,9 +91,9 @@ void PathHistory::drawDots(sf::RenderTarget& target, const Camera& camera, float
     mesh.draw(target);
 }
 
-std::optional<PathHistory::Pick> PathHistory::pick(sf::Vector2f pixel, const Camera& camera,
-                                                   const PredictedFlight* preview, float radiusPx) const
+std::optional<PathHistory::Pick> PathHistory::pick(sf::Vector2f pixel, const PlayView& view, float radiusPx)
 {
+    const Camera& camera = view.camera();
     std::optional<Pick> best;
     float bestDistance = radiusPx;
     const auto consider = [&](const std::string& name, const PathSample& s)
@@ -162,39 +105,98 @@ std::optional<PathHistory::Pick> PathHistory::pick(sf::Vector2f pixel, const Cam
             best = Pick{name, s};
         }
     };
-    for (const MeasuredPath& path : m_paths)
+    for (const MeasuredPath& path : view.trails().paths())
         for (const PathSample& s : path.samples)
             consider(path.name, s);
-    if (preview != nullptr)
+    if (const PredictedFlight* preview = view.preview(); preview != nullptr)
         for (const PathPoint& p : preview->path)
             consider("preview", {p.t, p.s[0], p.s[1], p.s[2], p.s[3]});
     return best;
 }
 
-sf::Vector2f PathHistory::snap(sf::Vector2f pixel, const Camera& camera, const PredictedFlight* preview) const
+sf::Vector2f PathHistory::snap(sf::Vector2f pixel, const PlayView& view)
 {
-    if (const std::optional<Pick> near = pick(pixel, camera, preview, kPickRadiusPx))
+    if (const std::optional<Pick> near = pick(pixel, view, kPickRadiusPx))
         return worldOf(near->sample);
-    return camera.toWorld(pixel);
+    return view.camera().toWorld(pixel);
 }
 
-bool PathHistory::handleEvent(const sf::Event& event, const Camera& camera, const GameSession& session,
-                              const PredictedFlight* preview)
+void PathHistory::pinOnPath(const PlayView& view, std::size_t fromNewest, double t)
 {
+    const std::deque<MeasuredPath>& paths = view.trails().paths();
+    if (fromNewest >= paths.size() || paths[paths.size() - 1 - fromNewest].samples.empty())
+    {
+        m_keyPath.reset();
+        m_keyTape = false;
+        m_hover.reset();
+        m_pinned = false;
+        return;
+    }
+    const MeasuredPath& path = paths[paths.size() - 1 - fromNewest];
+    const std::vector<PathSample>& samples = path.samples;
+    m_keyT = std::clamp(t, samples.front().t, samples.back().t);
+    std::size_t i = 0;
+    while (i + 2 < samples.size() && samples[i + 1].t < m_keyT)
+        ++i;
+    const PathSample at = samples.size() < 2 ? samples.front() : interpolate(samples[i], samples[i + 1], m_keyT);
+    m_keyPath = fromNewest;
+    m_hover = Pick{path.name, at};
+    m_pinned = true;
+    m_used = true;
+    if (m_keyTape && m_tape)
+        (*m_tape)[1] = worldOf(at);
+}
+
+bool PathHistory::handleKey(const sf::Event::KeyEvent& key, const PlayView& view)
+{
+    const double stepS = key.shift ? 1.0 : kDotStepS;
+    switch (key.code)
+    {
+    case sf::Keyboard::M:
+        pinOnPath(view, m_keyPath ? *m_keyPath + 1 : 0, 0.0);
+        return true;
+    case sf::Keyboard::Comma:
+    case sf::Keyboard::Period:
+        if (!m_keyPath)
+            return false;
+        pinOnPath(view, *m_keyPath, m_keyT + (key.code == sf::Keyboard::Period ? stepS : -stepS));
+        return true;
+    case sf::Keyboard::L:
+        if (m_keyTape || !m_hover)
+        {
+            m_tape.reset();
+            m_keyTape = false;
+        }
+        else
+        {
+            const sf::Vector2f start = worldOf(m_hover->sample);
+            m_tape = std::array<sf::Vector2f, 2>{start, start};
+            m_keyTape = true;
+        }
+        return true;
+    default:
+        return false;
+    }
+}
+
+bool PathHistory::handleEvent(const sf::Event& event, const PlayView& view)
+{
+    const Camera& camera = view.camera();
+    const GameSession& session = view.session();
     if (event.type == sf::Event::MouseMoved)
     {
         const sf::Vector2f pixel(static_cast<float>(event.mouseMove.x), static_cast<float>(event.mouseMove.y));
         if (m_taping && m_tape)
-            (*m_tape)[1] = snap(pixel, camera, preview);
+            (*m_tape)[1] = snap(pixel, view);
         if (!m_pinned)
-            m_hover = pick(pixel, camera, preview, kPickRadiusPx);
+            m_hover = pick(pixel, view, kPickRadiusPx);
         m_used = m_used || m_hover.has_value();
         return false; // aiming follows the mouse too
     }
     if (event.type == sf::Event::MouseButtonPressed && event.mouseButton.button == sf::Mouse::Right)
     {
         const sf::Vector2f pixel(static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y));
-        const sf::Vector2f start = snap(pixel, camera, preview);
+        const sf::Vector2f start = snap(pixel, view);
         m_tape = std::array<sf::Vector2f, 2>{start, start};
         m_taping = true;
         m_used = true;
@@ -215,7 +217,7 @@ bool PathHistory::handleEvent(const sf::Event& event, const Camera& camera, cons
         const sf::Vector2f sling = camera.toScreen({static_cast<float>(launch[0]), static_cast<float>(launch[1])});
         if (distance(pixel, sling) < 40.0f)
             return false;
-        if (const std::optional<Pick> hit = pick(pixel, camera, preview, kPickRadiusPx))
+        if (const std::optional<Pick> hit = pick(pixel, view, kPickRadiusPx))
         {
             m_hover = hit;
             m_pinned = true;

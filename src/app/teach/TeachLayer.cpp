@@ -1,6 +1,7 @@
 #include "teach/TeachLayer.hpp"
 
 #include "screens/App.hpp"
+#include "screens/PlayToolbar.hpp"
 #include "teach/ForceArrows.hpp"
 #include "teach/ImpactPanel.hpp"
 #include "teach/WhyPanel.hpp"
@@ -39,6 +40,7 @@ bool TeachLayer::handleEvent(const sf::Event& event, PlayView& view)
             return true;
         case sf::Keyboard::C:
             m_paths.clear();
+            view.clearTrails();
             return true;
         default:
             if (m_comparison.handleKey(event.key))
@@ -46,9 +48,12 @@ bool TeachLayer::handleEvent(const sf::Event& event, PlayView& view)
             break;
         }
     }
-    if (overlayOn())
-        return m_paths.handleEvent(event, view.camera(), view.session(), view.preview());
-    return false;
+    if (!overlayOn())
+        return false;
+    if (event.type == sf::Event::KeyPressed && !event.key.control && !event.key.alt &&
+        m_paths.handleKey(event.key, view))
+        return true;
+    return m_paths.handleEvent(event, view);
 }
 
 void TeachLayer::onLevelStart(PlayView& view)
@@ -70,20 +75,14 @@ void TeachLayer::onLevelStart(PlayView& view)
     }
     m_walkthrough.stop(view);
     m_follower.reset();
-    m_paths.onLevelStart(view.session());
+    m_paths.onLevelStart();
     m_feedback.reset();
-}
-
-void TeachLayer::afterStep(PlayView& view)
-{
-    m_paths.update(view.session());
 }
 
 void TeachLayer::frameUpdate(PlayView& view, double frameS)
 {
     (void)frameS;
     const GameSession& session = view.session();
-    m_paths.update(session);
     m_feedback.update(session, view.aim());
     m_comparison.update(session, view.preview());
     GuideContext context;
@@ -103,7 +102,7 @@ void TeachLayer::drawWorld(sf::RenderTarget& target, PlayView& view)
 {
     const float scale = m_app.uiScale();
     if (overlayOn())
-        m_paths.drawDots(target, view.camera(), scale);
+        PathHistory::drawDots(target, view.trails(), view.camera(), scale);
     const sf::Font* font = m_app.font();
     m_comparison.drawWorld(target, view.camera(), scale);
     if (m_walkthrough.active())
@@ -129,7 +128,7 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
 
     // Right column: the flying bird's forces and energy, or after its first contact the impact; while aiming, the
     // chart and the comparison.
-    sf::Vector2f right(window.x - margin, margin);
+    sf::Vector2f right(window.x - margin, PlayToolbar::bottomPx(PlayToolbar::buttonScale(m_app)) + gap);
     const auto below = [&](const sf::FloatRect& rect)
     {
         if (rect.height > 0.0f)

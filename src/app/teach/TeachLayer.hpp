@@ -25,7 +25,6 @@ public:
     std::string_view name() const override { return "teach"; }
     bool handleEvent(const sf::Event& event, PlayView& view) override;
     void onLevelStart(PlayView& view) override;
-    void afterStep(PlayView& view) override;
     void frameUpdate(PlayView& view, double frameS) override;
     void drawWorld(sf::RenderTarget& target, PlayView& view) override;
     void drawScreen(sf::RenderTarget& target, PlayView& view) override;

@@ -69,7 +69,7 @@ std::optional<std::filesystem::path> setAside(const std::filesystem::path& path,
 
 SaveStore::SaveStore(std::filesystem::path dir) : m_dir(std::move(dir)) {}
 
-void SaveStore::load()
+void SaveStore::load(Damaged damaged)
 {
     if (m_dir.empty())
     {
@@ -77,12 +77,13 @@ void SaveStore::load()
                              "settings will not be kept after the game closes.");
         return;
     }
-    m_progress = loadFile(m_progressState, progressPath(), &parseProgress);
-    m_settings = loadFile(m_settingsState, settingsPath(), &parseSettings);
+    m_progress = loadFile(m_progressState, progressPath(), &parseProgress, damaged);
+    m_settings = loadFile(m_settingsState, settingsPath(), &parseSettings, damaged);
 }
 
 template <class T>
-T SaveStore::loadFile(FileState& state, const std::filesystem::path& path, T (*parse)(std::string_view))
+T SaveStore::loadFile(FileState& state, const std::filesystem::path& path, T (*parse)(std::string_view),
+                      Damaged damaged)
 {
     state.keepOut = false;
     const ReadResult read = readSmallFile(path, kMaxSaveBytes);
@@ -109,6 +110,13 @@ T SaveStore::loadFile(FileState& state, const std::filesystem::path& path, T (*p
             problem = e.what();
         }
         break;
+    }
+    if (damaged == Damaged::LeaveAlone)
+    {
+        state.keepOut = true;
+        m_messages.push_back("The " + std::string(state.what) + " file " + path.string() + " is damaged (" + problem +
+                             "): this scripted run uses defaults and leaves the file untouched.");
+        return T{};
     }
     std::string why;
     if (const auto backup = setAside(path, why))

@@ -1,0 +1,237 @@
+#include "input/Controls.hpp"
+#include "input/AimController.hpp"
+#include "input/Gamepad.hpp"
+#include "input/InputState.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+using namespace abalike::app;
+
+namespace
+{
+sf::Event key(sf::Keyboard::Key code, bool shift = false, bool pressed = true)
+{
+    sf::Event event{};
+    event.type = pressed ? sf::Event::KeyPressed : sf::Event::KeyReleased;
+    event.key.code = code;
+    event.key.shift = shift;
+    return event;
+}
+
+sf::Event padButton(unsigned button, bool pressed)
+{
+    sf::Event event{};
+    event.type = pressed ? sf::Event::JoystickButtonPressed : sf::Event::JoystickButtonReleased;
+    event.joystickButton.joystickId = 0;
+    event.joystickButton.button = button;
+    return event;
+}
+
+sf::Event padAxis(sf::Joystick::Axis axis, float position)
+{
+    sf::Event event{};
+    event.type = sf::Event::JoystickMoved;
+    event.joystickMove.joystickId = 0;
+    event.joystickMove.axis = axis;
+    event.joystickMove.position = position;
+    return event;
+}
+
+const Camera& testCamera()
+{
+    static const Camera camera = Camera::fromView({-12.8f, 7.2f}, 50.0f, {1280u, 720u});
+    return camera;
+}
+
+bool press(AimController& aim, sf::Keyboard::Key code, bool shift = false)
+{
+    return aim.handleEvent(key(code, shift), testCamera(), {0.0f, 0.0f});
+}
+} // namespace
+
+TEST(AimKeys, FineStepsLandOnTheOneDegreeAndTwoPercentGrid)
+{
+    AimController aim;
+    aim.set(43.2, 0.51);
+    press(aim, sf::Keyboard::Up);
+    EXPECT_NEAR(aim.angleDeg(), 44.0, 1e-12);
+    press(aim, sf::Keyboard::Down);
+    press(aim, sf::Keyboard::Down);
+    EXPECT_NEAR(aim.angleDeg(), 42.0, 1e-12);
+    press(aim, sf::Keyboard::Right);
+    EXPECT_NEAR(aim.powerFraction(), 0.52, 1e-12);
+    press(aim, sf::Keyboard::Left);
+    press(aim, sf::Keyboard::Left);
+    EXPECT_NEAR(aim.powerFraction(), 0.48, 1e-12);
+}
+
+TEST(AimKeys, ShiftTakesCoarseStepsOfFiveDegreesAndTenPercent)
+{
+    AimController aim; // 45 degrees, 50 %
+    press(aim, sf::Keyboard::Up, true);
+    EXPECT_NEAR(aim.angleDeg(), 50.0, 1e-12);
+    aim.set(43.2, 0.47);
+    press(aim, sf::Keyboard::Up, true);
+    EXPECT_NEAR(aim.angleDeg(), 45.0, 1e-12); // to the grid first, not 48.2
+    press(aim, sf::Keyboard::Down, true);
+    EXPECT_NEAR(aim.angleDeg(), 40.0, 1e-12);
+    press(aim, sf::Keyboard::Right, true);
+    EXPECT_NEAR(aim.powerFraction(), 0.5, 1e-12);
+    press(aim, sf::Keyboard::Right, true);
+    EXPECT_NEAR(aim.powerFraction(), 0.6, 1e-12);
+}
+
+TEST(AimKeys, StepsStopAtTheLimits)
+{
+    AimController aim;
+    aim.set(88.0, 0.97);
+    press(aim, sf::Keyboard::Up, true);
+    press(aim, sf::Keyboard::Right, true);
+    EXPECT_DOUBLE_EQ(aim.angleDeg(), 90.0);
+    EXPECT_DOUBLE_EQ(aim.powerFraction(), 1.0);
+    aim.set(-88.0, 0.05);
+    press(aim, sf::Keyboard::Down, true);
+    press(aim, sf::Keyboard::Left, true);
+    EXPECT_DOUBLE_EQ(aim.angleDeg(), -90.0);
+    EXPECT_NEAR(aim.powerFraction(), 0.02, 1e-12); // never below one fine step: a zero pull launches nothing
+}
+
+TEST(AimKeys, SpaceAndEnterLaunchButOnlyWithEnoughPull)
+{
+    AimController aim;
+    EXPECT_TRUE(press(aim, sf::Keyboard::Space));
+    EXPECT_TRUE(press(aim, sf::Keyboard::Enter));
+    EXPECT_FALSE(press(aim, sf::Keyboard::Up));
+    aim.set(45.0, 0.1); // a 0.2 m pull is under the 0.25 m minimum
+    EXPECT_FALSE(press(aim, sf::Keyboard::Space));
+}
+
+TEST(InputStateRepeat, AHeldKeyIsARepeatAndANewPressIsNot)
+{
+    InputState input;
+    input.apply(key(sf::Keyboard::Space));
+    EXPECT_FALSE(input.lastPressRepeated());
+    input.apply(key(sf::Keyboard::Space)); // the system's key repeat: no release in between
+    EXPECT_TRUE(input.lastPressRepeated());
+    input.apply(key(sf::Keyboard::Space, false, false));
+    input.apply(key(sf::Keyboard::Space));
+    EXPECT_FALSE(input.lastPressRepeated());
+}
+
+TEST(GamepadMapping, ButtonsPressTheirKeys)
+{
+    GamepadTranslator pad;
+    const std::vector<std::pair<unsigned, sf::Keyboard::Key>> expected{
+        {0, sf::Keyboard::Space}, {1, sf::Keyboard::Escape}, {2, sf::Keyboard::R},     {3, sf::Keyboard::T},
+        {5, sf::Keyboard::Home},  {6, sf::Keyboard::F1},     {7, sf::Keyboard::Escape}};
+    for (const auto& [button, code] : expected)
+    {
+        const std::vector<sf::Event> down = pad.translate(padButton(button, true));
+        ASSERT_EQ(down.size(), 1u) << "button " << button;
+        EXPECT_EQ(down[0].type, sf::Event::KeyPressed);
+        EXPECT_EQ(down[0].key.code, code) << "button " << button;
+        const std::vector<sf::Event> up = pad.translate(padButton(button, false));
+        ASSERT_EQ(up.size(), 1u);
+        EXPECT_EQ(up[0].type, sf::Event::KeyReleased);
+    }
+    EXPECT_TRUE(pad.translate(padButton(12, true)).empty()); // a button with no use
+}
+
+TEST(GamepadMapping, StickAndDpadAreArrowsWithHysteresis)
+{
+    GamepadTranslator pad;
+    EXPECT_TRUE(pad.translate(padAxis(sf::Joystick::Y, -40.0f)).empty()); // under the press threshold
+    std::vector<sf::Event> out = pad.translate(padAxis(sf::Joystick::Y, -80.0f));
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_EQ(out[0].type, sf::Event::KeyPressed);
+    EXPECT_EQ(out[0].key.code, sf::Keyboard::Up);
+    EXPECT_TRUE(pad.translate(padAxis(sf::Joystick::Y, -40.0f)).empty()); // still held above the release threshold
+    out = pad.translate(padAxis(sf::Joystick::Y, -20.0f));
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_EQ(out[0].type, sf::Event::KeyReleased);
+    EXPECT_EQ(out[0].key.code, sf::Keyboard::Up);
+
+    out = pad.translate(padAxis(sf::Joystick::PovX, 100.0f));
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_EQ(out[0].key.code, sf::Keyboard::Right);
+    // Straight across to the other side: release one arrow, press the other.
+    out = pad.translate(padAxis(sf::Joystick::PovX, -100.0f));
+    ASSERT_EQ(out.size(), 2u);
+    EXPECT_EQ(out[0].type, sf::Event::KeyReleased);
+    EXPECT_EQ(out[0].key.code, sf::Keyboard::Right);
+    EXPECT_EQ(out[1].type, sf::Event::KeyPressed);
+    EXPECT_EQ(out[1].key.code, sf::Keyboard::Left);
+
+    out = pad.translate(padAxis(sf::Joystick::V, -90.0f));
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_EQ(out[0].key.code, sf::Keyboard::Add);                        // right stick up zooms in
+    EXPECT_TRUE(pad.translate(padAxis(sf::Joystick::Z, 100.0f)).empty()); // triggers are not used
+}
+
+TEST(GamepadMapping, AHeldDirectionRepeatsLikeAHeldKey)
+{
+    GamepadTranslator pad;
+    pad.translate(padAxis(sf::Joystick::X, 90.0f));
+    EXPECT_TRUE(pad.tick(0.30).empty());         // before the repeat delay
+    std::vector<sf::Event> out = pad.tick(0.06); // 0.36 s: the first repeat
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_EQ(out[0].type, sf::Event::KeyPressed);
+    EXPECT_EQ(out[0].key.code, sf::Keyboard::Right);
+    EXPECT_EQ(pad.tick(0.16).size(), 2u); // 0.52 s: two more at 0.43 and 0.51
+    pad.translate(padAxis(sf::Joystick::X, 0.0f));
+    EXPECT_TRUE(pad.tick(1.0).empty());
+}
+
+TEST(GamepadMapping, LbHeldMakesArrowsCoarseAndUnplugReleasesEverything)
+{
+    GamepadTranslator pad;
+    std::vector<sf::Event> out = pad.translate(padButton(4, true));
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_EQ(out[0].key.code, sf::Keyboard::LShift);
+    out = pad.translate(padAxis(sf::Joystick::Y, 100.0f));
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_EQ(out[0].key.code, sf::Keyboard::Down);
+    EXPECT_TRUE(out[0].key.shift);
+
+    sf::Event unplug{};
+    unplug.type = sf::Event::JoystickDisconnected;
+    out = pad.translate(unplug);
+    ASSERT_EQ(out.size(), 2u);
+    EXPECT_EQ(out[0].type, sf::Event::KeyReleased);
+    EXPECT_EQ(out[0].key.code, sf::Keyboard::Down);
+    EXPECT_EQ(out[1].type, sf::Event::KeyReleased);
+    EXPECT_EQ(out[1].key.code, sf::Keyboard::LShift);
+    EXPECT_TRUE(pad.tick(1.0).empty());
+}
+
+TEST(ControlsTable, EveryPlayActionHasAKeyAndAMouseWay)
+{
+    for (const ControlBinding& row : controlTable())
+    {
+        EXPECT_FALSE(row.action.empty());
+        EXPECT_FALSE(row.mouse.empty()) << row.action;
+        EXPECT_FALSE(row.keys.empty()) << row.action;
+    }
+}
+
+TEST(ControlsTable, TheReadmePrintsExactlyThisTable)
+{
+    std::ifstream file(std::string(ABALIKE_SOURCE_DIR) + "/README.md");
+    ASSERT_TRUE(file) << "README.md not found";
+    std::stringstream text;
+    text << file.rdbuf();
+    const std::string readme = text.str();
+    const std::string begin = "<!-- controls table: generated from src/app/input/Controls.cpp -->\n";
+    const std::string end = "<!-- end of controls table -->";
+    const std::size_t from = readme.find(begin);
+    const std::size_t to = readme.find(end);
+    ASSERT_NE(from, std::string::npos) << "README.md has no controls table marker";
+    ASSERT_NE(to, std::string::npos);
+    EXPECT_EQ(readme.substr(from + begin.size(), to - from - begin.size()), controlTableMarkdown())
+        << "Paste this between the markers in README.md:\n"
+        << controlTableMarkdown();
+}
