@@ -1,4 +1,5 @@
 #include "../save/TempDir.hpp"
+#include "../SanitizerBuild.hpp"
 #include "RandomLevel.hpp"
 
 #include <abalike/level/LevelIO.hpp>
@@ -88,7 +89,8 @@ INSTANTIATE_TEST_SUITE_P(Levels, CampaignLevelWriter, ::testing::ValuesIn(campai
 TEST(LevelWriter, GeneratedLevelsRoundTripExactly)
 {
     test::RandomLevel random(20240601);
-    for (int i = 0; i < 120; ++i)
+    const int count = test::kSanitizerBuild ? 30 : 120;
+    for (int i = 0; i < count; ++i)
     {
         SCOPED_TRACE("level " + std::to_string(i));
         const LevelDef level = random.next();

@@ -120,8 +120,8 @@ TEST_F(ScreenFlow, ALevelOnTheCommandLineGoesStraightToIt)
 
 TEST_F(ScreenFlow, ShotsWithoutALevelStartTheCampaignAndAWinLeadsOn)
 {
-    // 1-1 as the solver wins it (abalike solve): two shots; then N goes to 1-2.
-    const GameRun run = play("--shot 30,18 --shot 5,30 --frames 1500" + script(R"([{"frame": 1490, "key": "N"}])"));
+    // 1-1 as the solver wins it (abalike solve): two shots, decided at frame 740; then N goes to 1-2.
+    const GameRun run = play("--shot 30,18 --shot 5,30 --frames 780" + script(R"([{"frame": 770, "key": "N"}])"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.values("finished", "won"), (std::vector<std::string>{"true"})) << "the two shots win 1-1";
     EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"1-1", "1-2"}));
