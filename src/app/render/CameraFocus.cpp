@@ -52,9 +52,8 @@ CameraFocus cameraFocusOf(const GameSession& session)
     {
         from = to = focus.birds.front().centre().x;
         const ShotRecord& shot = session.shots().back();
-        const float aimX = shot.predictedContact && !shot.actualContact
-                               ? static_cast<float>(shot.predictedContact->x)
-                               : from + focus.birdVelocityMps.x * kLookAheadS;
+        const float aimX = shot.predictedContact && !shot.actualContact ? static_cast<float>(shot.predictedContact->x)
+                                                                        : from + focus.birdVelocityMps.x * kLookAheadS;
         from = std::min(from, aimX);
         to = std::max(to, aimX);
     }
@@ -68,7 +67,8 @@ CameraFocus cameraFocusOf(const GameSession& session)
     to += kStructureReachM;
     for (const Entity& entity : world.entities())
     {
-        if (!entity.alive || entity.body == nullptr || (entity.kind != EntityKind::Block && entity.kind != EntityKind::Pig))
+        if (!entity.alive || entity.body == nullptr ||
+            (entity.kind != EntityKind::Block && entity.kind != EntityKind::Pig))
             continue;
         const WorldBox box = entityBox(entity);
         if (box.right < from || box.left > to)

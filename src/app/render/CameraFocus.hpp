@@ -14,9 +14,9 @@ namespace abalike::app
 /// without a window (tests/app/CameraRigTest.cpp).
 struct CameraFocus
 {
-    WorldBox home;             ///< the level as designed: the view it starts with and returns to
-    float groundY = 0.0f;      ///< the ground line, kept near the bottom edge
-    bool shotUnderWay = false; ///< a bird was launched and the world has not settled yet
+    WorldBox home;                     ///< the level as designed: the view it starts with and returns to
+    float groundY = 0.0f;              ///< the ground line, kept near the bottom edge
+    bool shotUnderWay = false;         ///< a bird was launched and the world has not settled yet
     std::vector<WorldBox> birds;       ///< every bird, split bird and egg in the world, launched bird first
     sf::Vector2f birdVelocityMps;      ///< the launched bird's velocity (the camera leads it)
     std::optional<WorldBox> structure; ///< the standing blocks and pigs the shot is flying at

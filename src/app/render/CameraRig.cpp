@@ -13,8 +13,6 @@ constexpr float kBirdMarginPx = 24.0f;    ///< ... and never less than this on s
 constexpr float kLeadS = 0.6f;            ///< the camera looks this far ahead of the bird
 constexpr float kStructureMarginM = 1.5f; ///< room around the structure
 constexpr float kManualZoomOut = 4.0f;    ///< the player may zoom out to this many times the home view
-constexpr float kMaxShakePx = 10.0f;
-constexpr float kShakeDecayPerS = 1.6f;
 
 float easing(double frameS, double timeS)
 {
@@ -29,7 +27,6 @@ void CameraRig::reset(const CameraFocus& focus, sf::Vector2u windowSize)
     m_groundY = focus.groundY;
     m_mode = focus.shotUnderWay ? Mode::Follow : Mode::Home;
     m_shotUnderWay = focus.shotUnderWay;
-    m_trauma = 0.0f;
     m_view = target(focus);
     m_snap = false;
     rebuild();
@@ -95,9 +92,6 @@ void CameraRig::update(const CameraFocus& focus, double frameS)
     m_snap = false;
     if (m_mode != Mode::Home)
         keepInView(focus);
-
-    m_clockS += frameS;
-    m_trauma = std::max(0.0f, m_trauma - kShakeDecayPerS * static_cast<float>(frameS));
     rebuild();
 }
 
@@ -133,7 +127,8 @@ void CameraRig::keepInView(const CameraFocus& focus)
         return;
     }
     const WorldBox both = visible.united(needed);
-    const sf::Vector2f window(static_cast<float>(std::max(m_window.x, 1u)), static_cast<float>(std::max(m_window.y, 1u)));
+    const sf::Vector2f window(static_cast<float>(std::max(m_window.x, 1u)),
+                              static_cast<float>(std::max(m_window.y, 1u)));
     m_view.pixelsPerMetre = std::clamp(std::min(window.x / both.width(), window.y / both.height()),
                                        camera_limits::kMinPixelsPerMetre, camera_limits::kMaxPixelsPerMetre);
     m_view.centreM = both.centre();
@@ -177,32 +172,9 @@ void CameraRig::recentre()
     m_mode = m_shotUnderWay ? Mode::Follow : Mode::Home;
 }
 
-void CameraRig::shake(float strength)
-{
-    if (m_shakeEnabled)
-        m_trauma = std::min(1.0f, m_trauma + strength);
-}
-
-void CameraRig::setShakeEnabled(bool enabled)
-{
-    m_shakeEnabled = enabled;
-    if (!enabled)
-        m_trauma = 0.0f;
-    rebuild();
-}
-
 void CameraRig::rebuild()
 {
-    sf::Vector2f offsetM;
-    if (m_trauma > 0.0f)
-    {
-        // Smooth pseudo-noise from incommensurate sines; the square of the trauma makes small jolts gentle.
-        const auto t = static_cast<float>(m_clockS);
-        const float amount = kMaxShakePx * m_trauma * m_trauma / m_view.pixelsPerMetre;
-        offsetM = {amount * (std::sin(t * 47.0f) * 0.6f + std::sin(t * 29.0f + 1.3f) * 0.4f),
-                   amount * (std::sin(t * 53.0f + 0.7f) * 0.6f + std::sin(t * 31.0f) * 0.4f)};
-    }
-    m_camera = Camera::centredOn(m_view.centreM + offsetM, m_view.pixelsPerMetre, m_window);
+    m_camera = Camera::centredOn(m_view.centreM, m_view.pixelsPerMetre, m_window);
 }
 
 } // namespace abalike::app

@@ -35,14 +35,9 @@ public:
     void zoomAt(float factor, sf::Vector2f pixel);
     /// Back to automatic: home, or following if a shot is under way.
     void recentre();
-    /// A jolt for a heavy impact, 0..1 (adds up, decays in about a second). Ignored when shake is off.
-    void shake(float strength);
-    /// Reduced motion turns shake off.
-    void setShakeEnabled(bool enabled);
-
-    /// The camera to draw with this frame (with any shake).
+    /// The camera to draw with this frame. (A shake is FxLayer's: it moves the picture, not the camera.)
     const Camera& camera() const { return m_camera; }
-    /// Where the rig looks, without shake.
+    /// Where the rig looks.
     const CameraView& view() const { return m_view; }
     Mode mode() const { return m_mode; }
 
@@ -67,9 +62,6 @@ private:
     Mode m_mode = Mode::Home;
     bool m_shotUnderWay = false;
     bool m_snap = true; ///< jump to the next target instead of easing (new level, resize in home view)
-    bool m_shakeEnabled = true;
-    float m_trauma = 0.0f;
-    double m_clockS = 0.0;
 };
 
 } // namespace abalike::app
