@@ -44,6 +44,13 @@ sf::Vector2f AimController::pullOffset() const
             static_cast<float>(-pull * std::sin(m_angleDeg * kDegToRad))};
 }
 
+bool AimController::grabs(sf::Vector2f pixel, const Camera& camera, sf::Vector2f pouch) const
+{
+    const sf::Vector2f world = camera.toWorld(pixel);
+    const float grab = std::max(kGrabRadiusM, kGrabRadiusPx * camera.metresPerPixel());
+    return distance(world, pouch) <= grab || distance(world, pouch + pullOffset()) <= grab;
+}
+
 bool AimController::handleEvent(const sf::Event& event, const Camera& camera, sf::Vector2f pouch)
 {
     switch (event.type)
@@ -52,10 +59,7 @@ bool AimController::handleEvent(const sf::Event& event, const Camera& camera, sf
     {
         if (event.mouseButton.button != sf::Mouse::Left)
             return false;
-        const sf::Vector2f world =
-            camera.toWorld({static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y)});
-        const float grab = std::max(kGrabRadiusM, kGrabRadiusPx * camera.metresPerPixel());
-        if (distance(world, pouch) <= grab || distance(world, pouch + pullOffset()) <= grab)
+        if (grabs({static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y)}, camera, pouch))
         {
             m_dragging = true;
             m_dragMoved = false;

@@ -31,6 +31,9 @@ public:
     /// a drag or pressed Space or Enter: launch with the current aim.
     bool handleEvent(const sf::Event& event, const Camera& camera, sf::Vector2f pouch);
 
+    /// Whether a left press at this window pixel takes hold of the bird (near the pouch or the bird).
+    bool grabs(sf::Vector2f pixel, const Camera& camera, sf::Vector2f pouch) const;
+
     double angleDeg() const { return m_angleDeg; }
     double powerFraction() const { return m_power; }
     bool dragging() const { return m_dragging; }

@@ -13,9 +13,10 @@ namespace abalike::app
 class Camera
 {
 public:
-    /// Frames a level in a window: from 4 m left of the slingshot to 4 m beyond the furthest block or pig,
-    /// the ground about 12% above the bottom edge, zoomed out further if the tallest structure would not fit.
+    /// Frames a level in a window: its home box (levelHomeBox: the slingshot and every body) fitted by fitBox.
     static Camera fitLevel(const LevelDef& level, const Catalog& catalog, sf::Vector2u windowSize);
+    /// A view centred on a world point at a scale (pixels per metre), for a window of this size.
+    static Camera centredOn(sf::Vector2f centreM, float pixelsPerMetre, sf::Vector2u windowSize);
 
     /// A view with the given world point (metres) at the window's top-left corner and scale: the editor pans and
     /// zooms with it.
@@ -34,6 +35,11 @@ public:
     /// The part of the world the window shows (left, bottom, width, height in metres).
     sf::FloatRect visibleWorld() const { return m_visible; }
     sf::Vector2u windowSize() const { return m_windowSize; }
+    /// The world point at the middle of the window.
+    sf::Vector2f centre() const
+    {
+        return {m_visible.left + 0.5f * m_visible.width, m_visible.top + 0.5f * m_visible.height};
+    }
 
 private:
     Camera(sf::Vector2f worldAtScreenOrigin, float pixelsPerMetre, sf::Vector2u windowSize);

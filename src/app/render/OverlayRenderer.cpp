@@ -1,5 +1,7 @@
 #include "render/OverlayRenderer.hpp"
 
+#include "render/LabelPlacement.hpp"
+
 #include "render/Hud.hpp"
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
@@ -133,7 +135,7 @@ void OverlayRenderer::drawShotPaths(sf::RenderTarget& target, const Camera& came
 }
 
 void OverlayRenderer::drawShotMarkers(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot,
-                                      float opacity)
+                                      float opacity, std::span<const sf::FloatRect> avoid, float textScale)
 {
     m_mesh.clear();
     if (shot.ability)
@@ -159,15 +161,14 @@ void OverlayRenderer::drawShotMarkers(sf::RenderTarget& target, const Camera& ca
 
     if (m_font == nullptr || !shot.deviationM || !actualAt)
         return;
-    // The label sits above and right of the contact, where the incoming path is not, kept inside the window.
-    const auto size = static_cast<unsigned>(std::max(9.0f, std::round(16.0f * hudScale(camera.windowSize()))));
+    // Next to the contact, in free sky: off the structure if there is room, inside the window.
+    const float scale = hudScale(camera.windowSize());
+    const auto size = static_cast<unsigned>(std::max(9.0f, std::round(16.0f * scale * textScale)));
     const sf::String text = utf8("predicted vs actual: " + formatDistance(*shot.deviationM));
     const sf::Vector2f extent = measureText(*m_font, text, size);
     const float pad = 0.4f * static_cast<float>(size);
-    sf::Vector2f at = *actualAt + sf::Vector2f(14.0f, -extent.y - 2.0f * pad - 36.0f);
-    const sf::Vector2f window(camera.windowSize());
-    at.x = std::clamp(at.x, 4.0f, std::max(4.0f, window.x - extent.x - 2.0f * pad - 4.0f));
-    at.y = std::clamp(at.y, 4.0f, std::max(4.0f, window.y - extent.y - 2.0f * pad - 4.0f));
+    const sf::Vector2f at = placeLabel(*actualAt, extent + sf::Vector2f(2.0f * pad, 2.0f * pad),
+                                       sf::Vector2f(camera.windowSize()), avoid, 18.0f * scale);
 
     sf::RectangleShape box({extent.x + 2.0f * pad, extent.y + 2.0f * pad});
     box.setPosition(at);

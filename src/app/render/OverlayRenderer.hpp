@@ -25,7 +25,10 @@ public:
     /// The paths of a fired shot, at the given opacity (older shots fade); drawn behind blocks and birds.
     void drawShotPaths(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot, float opacity);
     /// The contact markers and the deviation label of a fired shot; drawn over everything.
-    void drawShotMarkers(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot, float opacity);
+    /// The predicted and actual contact, the ability's impulses, and the "predicted vs actual" label placed next to
+    /// the contact but off the boxes in avoid (the structure's, on screen). textScale is the player's setting.
+    void drawShotMarkers(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot, float opacity,
+                         std::span<const sf::FloatRect> avoid, float textScale);
 
 private:
     void addDots(const Camera& camera, std::span<const sf::Vector2f> worldPoints, float radius, float opacity);

@@ -1,5 +1,6 @@
 #include "screens/PlayDrawing.hpp"
 
+#include "render/LabelPlacement.hpp"
 #include "render/TrailPainter.hpp"
 #include "screens/App.hpp"
 
@@ -41,7 +42,8 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
         overlay.drawShotPaths(target, camera, *lastShot, opacity);
     world.drawForeground(target, camera, session, pullOffset);
     if (lastShot != nullptr)
-        overlay.drawShotMarkers(target, camera, *lastShot, opacity);
+        overlay.drawShotMarkers(target, camera, *lastShot, opacity, structureScreenBoxes(session, camera),
+                                static_cast<float>(view.app().settings().textScale));
     if (const PredictedFlight* preview = view.preview())
         overlay.drawPreview(target, camera, *preview);
     for (const auto& layer : layers)

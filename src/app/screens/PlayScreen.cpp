@@ -1,5 +1,6 @@
 #include "screens/PlayScreen.hpp"
 
+#include "render/CameraFocus.hpp"
 #include "screens/App.hpp"
 #include "screens/PauseScreen.hpp"
 #include "screens/PlayDrawing.hpp"
@@ -24,9 +25,8 @@ sf::Vector2f toVector(const std::array<double, 2>& p)
 } // namespace
 
 PlayScreen::PlayScreen(App& app, PlaySource source)
-    : m_app(app), m_source(std::move(source)),
-      m_camera(Camera::fitLevel(m_source.level, Catalog::builtin(), app.windowSize())), m_script(app.options().shots),
-      m_overlay(app.font()), m_hud(app.font()), m_reloadNotice(app.font()), m_layers(makePlayLayers(app))
+    : m_app(app), m_source(std::move(source)), m_script(app.options().shots), m_overlay(app.font()), m_hud(app.font()),
+      m_reloadNotice(app.font()), m_layers(makePlayLayers(app))
 {
     // On top of the shared layers: the toolbar sees clicks first, so a click on a button neither aims nor fires an
     // ability. (The editor's play mode has its own panels instead.)
@@ -41,7 +41,7 @@ PlayScreen::~PlayScreen() = default;
 void PlayScreen::startSession()
 {
     m_session = std::make_unique<GameSession>(m_source.level, Catalog::builtin());
-    m_camera = Camera::fitLevel(m_session->level(), m_session->catalog(), m_app.windowSize());
+    m_rig.reset(cameraFocusOf(*m_session), m_app.windowSize());
     m_finishHandled = false;
     m_frozen = false;
     resetAim();
@@ -58,6 +58,7 @@ void PlayScreen::startSession()
 void PlayScreen::restartLevel()
 {
     m_session->restart();
+    m_rig.reset(cameraFocusOf(*m_session), m_app.windowSize());
     m_finishHandled = false;
     m_frozen = false;
     resetAim();
@@ -125,11 +126,22 @@ void PlayScreen::handleEvent(const sf::Event& event)
     const bool key = event.type == sf::Event::KeyPressed &&
                      (event.key.code == sf::Keyboard::Space || event.key.code == sf::Keyboard::Enter) &&
                      !m_app.input().lastPressRepeated();
-    if ((click || key) && m_session->canActivateAbility() && !m_scriptAbilityAtS)
+    const bool ability = (click || key) && m_session->canActivateAbility() && !m_scriptAbilityAtS;
+    if (ability)
         m_abilityRequested = true;
-    if (!playerMayAim())
+
+    // A left press that neither fires an ability nor takes hold of the bird pans the camera (empty sky).
+    const bool mayAim = playerMayAim();
+    const sf::Vector2f pouch = toVector(m_session->launchPoint());
+    bool leftIsFree = !ability;
+    if (click && mayAim)
+        leftIsFree = !m_aim.grabs({static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y)},
+                                  m_rig.camera(), pouch);
+    if (!m_aim.dragging() && m_cameraControls.handleEvent(event, m_rig, leftIsFree))
         return;
-    if (m_aim.handleEvent(event, m_camera, toVector(m_session->launchPoint())))
+    if (!mayAim)
+        return;
+    if (m_aim.handleEvent(event, m_rig.camera(), pouch))
         m_requestedLaunch = ScriptedShot(m_aim.angleDeg(), aimSpeedMps());
 }
 
@@ -307,13 +319,14 @@ void PlayScreen::frameUpdate(double frameS)
     pollLevelFile();
     syncScriptedAim();
     refreshPreview();
+    m_rig.update(cameraFocusOf(*m_session), frameS);
     for (const auto& layer : m_layers)
         layer->frameUpdate(*this, frameS);
 }
 
 void PlayScreen::onResize(sf::Vector2u size)
 {
-    m_camera = Camera::fitLevel(m_session->level(), m_session->catalog(), size);
+    m_rig.resize(size);
 }
 
 void PlayScreen::draw(sf::RenderTarget& target)

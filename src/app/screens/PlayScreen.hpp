@@ -3,6 +3,8 @@
 #include "input/AimController.hpp"
 #include "input/ShotScript.hpp"
 #include "render/Camera.hpp"
+#include "render/CameraControls.hpp"
+#include "render/CameraRig.hpp"
 #include "render/Hud.hpp"
 #include "render/OverlayRenderer.hpp"
 #include "render/ReloadNotice.hpp"
@@ -61,7 +63,8 @@ public:
     // PlayView
     App& app() override { return m_app; }
     const GameSession& session() const override { return *m_session; }
-    const Camera& camera() const override { return m_camera; }
+    const Camera& camera() const override { return m_rig.camera(); }
+    const CameraRig& cameraRig() const { return m_rig; }
     const PredictedFlight* preview() const override { return m_preview ? &*m_preview : nullptr; }
     std::optional<AimReadout> aim() const override;
     const ShotTrails& trails() const override { return m_trails; }
@@ -104,7 +107,8 @@ private:
     int m_generation = 0;
     bool m_finishHandled = false;
     bool m_frozen = false;
-    Camera m_camera;
+    CameraRig m_rig; ///< fitted at start, follows the shot, returns when the world settles; the player pans and zooms
+    CameraControls m_cameraControls;
     ShotTrails m_trails;
 
     AimController m_aim;

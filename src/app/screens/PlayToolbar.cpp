@@ -38,9 +38,13 @@ void drawRect(sf::RenderTarget& target, sf::FloatRect rect, sf::Color fill)
 const std::vector<PlayToolbar::Button>& PlayToolbar::buttons()
 {
     static const std::vector<Button> list{
-        {"T", "Teaching overlay (T)", sf::Keyboard::T},      {"G", "Range-by-angle chart (G)", sf::Keyboard::G},
-        {"I", "Integrator comparison (I)", sf::Keyboard::I}, {"K", "RK4 walkthrough (K)", sf::Keyboard::K},
-        {"C", "Clear the kept paths (C)", sf::Keyboard::C},  {"?", "Help: every control (F1)", sf::Keyboard::F1},
+        {"\u2302", "Camera back to the level (Home)", sf::Keyboard::Home},
+        {"T", "Teaching overlay (T)", sf::Keyboard::T},
+        {"G", "Range-by-angle chart (G)", sf::Keyboard::G},
+        {"I", "Integrator comparison (I)", sf::Keyboard::I},
+        {"K", "RK4 walkthrough (K)", sf::Keyboard::K},
+        {"C", "Clear the kept paths (C)", sf::Keyboard::C},
+        {"?", "Help: every control (F1)", sf::Keyboard::F1},
         {"", "Pause (Esc or P)", sf::Keyboard::P},
     };
     return list;

@@ -12,8 +12,8 @@ namespace abalike::app
 {
 
 /// The row of buttons at the top right of the play screen: every keyboard-only action of play gets a mouse way
-/// (pause, help, and the teaching keys T, G, I, K, C). A click presses the button's key through the app's input
-/// path, so a button can never do something its key does not. Pointing at a button names its action.
+/// (camera home, the teaching keys T, G, I, K, C, help and pause). A click presses the button's key through the app's
+/// input path, so a button can never do something its key does not. Pointing at a button names its action.
 class PlayToolbar : public PlayLayer
 {
 public:

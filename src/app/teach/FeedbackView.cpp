@@ -1,6 +1,7 @@
 #include "teach/FeedbackView.hpp"
 
 #include "render/Label.hpp"
+#include "render/LabelPlacement.hpp"
 #include "render/Palette.hpp"
 #include "teach/TeachDraw.hpp"
 
@@ -54,8 +55,8 @@ void FeedbackView::update(const GameSession& session, const std::optional<AimRea
     }
 }
 
-void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bottom, float maxWidth, unsigned rowSize,
-                        float scale) const
+void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bottom, float top,
+                        std::span<const sf::FloatRect> avoid, float maxWidth, unsigned rowSize, float scale) const
 {
     if (m_sentences.empty())
         return;
@@ -70,7 +71,10 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
     const float pad = 8.0f * scale;
     const float height = rowHeight * static_cast<float>(lines.size()) + 2.0f * pad;
     const float centre = 0.5f * static_cast<float>(target.getSize().x);
-    const sf::FloatRect rect(centre - 0.5f * width - pad, bottom - height, width + 2.0f * pad, height);
+    sf::FloatRect rect(centre - 0.5f * width - pad, bottom - height, width + 2.0f * pad, height);
+    const sf::FloatRect above(rect.left, top, rect.width, rect.height);
+    if (coveredArea(rect, avoid) > 0.0f && coveredArea(above, avoid) <= 0.0f)
+        rect = above; // the structure reaches down here: the sentences go up into the sky
     drawTeachPanel(target, rect, scale);
     float y = rect.top + pad;
     for (const std::string& line : lines)

@@ -6,6 +6,7 @@
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <abalike/game/GameSession.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,9 +23,10 @@ public:
     void update(const GameSession& session, const std::optional<AimReadout>& aim);
     void reset();
     const std::vector<std::string>& sentences() const { return m_sentences; }
-    /// Draws the sentences centred above `bottom` (window pixels), wrapped to `maxWidth`.
-    void draw(sf::RenderTarget& target, const sf::Font& font, float bottom, float maxWidth, unsigned rowSize,
-              float scale) const;
+    /// Draws the sentences centred above `bottom` (window pixels), wrapped to `maxWidth`; if the panel would cover
+    /// any of the boxes in `avoid` (the structure on screen) and it would not at `top`, it goes there instead.
+    void draw(sf::RenderTarget& target, const sf::Font& font, float bottom, float top,
+              std::span<const sf::FloatRect> avoid, float maxWidth, unsigned rowSize, float scale) const;
 
 private:
     std::size_t m_shotsSeen = 0;

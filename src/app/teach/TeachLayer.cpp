@@ -1,5 +1,6 @@
 #include "teach/TeachLayer.hpp"
 
+#include "render/LabelPlacement.hpp"
 #include "screens/App.hpp"
 #include "screens/PlayToolbar.hpp"
 #include "teach/ForceArrows.hpp"
@@ -188,7 +189,8 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
 
     // Feedback on the last shot, above the level's hint and the app's notices at the bottom.
     if (!m_walkthrough.active())
-        m_feedback.draw(target, *font, window.y - 96.0f * scale, std::min(window.x - 40.0f, 900.0f * scale),
+        m_feedback.draw(target, *font, window.y - 96.0f * scale, 160.0f * scale,
+                        structureScreenBoxes(session, view.camera()), std::min(window.x - 40.0f, 900.0f * scale),
                         m_app.textSize(16.0f), scale);
 
     // The measuring tools last: what the player points at reads over everything.

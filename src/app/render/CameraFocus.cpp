@@ -1,0 +1,81 @@
+#include "render/CameraFocus.hpp"
+
+#include "render/CameraFit.hpp"
+
+#include <algorithm>
+#include <box2d/box2d.h>
+#include <cmath>
+
+namespace abalike::app
+{
+
+namespace
+{
+constexpr float kStructureReachM = 8.0f; ///< targets this far beyond the aimed-at stretch still count
+constexpr float kLookAheadS = 2.0f;      ///< without a predicted contact, the stretch the bird covers in this time
+
+WorldBox entityBox(const Entity& entity)
+{
+    const b2Vec2 p = entity.body->GetPosition();
+    // Half the diagonal bounds the body whatever its angle.
+    const auto half = static_cast<float>(0.5 * std::hypot(entity.widthM, std::max(entity.heightM, entity.widthM)));
+    return WorldBox::around({p.x, p.y}, half);
+}
+} // namespace
+
+CameraFocus cameraFocusOf(const GameSession& session)
+{
+    CameraFocus focus;
+    focus.home = levelHomeBox(session.level(), session.catalog());
+    focus.groundY = static_cast<float>(session.level().groundY);
+    focus.shotUnderWay = session.phase() == Phase::Flying;
+    if (!focus.shotUnderWay)
+        return focus;
+
+    const GameWorld& world = session.world();
+    const Entity* bird = world.bird();
+    if (bird != nullptr && bird->body != nullptr)
+    {
+        focus.birds.push_back(entityBox(*bird));
+        const b2Vec2 v = bird->body->GetLinearVelocity();
+        focus.birdVelocityMps = {v.x, v.y};
+    }
+    for (const Entity& entity : world.entities())
+        if (entity.kind == EntityKind::Bird && entity.alive && entity.body != nullptr && &entity != bird)
+            focus.birds.push_back(entityBox(entity));
+
+    // The stretch of ground the shot is about: from the bird to where it was predicted to hit (or where it is
+    // heading), widened a little; every standing block and pig on it is "the structure".
+    float from = 0.0f;
+    float to = 0.0f;
+    if (!focus.birds.empty())
+    {
+        from = to = focus.birds.front().centre().x;
+        const ShotRecord& shot = session.shots().back();
+        const float aimX = shot.predictedContact && !shot.actualContact ? static_cast<float>(shot.predictedContact->x)
+                                                                        : from + focus.birdVelocityMps.x * kLookAheadS;
+        from = std::min(from, aimX);
+        to = std::max(to, aimX);
+    }
+    else
+    {
+        // The bird has left the world; the shot is about whatever is still falling where it was.
+        from = focus.home.left;
+        to = focus.home.right;
+    }
+    from -= kStructureReachM;
+    to += kStructureReachM;
+    for (const Entity& entity : world.entities())
+    {
+        if (!entity.alive || entity.body == nullptr ||
+            (entity.kind != EntityKind::Block && entity.kind != EntityKind::Pig))
+            continue;
+        const WorldBox box = entityBox(entity);
+        if (box.right < from || box.left > to)
+            continue;
+        focus.structure = focus.structure ? focus.structure->united(box) : box;
+    }
+    return focus;
+}
+
+} // namespace abalike::app

@@ -1,0 +1,29 @@
+#pragma once
+
+#include "render/WorldBox.hpp"
+
+#include <SFML/System/Vector2.hpp>
+#include <abalike/game/GameSession.hpp>
+#include <optional>
+#include <vector>
+
+namespace abalike::app
+{
+
+/// What the camera should keep in view this frame, in world metres. Plain values, so the camera's logic is tested
+/// without a window (tests/app/CameraRigTest.cpp).
+struct CameraFocus
+{
+    WorldBox home;                     ///< the level as designed: the view it starts with and returns to
+    float groundY = 0.0f;              ///< the ground line, kept near the bottom edge
+    bool shotUnderWay = false;         ///< a bird was launched and the world has not settled yet
+    std::vector<WorldBox> birds;       ///< every bird, split bird and egg in the world, launched bird first
+    sf::Vector2f birdVelocityMps;      ///< the launched bird's velocity (the camera leads it)
+    std::optional<WorldBox> structure; ///< the standing blocks and pigs the shot is flying at
+};
+
+/// The focus of a session as it is now: the launched bird, the structure between it and where it was aimed (the
+/// predicted first contact), or, once it has landed, what stands around it.
+CameraFocus cameraFocusOf(const GameSession& session);
+
+} // namespace abalike::app

@@ -1,0 +1,180 @@
+#include "render/CameraRig.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace abalike::app
+{
+
+namespace
+{
+constexpr float kBirdMarginM = 1.5f;      ///< room kept around each bird
+constexpr float kBirdMarginPx = 24.0f;    ///< ... and never less than this on screen
+constexpr float kLeadS = 0.6f;            ///< the camera looks this far ahead of the bird
+constexpr float kStructureMarginM = 1.5f; ///< room around the structure
+constexpr float kManualZoomOut = 4.0f;    ///< the player may zoom out to this many times the home view
+
+float easing(double frameS, double timeS)
+{
+    return static_cast<float>(1.0 - std::exp(-std::max(frameS, 0.0) / timeS));
+}
+} // namespace
+
+void CameraRig::reset(const CameraFocus& focus, sf::Vector2u windowSize)
+{
+    m_window = windowSize;
+    m_home = focus.home;
+    m_groundY = focus.groundY;
+    m_mode = focus.shotUnderWay ? Mode::Follow : Mode::Home;
+    m_shotUnderWay = focus.shotUnderWay;
+    m_view = target(focus);
+    m_snap = false;
+    rebuild();
+}
+
+void CameraRig::resize(sf::Vector2u windowSize)
+{
+    // Keep what was in view in view: the same centre, scaled by the smaller change so nothing is cut off.
+    const float sx = static_cast<float>(std::max(windowSize.x, 1u)) / static_cast<float>(std::max(m_window.x, 1u));
+    const float sy = static_cast<float>(std::max(windowSize.y, 1u)) / static_cast<float>(std::max(m_window.y, 1u));
+    m_view.pixelsPerMetre = std::clamp(m_view.pixelsPerMetre * std::min(sx, sy), camera_limits::kMinPixelsPerMetre,
+                                       camera_limits::kMaxPixelsPerMetre);
+    m_window = windowSize;
+    m_snap = m_mode == Mode::Home;
+    rebuild();
+}
+
+CameraView CameraRig::target(const CameraFocus& focus) const
+{
+    if (m_mode == Mode::Manual)
+        return m_view;
+    if (m_mode == Mode::Home || (focus.birds.empty() && !focus.structure))
+        return fitBox(focus.home, focus.groundY, m_window);
+
+    std::optional<WorldBox> box = focus.structure;
+    if (box)
+        *box = box->expanded(kStructureMarginM);
+    for (std::size_t i = 0; i < focus.birds.size(); ++i)
+    {
+        WorldBox bird = focus.birds[i].expanded(kBirdMarginM);
+        if (i == 0)
+        {
+            // Lead the launched bird a little so it flies into the picture, not out of it.
+            const sf::Vector2f ahead = focus.birds[0].centre() + focus.birdVelocityMps * kLeadS;
+            bird = bird.united(WorldBox::around(ahead, kBirdMarginM));
+        }
+        box = box ? box->united(bird) : bird;
+    }
+    return fitBox(*box, focus.groundY, m_window);
+}
+
+void CameraRig::update(const CameraFocus& focus, double frameS)
+{
+    m_home = focus.home;
+    m_groundY = focus.groundY;
+    if (focus.shotUnderWay && !m_shotUnderWay)
+        m_mode = Mode::Follow; // launch: follow, whatever the player had panned to
+    else if (!focus.shotUnderWay && m_shotUnderWay)
+        m_mode = Mode::Home; // the world settled: back to the level
+    m_shotUnderWay = focus.shotUnderWay;
+
+    const CameraView goal = target(focus);
+    if (m_snap)
+        m_view = goal;
+    else if (m_mode != Mode::Manual)
+    {
+        const float k = easing(frameS, m_mode == Mode::Follow ? kFollowTimeS : kReturnTimeS);
+        m_view.centreM += (goal.centreM - m_view.centreM) * k;
+        // Zoom eases in log space, so zooming in and out feel alike.
+        const float logPpm = std::log(m_view.pixelsPerMetre);
+        m_view.pixelsPerMetre = std::exp(logPpm + (std::log(goal.pixelsPerMetre) - logPpm) * k);
+    }
+    m_snap = false;
+    if (m_mode != Mode::Home)
+        keepInView(focus);
+    rebuild();
+}
+
+void CameraRig::keepInView(const CameraFocus& focus)
+{
+    if (focus.birds.empty())
+        return;
+    const float margin = std::max(0.5f, kBirdMarginPx / m_view.pixelsPerMetre);
+    WorldBox needed = focus.birds.front().expanded(margin);
+    for (const WorldBox& bird : focus.birds)
+        needed = needed.united(bird.expanded(margin));
+    const WorldBox visible = visibleBox(m_view, m_window);
+    if (visible.contains(needed))
+        return;
+    if (m_mode == Mode::Manual)
+    {
+        // The player looks elsewhere on purpose; birds off screen get edge markers instead.
+        return;
+    }
+    if (needed.width() <= visible.width() && needed.height() <= visible.height())
+    {
+        // Slide the least distance that brings every bird in.
+        sf::Vector2f shift;
+        if (needed.left < visible.left)
+            shift.x = needed.left - visible.left;
+        else if (needed.right > visible.right)
+            shift.x = needed.right - visible.right;
+        if (needed.bottom < visible.bottom)
+            shift.y = needed.bottom - visible.bottom;
+        else if (needed.top > visible.top)
+            shift.y = needed.top - visible.top;
+        m_view.centreM += shift;
+        return;
+    }
+    const WorldBox both = visible.united(needed);
+    const sf::Vector2f window(static_cast<float>(std::max(m_window.x, 1u)),
+                              static_cast<float>(std::max(m_window.y, 1u)));
+    m_view.pixelsPerMetre = std::clamp(std::min(window.x / both.width(), window.y / both.height()),
+                                       camera_limits::kMinPixelsPerMetre, camera_limits::kMaxPixelsPerMetre);
+    m_view.centreM = both.centre();
+}
+
+void CameraRig::panPixels(sf::Vector2f deltaPx)
+{
+    m_mode = Mode::Manual;
+    // Screen y points down, world y up.
+    m_view.centreM += sf::Vector2f(-deltaPx.x, deltaPx.y) / m_view.pixelsPerMetre;
+    clampManual();
+    rebuild();
+}
+
+void CameraRig::zoomAt(float factor, sf::Vector2f pixel)
+{
+    m_mode = Mode::Manual;
+    const sf::Vector2f before = m_camera.toWorld(pixel);
+    m_view.pixelsPerMetre *= factor;
+    clampManual();
+    // Keep the world point under the pointer where it was.
+    const Camera zoomed = Camera::centredOn(m_view.centreM, m_view.pixelsPerMetre, m_window);
+    m_view.centreM += before - zoomed.toWorld(pixel);
+    clampManual();
+    rebuild();
+}
+
+void CameraRig::clampManual()
+{
+    const CameraView home = fitBox(m_home, m_groundY, m_window);
+    const float minPpm = std::max(camera_limits::kMinPixelsPerMetre, home.pixelsPerMetre / kManualZoomOut);
+    m_view.pixelsPerMetre = std::clamp(m_view.pixelsPerMetre, minPpm, camera_limits::kMaxPixelsPerMetre);
+    // The middle of the window stays over the level or next to it, so the player cannot get lost in empty sky.
+    const WorldBox allowed = m_home.expanded(0.5f * std::max(m_home.width(), m_home.height()));
+    m_view.centreM.x = std::clamp(m_view.centreM.x, allowed.left, allowed.right);
+    m_view.centreM.y = std::clamp(m_view.centreM.y, m_groundY, allowed.top);
+}
+
+void CameraRig::recentre()
+{
+    m_mode = m_shotUnderWay ? Mode::Follow : Mode::Home;
+}
+
+void CameraRig::rebuild()
+{
+    m_camera = Camera::centredOn(m_view.centreM, m_view.pixelsPerMetre, m_window);
+}
+
+} // namespace abalike::app

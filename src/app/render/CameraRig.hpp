@@ -1,0 +1,67 @@
+#pragma once
+
+#include "render/Camera.hpp"
+#include "render/CameraFit.hpp"
+#include "render/CameraFocus.hpp"
+
+#include <SFML/System/Vector2.hpp>
+
+namespace abalike::app
+{
+
+/// The play screen's camera: starts fitted to the level, follows a shot (zooming out as far as needed to keep every
+/// bird and the structure it flies at in view), returns home when the world settles, and takes the player's pan and
+/// zoom at any time. Smooth, frame-rate independent, and free of SFML windows, so it is tested headless.
+class CameraRig
+{
+public:
+    enum class Mode
+    {
+        Home,   ///< the level's home view (slingshot and every body)
+        Follow, ///< a shot is under way: bird and structure
+        Manual, ///< the player panned or zoomed; kept until the next launch, the world settling, or recentre()
+    };
+
+    /// Snaps to the level's home view in a window of this size.
+    void reset(const CameraFocus& focus, sf::Vector2u windowSize);
+    /// The window changed size: same scale rules, no stretching; the home view is fitted again.
+    void resize(sf::Vector2u windowSize);
+    /// Moves towards what the focus asks for; frameS is the real time since the last frame.
+    void update(const CameraFocus& focus, double frameS);
+
+    /// Drags the world by a pointer movement in pixels (the world follows the pointer).
+    void panPixels(sf::Vector2f deltaPx);
+    /// Zooms by a factor (> 1 closer) keeping the world point under this window pixel where it is.
+    void zoomAt(float factor, sf::Vector2f pixel);
+    /// Back to automatic: home, or following if a shot is under way.
+    void recentre();
+    /// The camera to draw with this frame. (A shake is FxLayer's: it moves the picture, not the camera.)
+    const Camera& camera() const { return m_camera; }
+    /// Where the rig looks.
+    const CameraView& view() const { return m_view; }
+    Mode mode() const { return m_mode; }
+
+    /// Seconds for the view to cover about 63 % of the way to its target.
+    static constexpr double kFollowTimeS = 0.3;
+    static constexpr double kReturnTimeS = 0.45;
+
+private:
+    /// Where the automatic camera wants to be now.
+    CameraView target(const CameraFocus& focus) const;
+    /// The shot's birds inside the view, whatever the smoothing did: move the least, zoom out only if needed.
+    void keepInView(const CameraFocus& focus);
+    /// Manual views stay near the level and within the scale limits.
+    void clampManual();
+    void rebuild();
+
+    CameraView m_view;
+    Camera m_camera = Camera::centredOn({0.0f, 0.0f}, 1.0f, {1, 1});
+    sf::Vector2u m_window{1, 1};
+    WorldBox m_home;
+    float m_groundY = 0.0f;
+    Mode m_mode = Mode::Home;
+    bool m_shotUnderWay = false;
+    bool m_snap = true; ///< jump to the next target instead of easing (new level, resize in home view)
+};
+
+} // namespace abalike::app

@@ -1,0 +1,73 @@
+#include "render/LabelPlacement.hpp"
+
+#include <algorithm>
+#include <box2d/box2d.h>
+#include <cmath>
+#include <limits>
+
+namespace abalike::app
+{
+
+std::vector<sf::FloatRect> structureScreenBoxes(const GameSession& session, const Camera& camera)
+{
+    std::vector<sf::FloatRect> boxes;
+    for (const Entity& entity : session.world().entities())
+    {
+        if (!entity.alive || entity.body == nullptr ||
+            (entity.kind != EntityKind::Block && entity.kind != EntityKind::Pig))
+            continue;
+        const b2Vec2 p = entity.body->GetPosition();
+        // Half the diagonal bounds the body whatever its angle.
+        const auto half = static_cast<float>(0.5 * std::hypot(entity.widthM, std::max(entity.heightM, entity.widthM)));
+        const sf::Vector2f topLeft = camera.toScreen({p.x - half, p.y + half});
+        const sf::Vector2f bottomRight = camera.toScreen({p.x + half, p.y - half});
+        boxes.emplace_back(topLeft, bottomRight - topLeft);
+    }
+    return boxes;
+}
+
+float coveredArea(const sf::FloatRect& rect, std::span<const sf::FloatRect> boxes)
+{
+    float area = 0.0f;
+    sf::FloatRect overlap;
+    for (const sf::FloatRect& box : boxes)
+        if (rect.intersects(box, overlap))
+            area += overlap.width * overlap.height;
+    return area;
+}
+
+sf::Vector2f placeLabel(sf::Vector2f anchor, sf::Vector2f size, sf::Vector2f window,
+                        std::span<const sf::FloatRect> avoid, float gap)
+{
+    const std::vector<sf::Vector2f> spots{
+        {anchor.x + gap, anchor.y - gap - size.y},                  // above right
+        {anchor.x - gap - size.x, anchor.y - gap - size.y},         // above left
+        {anchor.x + gap, anchor.y - 0.5f * size.y},                 // right
+        {anchor.x - gap - size.x, anchor.y - 0.5f * size.y},        // left
+        {anchor.x - 0.5f * size.x, anchor.y - 3.0f * gap - size.y}, // higher up
+        {anchor.x + gap, anchor.y - 4.0f * gap - size.y},           // higher, right
+        {anchor.x - gap - size.x, anchor.y - 4.0f * gap - size.y},  // higher, left
+        {anchor.x - 0.5f * size.x, anchor.y - 8.0f * gap - size.y}, // well above
+        {anchor.x + gap, anchor.y + gap},                           // below right
+        {anchor.x - gap - size.x, anchor.y + gap},                  // below left
+    };
+    sf::Vector2f best = spots.front();
+    float bestCover = std::numeric_limits<float>::max();
+    for (sf::Vector2f spot : spots)
+    {
+        // Inside the window, a few pixels from its edges.
+        spot.x = std::clamp(spot.x, 4.0f, std::max(4.0f, window.x - size.x - 4.0f));
+        spot.y = std::clamp(spot.y, 4.0f, std::max(4.0f, window.y - size.y - 4.0f));
+        const float cover = coveredArea({spot, size}, avoid);
+        if (cover <= 0.0f)
+            return spot;
+        if (cover < bestCover)
+        {
+            bestCover = cover;
+            best = spot;
+        }
+    }
+    return best;
+}
+
+} // namespace abalike::app

@@ -1,0 +1,26 @@
+#pragma once
+
+#include "render/Camera.hpp"
+
+#include <SFML/Graphics/Rect.hpp>
+#include <SFML/System/Vector2.hpp>
+#include <abalike/game/GameSession.hpp>
+#include <span>
+#include <vector>
+
+namespace abalike::app
+{
+
+/// Where each standing block and pig is on screen (window pixels): what labels should not cover.
+std::vector<sf::FloatRect> structureScreenBoxes(const GameSession& session, const Camera& camera);
+
+/// How much of a rectangle the boxes cover (pixels², overlaps counted once per box).
+float coveredArea(const sf::FloatRect& rect, std::span<const sf::FloatRect> boxes);
+
+/// The top-left corner for a label of this size next to an anchor point: the first of the spots around the anchor
+/// (above right, above left, right, left, higher up, below) that lies inside the window and covers none of the
+/// boxes; if every spot covers some, the one covering least. gap is the distance kept from the anchor.
+sf::Vector2f placeLabel(sf::Vector2f anchor, sf::Vector2f size, sf::Vector2f window,
+                        std::span<const sf::FloatRect> avoid, float gap);
+
+} // namespace abalike::app

@@ -1,0 +1,253 @@
+// The play screen's camera, headless: fitting every campaign level in windows of every shape, following every
+// campaign level's reference shot with the bird always in view, returning when the world settles, and the
+// player's pan and zoom.
+#include "render/CameraRig.hpp"
+#include "render/CameraControls.hpp"
+#include "render/CameraFocus.hpp"
+#include "render/LabelPlacement.hpp"
+
+#include <abalike/game/GameSession.hpp>
+#include <abalike/level/Campaign.hpp>
+#include <abalike/world/Catalog.hpp>
+#include <box2d/box2d.h>
+#include <cmath>
+#include <gtest/gtest.h>
+
+using namespace abalike;
+using namespace abalike::app;
+
+namespace
+{
+const Campaign& campaign()
+{
+    static const Campaign loaded =
+        loadCampaignLevels(std::string(ABALIKE_SOURCE_DIR) + "/levels/campaign.json", Catalog::builtin());
+    return loaded;
+}
+
+const std::vector<sf::Vector2u>& windowShapes()
+{
+    static const std::vector<sf::Vector2u> shapes{{1280, 720}, {800, 600}, {1920, 1080}, {600, 1000}};
+    return shapes;
+}
+
+bool inside(const sf::FloatRect& visible, sf::Vector2f point, float marginM = 0.0f)
+{
+    return point.x >= visible.left + marginM && point.x <= visible.left + visible.width - marginM &&
+           point.y >= visible.top + marginM && point.y <= visible.top + visible.height - marginM;
+}
+
+sf::Vector2f positionOf(const Entity& entity)
+{
+    const b2Vec2 p = entity.body->GetPosition();
+    return {p.x, p.y};
+}
+} // namespace
+
+TEST(CameraFit, EveryCampaignLevelStartsWithTheSlingshotAndEveryBodyInViewInEveryWindowShape)
+{
+    ASSERT_EQ(campaign().levels.size(), 25u);
+    for (const CampaignLevel& entry : campaign().levels)
+        for (const sf::Vector2u window : windowShapes())
+        {
+            SCOPED_TRACE(entry.level.id + " in " + std::to_string(window.x) + "x" + std::to_string(window.y));
+            GameSession session(entry.level);
+            CameraRig rig;
+            rig.reset(cameraFocusOf(session), window);
+            const sf::FloatRect visible = rig.camera().visibleWorld();
+            // One scale for both axes: the window's shape is the visible world's shape (no stretching).
+            EXPECT_NEAR(visible.width / visible.height, static_cast<float>(window.x) / static_cast<float>(window.y),
+                        1e-3f);
+            const auto launch = session.launchPoint();
+            EXPECT_TRUE(inside(visible, {static_cast<float>(launch[0]), static_cast<float>(launch[1])}, 1.0f));
+            for (const Entity& entity : session.world().entities())
+            {
+                if (entity.body != nullptr && (entity.kind == EntityKind::Block || entity.kind == EntityKind::Pig))
+                {
+                    EXPECT_TRUE(inside(visible, positionOf(entity)))
+                        << entity.typeName << " at " << positionOf(entity).x;
+                }
+            }
+        }
+}
+
+TEST(CameraFollow, TheBirdStaysInViewForEveryReferenceShotOfEveryCampaignLevelAndTheViewReturns)
+{
+    int shots = 0;
+    int outsideHomeView = 0; // steps where a camera left at the level's home view would have lost the bird
+    for (const CampaignLevel& entry : campaign().levels)
+    {
+        if (!entry.level.referenceShot)
+            continue;
+        SCOPED_TRACE(entry.level.id);
+        ++shots;
+        GameSession session(entry.level);
+        CameraRig rig;
+        const sf::Vector2u window(1280, 720);
+        rig.reset(cameraFocusOf(session), window);
+        const CameraView home = rig.view();
+        session.launch(entry.level.referenceShot->angleDeg, entry.level.referenceShot->speedMps);
+        int steps = 0;
+        int outside = 0;
+        float widest = 0.0f;
+        while (session.phase() == Phase::Flying && steps < 60 * 120)
+        {
+            session.step();
+            rig.update(cameraFocusOf(session), 1.0 / 60.0);
+            ++steps;
+            const Entity* bird = session.world().bird();
+            if (bird == nullptr || bird->body == nullptr || !bird->alive)
+                continue;
+            const sf::FloatRect visible = rig.camera().visibleWorld();
+            widest = std::max(widest, visible.width);
+            if (!inside(visible, positionOf(*bird)))
+                ++outside;
+            const WorldBox homeBox = visibleBox(home, window);
+            if (!homeBox.contains(positionOf(*bird)))
+                ++outsideHomeView;
+        }
+        EXPECT_EQ(outside, 0) << "steps with the launched bird out of view, of " << steps;
+        EXPECT_NE(session.phase(), Phase::Flying) << "the world settles within two minutes";
+        // Settled: within three seconds the camera is back at the level's home view.
+        for (int i = 0; i < 180; ++i)
+            rig.update(cameraFocusOf(session), 1.0 / 60.0);
+        EXPECT_EQ(rig.mode(), CameraRig::Mode::Home);
+        EXPECT_NEAR(rig.view().pixelsPerMetre / home.pixelsPerMetre, 1.0f, 0.01f);
+        EXPECT_NEAR(rig.view().centreM.x, home.centreM.x, 0.05f * visibleBox(home, window).width());
+        EXPECT_GT(widest, 0.0f);
+    }
+    EXPECT_EQ(shots, 25) << "every campaign level has a reference shot";
+    // Following is really tested: a fixed camera would lose the bird on some of these shots.
+    EXPECT_GT(outsideHomeView, 0);
+}
+
+TEST(CameraControl, ZoomKeepsThePointUnderThePointerAndPanMovesTheWorldWithTheDrag)
+{
+    GameSession session(campaign().levels.front().level);
+    CameraRig rig;
+    rig.reset(cameraFocusOf(session), {1280, 720});
+    const sf::Vector2f pointer(900.0f, 300.0f);
+    const sf::Vector2f before = rig.camera().toWorld(pointer);
+    const float ppm = rig.view().pixelsPerMetre;
+    rig.zoomAt(1.5f, pointer);
+    EXPECT_NEAR(rig.view().pixelsPerMetre, 1.5f * ppm, 1e-3f);
+    EXPECT_NEAR(rig.camera().toWorld(pointer).x, before.x, 1e-3f);
+    EXPECT_NEAR(rig.camera().toWorld(pointer).y, before.y, 1e-3f);
+    EXPECT_EQ(rig.mode(), CameraRig::Mode::Manual);
+
+    // Dragging by (40, 25) px: the world point that was under the pointer is under the pointer's new place.
+    const sf::Vector2f grabbed = rig.camera().toWorld(pointer);
+    rig.panPixels({40.0f, 25.0f});
+    EXPECT_NEAR(rig.camera().toWorld(pointer + sf::Vector2f(40.0f, 25.0f)).x, grabbed.x, 1e-3f);
+    EXPECT_NEAR(rig.camera().toWorld(pointer + sf::Vector2f(40.0f, 25.0f)).y, grabbed.y, 1e-3f);
+
+    // A manual view stays until recentred, then eases home.
+    for (int i = 0; i < 30; ++i)
+        rig.update(cameraFocusOf(session), 1.0 / 60.0);
+    EXPECT_EQ(rig.mode(), CameraRig::Mode::Manual);
+    rig.recentre();
+    for (int i = 0; i < 240; ++i)
+        rig.update(cameraFocusOf(session), 1.0 / 60.0);
+    EXPECT_NEAR(rig.view().pixelsPerMetre, ppm, 0.01f * ppm);
+
+    // The player cannot zoom into a close-up or lose the level in the sky.
+    for (int i = 0; i < 50; ++i)
+        rig.zoomAt(2.0f, pointer);
+    EXPECT_LE(rig.view().pixelsPerMetre, camera_limits::kMaxPixelsPerMetre);
+    for (int i = 0; i < 50; ++i)
+        rig.zoomAt(0.5f, pointer);
+    EXPECT_GE(rig.view().pixelsPerMetre, ppm / 4.0f - 1e-3f);
+}
+
+TEST(CameraControl, EventsMapToZoomPanAndHome)
+{
+    GameSession session(campaign().levels.front().level);
+    CameraRig rig;
+    rig.reset(cameraFocusOf(session), {1280, 720});
+    const float ppm = rig.view().pixelsPerMetre;
+    CameraControls controls;
+
+    sf::Event wheel{};
+    wheel.type = sf::Event::MouseWheelScrolled;
+    wheel.mouseWheelScroll.delta = 1.0f;
+    wheel.mouseWheelScroll.x = 640;
+    wheel.mouseWheelScroll.y = 360;
+    EXPECT_TRUE(controls.handleEvent(wheel, rig, true));
+    EXPECT_NEAR(rig.view().pixelsPerMetre, ppm * CameraControls::kWheelZoom, 1e-3f);
+
+    sf::Event key{};
+    key.type = sf::Event::KeyPressed;
+    key.key.code = sf::Keyboard::Subtract;
+    EXPECT_TRUE(controls.handleEvent(key, rig, true));
+    EXPECT_NEAR(rig.view().pixelsPerMetre, ppm * CameraControls::kWheelZoom / CameraControls::kKeyZoom, 1e-3f);
+    const float x = rig.view().centreM.x;
+    key.key.code = sf::Keyboard::D;
+    EXPECT_TRUE(controls.handleEvent(key, rig, true));
+    EXPECT_NEAR(rig.view().centreM.x - x, CameraControls::kKeyPanPx / rig.view().pixelsPerMetre, 1e-3f);
+    key.key.code = sf::Keyboard::Up; // aiming's, not the camera's
+    EXPECT_FALSE(controls.handleEvent(key, rig, true));
+    key.key.code = sf::Keyboard::Home;
+    EXPECT_TRUE(controls.handleEvent(key, rig, true));
+    EXPECT_EQ(rig.mode(), CameraRig::Mode::Home);
+
+    // A left press that would aim or fire an ability is not the camera's; a free one pans once it moves.
+    sf::Event press{};
+    press.type = sf::Event::MouseButtonPressed;
+    press.mouseButton.button = sf::Mouse::Left;
+    press.mouseButton.x = 700;
+    press.mouseButton.y = 200;
+    EXPECT_FALSE(controls.handleEvent(press, rig, false));
+    EXPECT_FALSE(controls.panning());
+    EXPECT_TRUE(controls.handleEvent(press, rig, true));
+    sf::Event move{};
+    move.type = sf::Event::MouseMoved;
+    move.mouseMove.x = 701; // under the drag threshold: a click, not a pan
+    move.mouseMove.y = 200;
+    controls.handleEvent(move, rig, true);
+    EXPECT_EQ(rig.mode(), CameraRig::Mode::Home);
+    move.mouseMove.x = 760;
+    controls.handleEvent(move, rig, true);
+    EXPECT_EQ(rig.mode(), CameraRig::Mode::Manual);
+}
+
+TEST(CameraFit, AResizeKeepsTheLevelInViewWithoutStretching)
+{
+    for (const CampaignLevel& entry : campaign().levels)
+    {
+        GameSession session(entry.level);
+        CameraRig rig;
+        rig.reset(cameraFocusOf(session), {1280, 720});
+        for (const sf::Vector2u window : windowShapes())
+        {
+            rig.resize(window);
+            rig.update(cameraFocusOf(session), 1.0 / 60.0);
+            const sf::FloatRect visible = rig.camera().visibleWorld();
+            EXPECT_NEAR(visible.width / visible.height, static_cast<float>(window.x) / static_cast<float>(window.y),
+                        1e-3f);
+            const WorldBox home = cameraFocusOf(session).home;
+            EXPECT_TRUE(inside(visible, {home.left + 0.5f, home.bottom + 0.1f}))
+                << entry.level.id << " " << window.x << "x" << window.y;
+            EXPECT_TRUE(inside(visible, {home.right - 0.5f, home.top - 0.5f}))
+                << entry.level.id << " " << window.x << "x" << window.y;
+        }
+    }
+}
+
+TEST(LabelPlacement, ALabelGoesNextToItsAnchorOffTheStructureWhenThereIsRoom)
+{
+    const sf::Vector2f window(1280.0f, 720.0f);
+    const sf::Vector2f size(220.0f, 30.0f);
+    // A tower right of the anchor, reaching high above it: above-right is taken, above-left is free.
+    const std::vector<sf::FloatRect> tower{{600.0f, 200.0f, 200.0f, 400.0f}};
+    const sf::Vector2f anchor(610.0f, 500.0f);
+    const sf::Vector2f at = placeLabel(anchor, size, window, tower, 18.0f);
+    EXPECT_EQ(coveredArea({at, size}, tower), 0.0f);
+    EXPECT_LT(std::hypot(at.x + 0.5f * size.x - anchor.x, at.y + 0.5f * size.y - anchor.y), 200.0f) << "near";
+    EXPECT_GE(at.x, 4.0f);
+
+    // Walled in on every side within reach: the spot covering least, still inside the window.
+    const std::vector<sf::FloatRect> everywhere{{0.0f, 0.0f, 1280.0f, 720.0f}};
+    const sf::Vector2f forced = placeLabel({1270.0f, 10.0f}, size, window, everywhere, 18.0f);
+    EXPECT_LE(forced.x + size.x, window.x - 4.0f + 1e-3f);
+    EXPECT_GE(forced.y, 4.0f);
+}
