@@ -109,6 +109,53 @@ TEST_F(ScreenFlow, TheToolbarAndTheRightButtonGiveTheMouseEveryMenuKey)
     EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"play"}));
 }
 
+TEST_F(ScreenFlow, SettingsFromTheTitleApplyAtOnceAndAScriptedRunNeverWritesThem)
+{
+    // Title: Settings is the sixth entry. In settings: down to Text size, Right; Colours, Enter; High contrast,
+    // Right; then Escape back to the title.
+    const GameRun run = play("--frames 26" + script(R"([
+        {"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"}, {"frame": 4, "key": "Down"},
+        {"frame": 5, "key": "Down"}, {"frame": 6, "key": "Down"}, {"frame": 7, "key": "Enter"},
+        {"frame": 9, "key": "Down"}, {"frame": 10, "key": "Down"}, {"frame": 11, "key": "Down"},
+        {"frame": 12, "key": "Down"}, {"frame": 13, "key": "Down"}, {"frame": 14, "key": "Right"},
+        {"frame": 15, "key": "Down"}, {"frame": 16, "key": "Enter"}, {"frame": 17, "key": "Down"},
+        {"frame": 18, "key": "Right"}, {"frame": 20, "key": "Escape"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.values("push", "screen"), (std::vector<std::string>{"title", "settings"}));
+    EXPECT_EQ(run.values("pop", "screen"), (std::vector<std::string>{"settings"}));
+    EXPECT_EQ(run.values("settings", "text_scale"), (std::vector<std::string>{"1.25", "1.25", "1.25"}));
+    EXPECT_EQ(run.values("settings", "palette"),
+              (std::vector<std::string>{"standard", "colour_blind_safe", "colour_blind_safe"}));
+    EXPECT_EQ(run.values("settings", "high_contrast"), (std::vector<std::string>{"false", "false", "true"}));
+    EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"title"}));
+    EXPECT_FALSE(std::filesystem::exists(data() / "settings.json")) << "a scripted run never writes the settings";
+}
+
+TEST_F(ScreenFlow, TheSizeOnTheCommandLineWinsOverTheSavedSize)
+{
+    std::ofstream(data() / "settings.json") << R"({"format": 1, "window": [960, 540]})";
+    const auto pngSize = [](const std::string& path)
+    {
+        // The PNG header: the IHDR chunk's width and height, big-endian, at bytes 16 and 20.
+        std::ifstream png(path, std::ios::binary);
+        unsigned char bytes[24] = {};
+        png.read(reinterpret_cast<char*>(bytes), sizeof bytes);
+        const auto be = [&bytes](int at)
+        {
+            return (bytes[at] << 24) | (bytes[at + 1] << 16) | (bytes[at + 2] << 8) | bytes[at + 3];
+        };
+        return std::vector<int>{be(16), be(20)};
+    };
+    const std::string saved = m_dir.file("saved.png");
+    const GameRun savedRun = runGame("play --frames 2 --screenshot '" + saved + "'", data());
+    ASSERT_EQ(savedRun.exitCode, 0) << savedRun.err;
+    EXPECT_EQ(pngSize(saved), (std::vector<int>{960, 540}));
+    const std::string given = m_dir.file("given.png");
+    const GameRun givenRun = runGame("play --frames 2 --size 800x600 --screenshot '" + given + "'", data());
+    ASSERT_EQ(givenRun.exitCode, 0) << givenRun.err;
+    EXPECT_EQ(pngSize(given), (std::vector<int>{800, 600}));
+}
+
 TEST_F(ScreenFlow, ALevelOnTheCommandLineGoesStraightToIt)
 {
     const std::string level = sourceFile("levels/2-1-dominoes.json");

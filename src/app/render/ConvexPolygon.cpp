@@ -28,33 +28,39 @@ sf::Vector2f leftNormal(sf::Vector2f edge)
 
 std::vector<sf::Vector2f> inset(std::span<const sf::Vector2f> polygon, float distance)
 {
+    // The polygon cut by every edge moved inwards by `distance` (Sutherland-Hodgman with half-planes). Unlike
+    // moving each vertex along its bisector, this stays right when edges are shorter than the distance (a block's
+    // chamfered corners): those edges simply vanish.
     const std::size_t n = polygon.size();
-    if (n < 3)
+    if (n < 3 || signedArea(polygon) <= 0.0f)
         return {};
-    std::vector<sf::Vector2f> result;
-    result.reserve(n);
-    for (std::size_t i = 0; i < n; ++i)
+    std::vector<sf::Vector2f> result(polygon.begin(), polygon.end());
+    for (std::size_t i = 0; i < n && result.size() >= 3; ++i)
     {
-        // Vertex i is where the shifted edges (i-1 -> i) and (i -> i+1) meet.
-        const sf::Vector2f prev = polygon[(i + n - 1) % n];
-        const sf::Vector2f here = polygon[i];
-        const sf::Vector2f next = polygon[(i + 1) % n];
-        const sf::Vector2f e1 = here - prev;
-        const sf::Vector2f e2 = next - here;
-        const sf::Vector2f a1 = prev + leftNormal(e1) * distance;
-        const sf::Vector2f a2 = here + leftNormal(e2) * distance;
-        const float denominator = cross(e1, e2);
-        if (std::abs(denominator) < 1e-9f)
-        {
-            result.push_back(a2);
+        const sf::Vector2f edge = polygon[(i + 1) % n] - polygon[i];
+        const sf::Vector2f inward = leftNormal(edge);
+        if (inward == sf::Vector2f())
             continue;
+        const auto inside = [&](sf::Vector2f p)
+        {
+            return dot(p - polygon[i], inward) - distance;
+        };
+        std::vector<sf::Vector2f> kept;
+        kept.reserve(result.size() + 1);
+        for (std::size_t k = 0; k < result.size(); ++k)
+        {
+            const sf::Vector2f p = result[k];
+            const sf::Vector2f q = result[(k + 1) % result.size()];
+            const float dp = inside(p);
+            const float dq = inside(q);
+            if (dp >= 0.0f)
+                kept.push_back(p);
+            if ((dp >= 0.0f) != (dq >= 0.0f))
+                kept.push_back(p + (q - p) * (dp / (dp - dq)));
         }
-        const float s = cross(a2 - a1, e2) / denominator;
-        result.push_back(a1 + e1 * s);
+        result = std::move(kept);
     }
-    const float before = signedArea(polygon);
-    const float after = signedArea(result);
-    if (after <= 0.0f || after >= before)
+    if (result.size() < 3 || signedArea(result) <= 0.0f)
         return {};
     return result;
 }

@@ -33,27 +33,62 @@ float hudScale(sf::Vector2u size)
 }
 
 void Hud::draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session,
-               const std::optional<AimReadout>& aim) const
+               const std::optional<AimReadout>& aim, float textScale, float reservedRightPx) const
 {
     if (m_font == nullptr)
         return;
-    const float scale = hudScale(size);
-    const float statusBottom = drawStatus(target, scale, session);
-    drawEnvironment(target, statusBottom + 6.0f * scale, scale, session.level());
+    const float scale = hudScale(size) * textScale;
+    const sf::FloatRect status = drawStatus(target, size, scale, session);
+    const float environmentBottom =
+        drawEnvironment(target, status.top + status.height + 6.0f * scale, scale, session.level());
+    const float left = status.left + status.width + 8.0f * scale;
+    const float right = static_cast<float>(size.x) - reservedRightPx - 8.0f * scale;
     if (aim)
-        drawAim(target, size, scale, *aim);
+        drawAim(target, size, scale, *aim, left, right, environmentBottom + 6.0f * scale);
     else if (session.canActivateAbility())
-        drawAbilityPrompt(target, size, scale, session);
+        drawAbilityPrompt(target, size, scale, session, left, right, environmentBottom + 6.0f * scale);
     if (!session.finished())
         drawHint(target, size, scale, session.level());
 }
 
-float Hud::drawStatus(sf::RenderTarget& target, float scale, const GameSession& session) const
+namespace
+{
+/// A top panel's left edge: centred in the window if it fits between left and right, else as far left as allowed;
+/// nullopt when it does not fit there at all.
+std::optional<float> topSlot(float width, sf::Vector2u size, float left, float right)
+{
+    if (right - left < width)
+        return std::nullopt;
+    return std::clamp(0.5f * (static_cast<float>(size.x) - width), left, right - width);
+}
+
+/// The text shortened with an ellipsis to fit maxWidth.
+sf::String fitted(const sf::Font& font, const std::string& text, unsigned size, float maxWidth)
+{
+    if (measureText(font, utf8(text), size).x <= maxWidth)
+        return utf8(text);
+    std::string cut = text;
+    while (!cut.empty() && measureText(font, utf8(cut + "\u2026"), size).x > maxWidth)
+    {
+        cut.pop_back();
+        while (!cut.empty() && (static_cast<unsigned char>(cut.back()) & 0xC0) == 0x80)
+            cut.pop_back(); // never split a UTF-8 sequence
+        if (!cut.empty() && static_cast<unsigned char>(cut.back()) >= 0xC0)
+            cut.pop_back();
+    }
+    return utf8(cut + "\u2026");
+}
+} // namespace
+
+sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float scale,
+                              const GameSession& session) const
 {
     const LevelDef& level = session.level();
     const unsigned titleSize = scaled(scale, 24.0f);
     const unsigned lineSize = scaled(scale, 19.0f);
-    const sf::String title = utf8("Level " + level.id + ": " + level.title);
+    // A long title is cut short rather than run under the aim readout.
+    const sf::String title =
+        fitted(*m_font, "Level " + level.id + ": " + level.title, titleSize, 0.4f * static_cast<float>(size.x));
     const sf::String score = utf8("Score  " + formatPoints(session.score().total()));
     const sf::String counts = utf8("Birds left  " + std::to_string(session.birdsRemaining()) + "     Pigs left  " +
                                    std::to_string(session.pigsRemaining()));
@@ -71,7 +106,8 @@ float Hud::drawStatus(sf::RenderTarget& target, float scale, const GameSession& 
                                   measureText(*m_font, counts, lineSize).x, measureText(*m_font, time, lineSize).x});
     const float lines = time.isEmpty() ? 2.0f : 3.0f;
     const float height = titleHeight + lines * lineHeight + 2.0f * pad;
-    panel(target, {margin, margin, width + 2.0f * pad, height});
+    const sf::FloatRect rect(margin, margin, width + 2.0f * pad, height);
+    panel(target, rect);
 
     sf::Vector2f at(margin + pad, margin + pad);
     drawLabel(target, *m_font, title, at, titleSize, palette::kText);
@@ -84,10 +120,10 @@ float Hud::drawStatus(sf::RenderTarget& target, float scale, const GameSession& 
         at.y += lineHeight;
         drawLabel(target, *m_font, time, at, lineSize, palette::kTextDim);
     }
-    return margin + height;
+    return rect;
 }
 
-void Hud::drawEnvironment(sf::RenderTarget& target, float top, float scale, const LevelDef& level) const
+float Hud::drawEnvironment(sf::RenderTarget& target, float top, float scale, const LevelDef& level) const
 {
     const EnvironmentDef& air = level.environment;
     std::string text = "g " + formatFixed(air.gravity, 2) + " m/s\u00B2   ";
@@ -107,11 +143,14 @@ void Hud::drawEnvironment(sf::RenderTarget& target, float top, float scale, cons
     const float margin = 12.0f * scale;
     const float pad = 7.0f * scale;
     const float width = measureText(*m_font, label, textSize).x;
-    panel(target, {margin, top, width + 2.0f * pad, m_font->getLineSpacing(textSize) + 2.0f * pad});
+    const float height = m_font->getLineSpacing(textSize) + 2.0f * pad;
+    panel(target, {margin, top, width + 2.0f * pad, height});
     drawLabel(target, *m_font, label, {margin + pad, top + pad}, textSize, palette::kTextDim);
+    return top + height;
 }
 
-void Hud::drawAim(sf::RenderTarget& target, sf::Vector2u size, float scale, const AimReadout& aim) const
+void Hud::drawAim(sf::RenderTarget& target, sf::Vector2u size, float scale, const AimReadout& aim, float left,
+                  float right, float below) const
 {
     const unsigned mainSize = scaled(scale, 21.0f);
     const unsigned lessonSize = scaled(scale, 16.0f);
@@ -123,14 +162,17 @@ void Hud::drawAim(sf::RenderTarget& target, sf::Vector2u size, float scale, cons
     const float mainHeight = m_font->getLineSpacing(mainSize);
     const float width =
         std::max(measureText(*m_font, main, mainSize).x, measureText(*m_font, lesson, lessonSize).x) + 2.0f * pad;
-    const float centre = 0.5f * static_cast<float>(size.x);
-    const float top = 12.0f * scale;
-    panel(target, {centre - 0.5f * width, top, width, mainHeight + m_font->getLineSpacing(lessonSize) + 2.0f * pad});
+    const std::optional<float> slot = topSlot(width, size, left, right);
+    const float x = slot ? *slot : 12.0f * scale;
+    const float top = slot ? 12.0f * scale : below;
+    const float centre = x + 0.5f * width;
+    panel(target, {x, top, width, mainHeight + m_font->getLineSpacing(lessonSize) + 2.0f * pad});
     drawLabel(target, *m_font, main, {centre, top + pad}, mainSize, palette::kText, Align::Centre);
     drawLabel(target, *m_font, lesson, {centre, top + pad + mainHeight}, lessonSize, palette::kTextDim, Align::Centre);
 }
 
-void Hud::drawAbilityPrompt(sf::RenderTarget& target, sf::Vector2u size, float scale, const GameSession& session) const
+void Hud::drawAbilityPrompt(sf::RenderTarget& target, sf::Vector2u size, float scale, const GameSession& session,
+                            float left, float right, float below) const
 {
     const BirdType* bird = session.shots().empty() ? nullptr : session.catalog().findBird(session.shots().back().bird);
     const std::string ability = bird != nullptr ? bird->ability : "ability";
@@ -138,9 +180,11 @@ void Hud::drawAbilityPrompt(sf::RenderTarget& target, sf::Vector2u size, float s
     const sf::String text = utf8("Click or Space: " + ability + "!");
     const float pad = 10.0f * scale;
     const float width = measureText(*m_font, text, textSize).x + 2.0f * pad;
-    const float centre = 0.5f * static_cast<float>(size.x);
-    const float top = 12.0f * scale;
-    panel(target, {centre - 0.5f * width, top, width, m_font->getLineSpacing(textSize) + 2.0f * pad});
+    const std::optional<float> slot = topSlot(width, size, left, right);
+    const float x = slot ? *slot : 12.0f * scale;
+    const float top = slot ? 12.0f * scale : below;
+    const float centre = x + 0.5f * width;
+    panel(target, {x, top, width, m_font->getLineSpacing(textSize) + 2.0f * pad});
     drawLabel(target, *m_font, text, {centre, top + pad}, textSize, palette::kStar, Align::Centre);
 }
 
@@ -149,16 +193,26 @@ void Hud::drawHint(sf::RenderTarget& target, sf::Vector2u size, float scale, con
     const unsigned hintSize = scaled(scale, 18.0f);
     const unsigned keysSize = scaled(scale, 14.0f);
     const float centre = 0.5f * static_cast<float>(size.x);
-    const float keysHeight = m_font->getLineSpacing(keysSize);
-    const float bottom = static_cast<float>(size.y) - 8.0f * scale;
-    drawLabel(target, *m_font,
-              utf8("Mouse: drag the bird back   \u00B7   Keys: \u2191\u2193 angle, \u2190\u2192 power, Space launch   "
-                   "\u00B7   R restart   \u00B7   Esc pause   \u00B7   F1 help"),
-              {centre, bottom - keysHeight}, keysSize, palette::kTextDim, Align::Centre);
+    const float maxWidth = static_cast<float>(size.x) - 24.0f * scale;
+    float bottom = static_cast<float>(size.y) - 8.0f * scale;
+    // Bottom up: the keys, then the level's hint, each wrapped to the window at large text sizes.
+    const auto block = [&](const std::string& text, unsigned textSize, sf::Color colour)
+    {
+        const std::vector<std::string> lines = wrapText(*m_font, text, textSize, maxWidth);
+        const float lineHeight = m_font->getLineSpacing(textSize);
+        bottom -= lineHeight * static_cast<float>(lines.size());
+        float y = bottom;
+        for (const std::string& line : lines)
+        {
+            drawLabel(target, *m_font, utf8(line), {centre, y}, textSize, colour, Align::Centre);
+            y += lineHeight;
+        }
+    };
+    block("Mouse: drag the bird back   \u00B7   Keys: \u2191\u2193 angle, \u2190\u2192 power, Space launch   \u00B7   "
+          "R restart   \u00B7   Esc pause   \u00B7   F1 help",
+          keysSize, palette::kTextDim);
     if (!level.hints.empty())
-        drawLabel(target, *m_font, utf8(level.hints.front()),
-                  {centre, bottom - keysHeight - m_font->getLineSpacing(hintSize)}, hintSize, palette::kText,
-                  Align::Centre);
+        block(level.hints.front(), hintSize, palette::kText);
 }
 
 } // namespace abalike::app

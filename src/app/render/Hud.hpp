@@ -26,15 +26,22 @@ class Hud
 public:
     explicit Hud(const sf::Font* font) : m_font(font) {}
 
+    /// textScale: the player's text size (1 to 2). reservedRightPx: the top right corner's width taken by the
+    /// toolbar; the aim readout stays clear of it and of the status panel, moving under them when the top is full.
     void draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session,
-              const std::optional<AimReadout>& aim) const;
+              const std::optional<AimReadout>& aim, float textScale = 1.0f, float reservedRightPx = 0.0f) const;
 
 private:
+    /// Returns the panel it drew.
+    sf::FloatRect drawStatus(sf::RenderTarget& target, sf::Vector2u size, float scale,
+                             const GameSession& session) const;
     /// Returns the bottom edge of the panel it drew.
-    float drawStatus(sf::RenderTarget& target, float scale, const GameSession& session) const;
-    void drawEnvironment(sf::RenderTarget& target, float top, float scale, const LevelDef& level) const;
-    void drawAim(sf::RenderTarget& target, sf::Vector2u size, float scale, const AimReadout& aim) const;
-    void drawAbilityPrompt(sf::RenderTarget& target, sf::Vector2u size, float scale, const GameSession& session) const;
+    float drawEnvironment(sf::RenderTarget& target, float top, float scale, const LevelDef& level) const;
+    /// Centred at the top between `left` and `right` if it fits there, else at the left from `below`.
+    void drawAim(sf::RenderTarget& target, sf::Vector2u size, float scale, const AimReadout& aim, float left,
+                 float right, float below) const;
+    void drawAbilityPrompt(sf::RenderTarget& target, sf::Vector2u size, float scale, const GameSession& session,
+                           float left, float right, float below) const;
     void drawHint(sf::RenderTarget& target, sf::Vector2u size, float scale, const LevelDef& level) const;
 
     const sf::Font* m_font;

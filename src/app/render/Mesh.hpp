@@ -40,6 +40,8 @@ public:
     void addStar(sf::Vector2f centre, float outerRadius, float innerRadius, sf::Color colour);
 
     void draw(sf::RenderTarget& target, const sf::Transform& transform = sf::Transform::Identity) const;
+    /// Vertices added so far (three per triangle).
+    std::size_t vertexCount() const { return m_vertices.getVertexCount(); }
 
 private:
     void addVertex(sf::Vector2f point, sf::Color colour);

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "render/Look.hpp"
+
 #include <SFML/Graphics/Color.hpp>
 #include <string_view>
 
@@ -24,7 +26,8 @@ struct BirdColours
     sf::Color brow;
 };
 
-/// Named colours of the scene; everything is drawn from these, no image files.
+/// Named colours of the scene; everything is drawn from these, no image files. The UI's colours and the paths'
+/// are references into the active look (render/Look.hpp), so they follow the accessibility settings.
 namespace palette
 {
 inline const sf::Color kSkyTop(92, 160, 228);
@@ -56,26 +59,26 @@ inline const sf::Color kEgg(250, 244, 226);
 inline const sf::Color kEggOutline(178, 166, 140);
 inline const sf::Color kAbility(255, 230, 60);
 
-inline const sf::Color kPreviewDot(255, 255, 255);
-inline const sf::Color kPreviewOutline(30, 34, 48);
-inline const sf::Color kActualPath(255, 140, 0);
-inline const sf::Color kActualContact(220, 40, 30);
+inline const sf::Color& kPreviewDot = activeLook().previewDot;
+inline const sf::Color& kPreviewOutline = activeLook().previewOutline;
+inline const sf::Color& kActualPath = activeLook().actualPath;
+inline const sf::Color& kActualContact = activeLook().actualContact;
 inline const sf::Color kTrailPuff(255, 255, 255); ///< earlier shots' paths, drawn faded
 inline const sf::Color kTrailRim(60, 66, 84);
-inline const sf::Color kPanel(20, 28, 44, 200);
-inline const sf::Color kText(255, 255, 255);
-inline const sf::Color kTextDim(200, 210, 225);
-inline const sf::Color kStar(255, 206, 40);
-inline const sf::Color kStarEmpty(70, 78, 96);
-inline const sf::Color kCard(24, 34, 56, 240);
-inline const sf::Color kMenuTop(22, 38, 70);
-inline const sf::Color kMenuBottom(40, 74, 118);
-inline const sf::Color kButton(30, 42, 68, 235);
-inline const sf::Color kButtonSelected(48, 74, 124, 245);
-inline const sf::Color kButtonOutline(120, 140, 176);
-inline const sf::Color kTileLocked(40, 44, 54, 235);
-inline const sf::Color kTextDisabled(150, 158, 172);
-inline const sf::Color kScrim(8, 12, 22, 150); ///< darkens the screen under a menu
+inline const sf::Color& kPanel = activeLook().panel;
+inline const sf::Color& kText = activeLook().text;
+inline const sf::Color& kTextDim = activeLook().textDim;
+inline const sf::Color& kStar = activeLook().star;
+inline const sf::Color& kStarEmpty = activeLook().starEmpty;
+inline const sf::Color& kCard = activeLook().card;
+inline const sf::Color& kMenuTop = activeLook().menuTop;
+inline const sf::Color& kMenuBottom = activeLook().menuBottom;
+inline const sf::Color& kButton = activeLook().button;
+inline const sf::Color& kButtonSelected = activeLook().buttonSelected;
+inline const sf::Color& kButtonOutline = activeLook().buttonOutline;
+inline const sf::Color& kTileLocked = activeLook().tileLocked;
+inline const sf::Color& kTextDisabled = activeLook().textDisabled;
+inline const sf::Color& kScrim = activeLook().scrim;
 } // namespace palette
 
 /// Colours of a material by name; an unknown material gets a neutral sandstone.

@@ -18,11 +18,12 @@ const sf::Color kNoticePanel(90, 16, 16, 220);
 const sf::Color kNoticeTitle(255, 214, 200);
 } // namespace
 
-void ReloadNotice::draw(sf::RenderTarget& target, sf::Vector2u size, const std::vector<std::string>& lines) const
+void ReloadNotice::draw(sf::RenderTarget& target, sf::Vector2u size, const std::vector<std::string>& lines,
+                        float textScale) const
 {
     if (m_font == nullptr || lines.empty())
         return;
-    const float scale = hudScale(size);
+    const float scale = hudScale(size) * textScale;
     const auto titleSize = static_cast<unsigned>(std::round(17.0f * scale));
     const auto lineSize = static_cast<unsigned>(std::round(14.0f * scale));
     const float pad = 10.0f * scale;

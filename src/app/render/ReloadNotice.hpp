@@ -16,7 +16,8 @@ public:
     explicit ReloadNotice(const sf::Font* font) : m_font(font) {}
 
     /// lines: one FILE:LINE:COL problem each.
-    void draw(sf::RenderTarget& target, sf::Vector2u size, const std::vector<std::string>& lines) const;
+    void draw(sf::RenderTarget& target, sf::Vector2u size, const std::vector<std::string>& lines,
+              float textScale = 1.0f) const;
 
 private:
     const sf::Font* m_font;

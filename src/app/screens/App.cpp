@@ -51,6 +51,7 @@ App::App(AppOptions options, Campaign campaign, SaveStore store, std::unique_ptr
 {
     // Scripted runs read the player's files (tests point ABALIKE_DATA_DIR at a fixture) but never write them.
     m_settings = m_store->settings();
+    setActiveLook(lookFor(m_settings.palette, m_settings.highContrast));
     m_progress = m_store->progress();
     if (unlockCampaign(m_progress, m_campaign.levelIds()) && !scripted())
         m_store->saveProgress(m_progress);
@@ -77,6 +78,18 @@ void App::openWindow()
     m_window.setKeyRepeatEnabled(true);
     // Offline frames run as fast as they can (and Xvfb has no vsync).
     m_window.setVerticalSyncEnabled(!m_options.frames.has_value());
+}
+
+void App::reopenWindow()
+{
+    // A --size on the command line wins over the saved size and full screen: nothing to change then.
+    if (!m_window.isOpen() || m_options.width.has_value())
+        return;
+    openWindow();
+    const sf::Vector2u size = m_window.getSize();
+    m_window.setView(sf::View(sf::FloatRect(0.0f, 0.0f, static_cast<float>(size.x), static_cast<float>(size.y))));
+    m_input.releaseAll(); // the old window's releases will not arrive
+    m_screens.resize(size);
 }
 
 void App::openFirstScreen()
@@ -298,7 +311,12 @@ void App::drawNotices()
 
 void App::updateSettings(const Settings& settings)
 {
+    const Settings before = m_settings;
     m_settings = settings;
+    setActiveLook(lookFor(settings.palette, settings.highContrast));
+    if (settings.fullscreen != before.fullscreen || settings.windowWidth != before.windowWidth ||
+        settings.windowHeight != before.windowHeight)
+        reopenWindow();
     m_trace.write("settings", nlohmann::json::parse(settingsToJson(settings)));
     if (!scripted() && m_store)
         m_store->saveSettings(settings);

@@ -55,7 +55,9 @@ public:
     bool scripted() const { return m_options.scripted(); }
 
     const Settings& settings() const { return m_settings; }
-    /// Applies new settings and saves them (not in scripted runs).
+    /// True when --size set the window on the command line: the saved size and full screen do not apply.
+    bool sizeFromCommandLine() const { return m_options.width.has_value(); }
+    /// Applies new settings (the look, the window's size and full screen) and saves them (not in scripted runs).
     void updateSettings(const Settings& settings);
     const Progress& progress() const { return m_progress; }
     /// Records a finished level (best score and stars, unlocks the next) and saves it (not in scripted runs).
@@ -80,6 +82,8 @@ public:
 
 private:
     void openWindow();
+    /// Opens the window again for a new saved size or full screen, and tells every screen.
+    void reopenWindow();
     void openFirstScreen();
     void dispatch(const sf::Event& event);
     void toggleHelp();

@@ -6,6 +6,7 @@
 #include "screens/HelpScreen.hpp"
 #include "screens/Navigation.hpp"
 #include "screens/PlayScreen.hpp"
+#include "screens/SettingsScreen.hpp"
 #include "ui/Card.hpp"
 
 namespace abalike::app
@@ -16,6 +17,7 @@ PauseScreen::PauseScreen(App& app, PlayScreen& play) : m_app(app), m_play(play)
     m_menu.setItems({
         {"resume", "Resume", true},
         {"restart", "Restart level", true},
+        {"settings", "Settings", true},
         {"help", "Controls", true},
         {"levels", "Level select", !m_app.campaign().levels.empty()},
         {"quit", "Quit game", true},
@@ -48,6 +50,8 @@ void PauseScreen::activate(const std::string& id)
         m_play.restartLevel();
         m_app.screens().pop();
     }
+    else if (id == "settings")
+        m_app.screens().push(std::make_unique<SettingsScreen>(m_app));
     else if (id == "help")
         m_app.screens().push(std::make_unique<HelpScreen>(m_app));
     else if (id == "levels")

@@ -9,8 +9,8 @@ namespace abalike::app
 class App;
 class PlayScreen;
 
-/// The pause menu over a level (Esc or P): resume, restart, help, level select, quit. The level stands still
-/// underneath until it is resumed.
+/// The pause menu over a level (Esc or P): resume, restart, settings, controls, level select, quit. The level stands
+/// still underneath until it is resumed.
 class PauseScreen : public Screen
 {
 public:

@@ -3,6 +3,7 @@
 #include "render/LabelPlacement.hpp"
 #include "render/TrailPainter.hpp"
 #include "screens/App.hpp"
+#include "screens/PlayToolbar.hpp"
 
 #include <SFML/Graphics/View.hpp>
 
@@ -50,7 +51,8 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
         layer->drawWorld(target, view);
 
     target.setView(still);
-    hud.draw(target, target.getSize(), session, view.aim());
+    hud.draw(target, target.getSize(), session, view.aim(), static_cast<float>(view.app().settings().textScale),
+             PlayToolbar::reservedWidthPx(view.app(), target.getSize()));
     for (const auto& layer : layers)
         layer->drawScreen(target, view);
 }

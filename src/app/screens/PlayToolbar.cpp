@@ -74,6 +74,12 @@ float PlayToolbar::buttonScale(const App& app)
     return windowScale * std::min(textScale, kMaxButtonGrowth);
 }
 
+float PlayToolbar::reservedWidthPx(const App& app, sf::Vector2u windowSize)
+{
+    const std::vector<sf::FloatRect> rects = layout(windowSize, buttonScale(app));
+    return rects.empty() ? 0.0f : static_cast<float>(windowSize.x) - rects.front().left;
+}
+
 std::optional<std::size_t> PlayToolbar::buttonAt(sf::Vector2f pixel, PlayView& view) const
 {
     const std::vector<sf::FloatRect> rects = layout(view.app().windowSize(), buttonScale(view.app()));

@@ -38,6 +38,8 @@ public:
     /// How large the buttons are drawn: with the window and the text scale, but at most 125 % of the window's own
     /// scale, so that at a 200 % text scale the row still fits beside the aim readout (tooltips take the full scale).
     static float buttonScale(const App& app);
+    /// How much of the top right the toolbar takes, from its left edge to the window's right (pixels).
+    static float reservedWidthPx(const App& app, sf::Vector2u windowSize);
 
 private:
     std::optional<std::size_t> buttonAt(sf::Vector2f pixel, PlayView& view) const;

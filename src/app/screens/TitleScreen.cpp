@@ -8,6 +8,7 @@
 #include "screens/HelpScreen.hpp"
 #include "screens/LevelSelectScreen.hpp"
 #include "screens/Navigation.hpp"
+#include "screens/SettingsScreen.hpp"
 #include "teach/LessonSelectScreen.hpp"
 #include "ui/Card.hpp"
 
@@ -38,6 +39,7 @@ TitleScreen::TitleScreen(App& app)
         {"tutorial", "Tutorial", hasCampaign},
         {"lessons", "Lessons", true},
         {"sandbox", "Sandbox and editor", true},
+        {"settings", "Settings", true},
         {"help", "Controls", true},
         {"quit", "Quit", true},
     });
@@ -61,6 +63,8 @@ void TitleScreen::activate(const std::string& id)
         m_app.screens().push(std::make_unique<LessonSelectScreen>(m_app));
     else if (id == "sandbox")
         openEditor(m_app, sandboxSource());
+    else if (id == "settings")
+        m_app.screens().push(std::make_unique<SettingsScreen>(m_app));
     else if (id == "help")
         m_app.screens().push(std::make_unique<HelpScreen>(m_app));
     else if (id == "quit")

@@ -145,8 +145,7 @@ sf::FloatRect RangeChartView::draw(sf::RenderTarget& target, const sf::Font& fon
                         (m_aimRangeM ? formatFixed(*m_aimRangeM, 1) + " m" : std::string("no landing"));
     const float textTop = rect.top + height - pad - rowHeight;
     drawLabel(target, font, utf8(best), {rect.left + pad, textTop}, rowSize, palette::kStar);
-    drawLabel(target, font, utf8(yours), {rect.left + width - pad, textTop}, rowSize, teach::kAcceleration,
-              Align::Right);
+    drawLabel(target, font, utf8(yours), {rect.left + width - pad, textTop}, rowSize, palette::kText, Align::Right);
     return rect;
 }
 

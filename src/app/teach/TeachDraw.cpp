@@ -134,7 +134,17 @@ void LabelPlacer::draw(sf::RenderTarget& target, const sf::Font& font, const std
             break;
     }
     m_placed.push_back(box);
-    drawLabel(target, font, utf8(text), {box.left, box.top}, size, colour);
+    // Over the open sky a coloured word can be unreadable: white text on a dark chip, the colour as a bar beside it.
+    const float bar = std::max(3.0f, 0.25f * static_cast<float>(size));
+    sf::RectangleShape chip({box.width + 1.5f * bar, box.height});
+    chip.setPosition(box.left - 1.5f * bar, box.top);
+    chip.setFillColor(teach::kPanel);
+    target.draw(chip);
+    sf::RectangleShape swatch({bar, box.height});
+    swatch.setPosition(box.left - 1.5f * bar, box.top);
+    swatch.setFillColor(colour);
+    target.draw(swatch);
+    drawLabel(target, font, utf8(text), {box.left + 0.25f * bar, box.top}, size, palette::kText);
 }
 
 std::string withUnit(double value, int decimals, const char* unit)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "render/Look.hpp"
 #include "render/Mesh.hpp"
 
 #include <SFML/Graphics/Color.hpp>
@@ -24,8 +25,8 @@ inline const sf::Color kKinetic(40, 200, 255);
 inline const sf::Color kPotential(140, 120, 255);
 inline const sf::Color kTotal(240, 240, 240);
 inline const sf::Color kLoss(255, 110, 60);
-inline const sf::Color kPanel(14, 20, 34, 215);
-inline const sf::Color kPanelEdge(110, 130, 170, 200);
+inline const sf::Color& kPanel = activeLook().teachPanel;
+inline const sf::Color& kPanelEdge = activeLook().teachPanelEdge;
 inline const sf::Color kComparison(255, 70, 70);
 } // namespace teach
 
