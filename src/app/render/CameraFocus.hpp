@@ -1,5 +1,6 @@
 #pragma once
 
+#include "render/CameraFit.hpp"
 #include "render/WorldBox.hpp"
 
 #include <SFML/System/Vector2.hpp>
@@ -20,6 +21,7 @@ struct CameraFocus
     std::vector<WorldBox> birds;       ///< every bird, split bird and egg in the world, launched bird first
     sf::Vector2f birdVelocityMps;      ///< the launched bird's velocity (the camera leads it)
     std::optional<WorldBox> structure; ///< the standing blocks and pigs the shot is flying at
+    float topReserved = camera_limits::kTopReserved; ///< the window's top fraction panels cover
 };
 
 /// The focus of a session as it is now: the launched bird, the structure between it and where it was aimed (the

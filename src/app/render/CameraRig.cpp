@@ -49,7 +49,7 @@ CameraView CameraRig::target(const CameraFocus& focus) const
     if (m_mode == Mode::Manual)
         return m_view;
     if (m_mode == Mode::Home || (focus.birds.empty() && !focus.structure))
-        return fitBox(focus.home, focus.groundY, m_window);
+        return fitBox(focus.home, focus.groundY, m_window, focus.topReserved);
 
     std::optional<WorldBox> box = focus.structure;
     if (box)
@@ -65,7 +65,7 @@ CameraView CameraRig::target(const CameraFocus& focus) const
         }
         box = box ? box->united(bird) : bird;
     }
-    return fitBox(*box, focus.groundY, m_window);
+    return fitBox(*box, focus.groundY, m_window, focus.topReserved);
 }
 
 void CameraRig::update(const CameraFocus& focus, double frameS)

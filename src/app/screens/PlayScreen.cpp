@@ -41,7 +41,7 @@ PlayScreen::~PlayScreen() = default;
 void PlayScreen::startSession()
 {
     m_session = std::make_unique<GameSession>(m_source.level, Catalog::builtin());
-    m_rig.reset(cameraFocusOf(*m_session), m_app.windowSize());
+    m_rig.reset(cameraFocus(), m_app.windowSize());
     m_finishHandled = false;
     m_frozen = false;
     resetAim();
@@ -58,7 +58,7 @@ void PlayScreen::startSession()
 void PlayScreen::restartLevel()
 {
     m_session->restart();
-    m_rig.reset(cameraFocusOf(*m_session), m_app.windowSize());
+    m_rig.reset(cameraFocus(), m_app.windowSize());
     m_finishHandled = false;
     m_frozen = false;
     resetAim();
@@ -319,9 +319,18 @@ void PlayScreen::frameUpdate(double frameS)
     pollLevelFile();
     syncScriptedAim();
     refreshPreview();
-    m_rig.update(cameraFocusOf(*m_session), frameS);
+    m_rig.update(cameraFocus(), frameS);
     for (const auto& layer : m_layers)
         layer->frameUpdate(*this, frameS);
+}
+
+CameraFocus PlayScreen::cameraFocus() const
+{
+    CameraFocus focus = cameraFocusOf(*m_session);
+    // The teaching overlay's panels reach down about 40 % of the window: keep the flight below them.
+    if (m_app.settings().teachingOverlay)
+        focus.topReserved = kTeachingTopReserved;
+    return focus;
 }
 
 void PlayScreen::onResize(sf::Vector2u size)

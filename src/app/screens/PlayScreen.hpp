@@ -4,6 +4,7 @@
 #include "input/ShotScript.hpp"
 #include "render/Camera.hpp"
 #include "render/CameraControls.hpp"
+#include "render/CameraFocus.hpp"
 #include "render/CameraRig.hpp"
 #include "render/Hud.hpp"
 #include "render/OverlayRenderer.hpp"
@@ -85,6 +86,9 @@ private:
     };
 
     void startSession();
+    /// What the camera should keep in view now, below the panels on screen.
+    CameraFocus cameraFocus() const;
+    static constexpr float kTeachingTopReserved = 0.4f;
     /// Forgets the aim, any pending launch and the preview (new level or restart).
     void resetAim();
     void handleKey(const sf::Event::KeyEvent& key);
