@@ -174,7 +174,7 @@ std::optional<AimReadout> ScenePlay::aim() const
 
 void ScenePlay::draw(sf::RenderTarget& target)
 {
-    drawPlay(target, *this, m_world, m_overlay, m_hud, m_aim.pullOffset(), m_layers);
+    drawPlay(target, *this, m_world, m_overlay, m_hud, m_aim.pullOffset(), m_aim.dragging(), m_layers);
 }
 
 } // namespace abalike::app

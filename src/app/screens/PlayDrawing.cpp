@@ -1,11 +1,16 @@
 #include "screens/PlayDrawing.hpp"
 
+#include "input/AimController.hpp"
 #include "render/LabelPlacement.hpp"
+#include "render/Mesh.hpp"
+#include "render/Palette.hpp"
 #include "render/TrailPainter.hpp"
 #include "screens/App.hpp"
 #include "screens/PlayToolbar.hpp"
 
 #include <SFML/Graphics/View.hpp>
+#include <cmath>
+#include <numbers>
 
 namespace abalike::app
 {
@@ -13,10 +18,32 @@ namespace abalike::app
 namespace
 {
 constexpr float kLastShotFade = 0.45f;
+
+/// The circle the bird can be pulled back within (a full pull is full power), dashed around the pouch.
+void drawPullLimit(sf::RenderTarget& target, const Camera& camera, const GameSession& session, bool pulling,
+                   float uiScale)
+{
+    const auto launch = session.launchPoint();
+    const sf::Vector2f pouch = camera.toScreen({static_cast<float>(launch[0]), static_cast<float>(launch[1])});
+    const auto radius = static_cast<float>(AimController::kMaxPullM) * camera.pixelsPerMetre();
+    const sf::Color colour = faded(palette::kPreviewDot, pulling ? 0.85f : 0.3f);
+    const float width = (pulling ? 2.5f : 1.5f) * uiScale;
+    constexpr int kDashes = 36;
+    Mesh mesh;
+    for (int i = 0; i < kDashes; ++i)
+    {
+        // Each dash covers half of its share of the circle.
+        const float a0 = 2.0f * std::numbers::pi_v<float> * static_cast<float>(i) / kDashes;
+        const float a1 = a0 + std::numbers::pi_v<float> / kDashes;
+        mesh.addLine(pouch + radius * sf::Vector2f(std::cos(a0), std::sin(a0)),
+                     pouch + radius * sf::Vector2f(std::cos(a1), std::sin(a1)), width, colour);
+    }
+    mesh.draw(target);
+}
 } // namespace
 
 void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, OverlayRenderer& overlay, const Hud& hud,
-              sf::Vector2f pullOffset, const std::vector<std::unique_ptr<PlayLayer>>& layers)
+              sf::Vector2f pullOffset, bool pulling, const std::vector<std::unique_ptr<PlayLayer>>& layers)
 {
     const GameSession& session = view.session();
     const Camera& camera = view.camera();
@@ -42,6 +69,8 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
     if (lastShot != nullptr)
         overlay.drawShotPaths(target, camera, *lastShot, opacity);
     world.drawForeground(target, camera, session, pullOffset);
+    if (view.aim())
+        drawPullLimit(target, camera, session, pulling, view.app().uiScale());
     if (lastShot != nullptr)
         overlay.drawShotMarkers(target, camera, *lastShot, opacity, structureScreenBoxes(session, camera),
                                 static_cast<float>(view.app().settings().textScale));

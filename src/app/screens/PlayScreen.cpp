@@ -340,7 +340,7 @@ void PlayScreen::onResize(sf::Vector2u size)
 
 void PlayScreen::draw(sf::RenderTarget& target)
 {
-    drawPlay(target, *this, m_world, m_overlay, m_hud, m_aim.pullOffset(), m_layers);
+    drawPlay(target, *this, m_world, m_overlay, m_hud, m_aim.pullOffset(), m_aim.dragging(), m_layers);
     m_reloadNotice.draw(target, target.getSize(), m_reloadErrors, static_cast<float>(m_app.settings().textScale));
 }
 
