@@ -24,14 +24,42 @@ TEST(TeachGuides, EveryLessonHasALevelThatLoadsAndAGuide)
         const LevelDef level = sourceLevel("levels/lessons/" + lesson.file);
         EXPECT_EQ(level.id, lesson.id);
         EXPECT_FALSE(level.lesson.empty()) << lesson.id << " says what it teaches";
-        const std::optional<Guide> guide = guideFor(lesson.id);
+        const std::optional<Guide> guide = guideFor(level, Catalog::builtin());
         ASSERT_TRUE(guide) << lesson.id;
         EXPECT_GE(guide->steps.size(), 2u);
         EXPECT_FALSE(guide->closing.empty());
     }
-    EXPECT_TRUE(guideFor("tutorial"));
-    EXPECT_FALSE(guideFor("1-1"));
-    EXPECT_FALSE(guideFor("lesson-unknown"));
+    const auto withId = [](const std::string& id)
+    {
+        LevelDef level;
+        level.id = id;
+        return guideFor(level, Catalog::builtin());
+    };
+    EXPECT_TRUE(withId("tutorial"));
+    EXPECT_FALSE(withId("1-1"));
+    EXPECT_FALSE(withId("lesson-unknown"));
+}
+
+/// The mass lesson's numbers are its own slingshot's: 1 250 J at full pull, red 25.0 m/s, black 17.7 m/s.
+TEST(TeachGuides, TheMassLessonTellsTheSameEnergyWithItsOwnNumbers)
+{
+    const LevelDef level = sourceLevel("levels/lessons/lesson-mass.json");
+    const std::optional<Guide> guide = guideFor(level, Catalog::builtin());
+    ASSERT_TRUE(guide);
+    ASSERT_EQ(guide->steps.size(), 3u);
+    const double energy = 0.5 * level.slingshot.maxForceN * level.slingshot.maxPullM;
+    const double red = std::sqrt(2.0 * energy / 4.0);
+    const double black = std::sqrt(2.0 * energy / 8.0);
+    EXPECT_NEAR(red, 25.0, 1e-9);
+    const std::string& second = guide->steps[1].text;
+    EXPECT_NE(second.find("same 1250 J"), std::string::npos) << second;
+    EXPECT_NE(second.find("leaves at 17.7 m/s instead of 25.0 m/s"), std::string::npos) << second;
+    EXPECT_NE(second.find("= 71 %"), std::string::npos) << second;
+    const std::string& third = guide->steps[2].text;
+    EXPECT_NE(third.find(std::to_string(static_cast<int>(std::lround(8.0 * black))) + " N\u00B7s for the heavy"),
+              std::string::npos)
+        << third;
+    EXPECT_NE(third.find("100 N\u00B7s for the light"), std::string::npos) << third;
 }
 
 /// The angle lesson, played: each step is done only by doing what it asks.
@@ -39,7 +67,7 @@ TEST(TeachGuides, TheAngleLessonAdvancesOnlyWhenThePlayerDoesTheStep)
 {
     GameSession session(sourceLevel("levels/lessons/lesson-angle.json"));
     GuideRunner runner;
-    runner.start(*guideFor("lesson-angle"));
+    runner.start(*guideFor(sourceLevel("levels/lessons/lesson-angle.json"), Catalog::builtin()));
     GuideContext context;
     context.session = &session;
     runner.update(context);
@@ -73,7 +101,10 @@ TEST(TeachGuides, TheTutorialFollowsTheAim)
     runner.start(tutorialGuide());
     GuideContext context;
     context.session = &session;
-    context.aim = AimReadout{45.0, 600.0, 15.0, 4.0, 0.1};
+    AimReadout aim;
+    aim.angleDeg = 45.0;
+    aim.speedMps = 15.0;
+    context.aim = aim;
     runner.update(context);
     EXPECT_EQ(runner.step(), 0u);
     context.aim->angleDeg = 50.0;

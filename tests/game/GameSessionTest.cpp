@@ -13,12 +13,14 @@ LevelDef firstLevel()
     return loadLevel(std::string(ABALIKE_SOURCE_DIR) + "/levels/1-1-first-flight.json", Catalog::builtin());
 }
 
-TEST(GameSession, LaunchSpeedIsForceTimesReleaseTimeOverMass)
+TEST(GameSession, LaunchSpeedIsTheBandsEnergyGivenToTheBird)
 {
     const GameSession session(firstLevel());
     ASSERT_NE(session.currentBird(), nullptr);
     EXPECT_EQ(session.currentBird()->name, "red");
-    EXPECT_DOUBLE_EQ(session.launchSpeedForForce(600.0), 600.0 * 0.1 / 4.0);
+    // A third of the pull: 0.667 m, 600 N, 200 J; v0 = sqrt(2 x 200 J / 4 kg) = 10 m/s.
+    EXPECT_DOUBLE_EQ(session.band()->atFraction(1.0 / 3.0).energyJ, 200.0);
+    EXPECT_NEAR(session.band()->atFraction(1.0 / 3.0).speedMps, 10.0, 1e-12);
     EXPECT_DOUBLE_EQ(session.maxLaunchSpeed(), 30.0);
 }
 

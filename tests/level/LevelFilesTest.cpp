@@ -55,7 +55,7 @@ TEST(LevelFiles, FirstLevelHasTheSliceContent)
     for (const BlockDef& b : level.blocks)
         materials.insert(b.material);
     EXPECT_EQ(materials, (std::set<std::string>{"ice", "stone", "wood"}));
-    EXPECT_DOUBLE_EQ(level.slingshot.maxForceN, 1200.0);
+    EXPECT_DOUBLE_EQ(level.slingshot.maxForceN, 1800.0);
 }
 
 TEST(LevelFiles, CampaignListsExistingLevels)

@@ -37,7 +37,7 @@ TEST(CatalogTable, ArealDensityIsBulkDensityTimesSlabDepth)
 {
     for (const Material& m : Catalog::builtin().materials())
         EXPECT_DOUBLE_EQ(m.densityKgPerM2, m.bulkDensityKgPerM3 * Catalog::builtin().slabDepthM()) << m.name;
-    EXPECT_THROW(Catalog::fromJson(R"({"slab_depth_m": 0.1, "slingshot": {"release_time_s": 0.1},
+    EXPECT_THROW(Catalog::fromJson(R"({"slab_depth_m": 0.1, "slingshot": {"max_launch_speed_mps": 864},
         "scoring": {"points_per_unused_bird": 1}, "damage": {"speed_threshold_mps": 0.5},
         "materials": [{"name": "x", "bulk_density_kg_per_m3": 500, "density_kg_per_m2": 40, "friction": 0.5,
                        "restitution": 0.1, "strength_ns": 10, "points": 1}],

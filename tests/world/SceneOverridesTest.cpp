@@ -86,7 +86,7 @@ TEST(SceneOverrides, ACustomBirdFliesWithItsOwnMassSizeAndDrag)
     EXPECT_EQ(bird->name, "custom");
     EXPECT_EQ(bird->massKg, 10.0);
     EXPECT_EQ(bird->radiusM, 0.3);
-    EXPECT_EQ(session.launchSpeedForForce(1200.0), 12.0); // v0 = F t / m = 1200 x 0.1 / 10
+    EXPECT_DOUBLE_EQ(session.maxLaunchSpeed(), std::sqrt(1800.0 * 2.0 / 10.0)); // v0 = sqrt(F x / m) = 19.0 m/s
     const FlightModel model = session.flightModelFor(*bird);
     EXPECT_DOUBLE_EQ(model.quadraticDrag, 0.5 * 1.2 * 0.3 * M_PI * 0.09);
     EXPECT_EQ(model.massKg, 10.0);

@@ -3,6 +3,7 @@
 #include <abalike/flight/Prediction.hpp>
 #include <abalike/game/Score.hpp>
 #include <abalike/level/LevelDef.hpp>
+#include <abalike/level/SlingshotBand.hpp>
 #include <abalike/teach/FlightEnergy.hpp>
 #include <abalike/world/GameWorld.hpp>
 #include <array>
@@ -30,6 +31,7 @@ struct ShotRecord
     std::string bird;
     double angleDeg = 0.0;
     double speedMps = 0.0;
+    BandPull pull; ///< the slingshot's pull that gave the launch (the smallest for speedMps)
     std::optional<ContactPoint> predictedContact;
     std::optional<ContactPoint> actualContact;
     /// Distance between predicted and actual first contact; only when the bird flew the predicted flight, i.e.
@@ -76,11 +78,10 @@ public:
     int birdsRemaining() const;
     int pigsRemaining() const { return m_world->pigsAlive(); }
 
-    /// Launch speed v0 = F t_release / m for the current bird and a slingshot force F.
-    double launchSpeedForForce(double forceN) const;
-    /// The slingshot force F = m v0 / t_release that launches the current bird at a speed (for the HUD).
-    double forceForLaunchSpeed(double speedMps) const;
-    /// Fastest launch of the current bird: the slingshot's maximum force, at most the catalog's launch-speed cap.
+    /// The slingshot's band launching the current bird (pull, force, stored energy, launch speed); none when no
+    /// bird is left.
+    std::optional<SlingshotBand> band() const;
+    /// Fastest launch of the current bird: a full pull, at most the catalog's launch-speed cap.
     double maxLaunchSpeed() const;
     /// Where a bird leaves the slingshot.
     std::array<double, 2> launchPoint() const;

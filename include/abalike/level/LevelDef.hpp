@@ -56,12 +56,14 @@ struct TerrainDef
     bool operator==(const TerrainDef&) const = default;
 };
 
-/// Where birds are launched from and how hard.
+/// Where birds are launched from and how hard. The band is a linear spring (SlingshotBand): drawn back maxPullM it
+/// pulls with maxForceN and stores 1/2 maxForceN maxPullM of energy for the bird.
 struct SlingshotDef
 {
     double x = 0.0;
     double y = 1.5;          ///< height of the pouch, where the bird leaves the slingshot
-    double maxForceN = 1200; ///< largest launch force; v0 = F t_release / m
+    double maxForceN = 1800; ///< the band's force at full pull (N)
+    double maxPullM = 2.0;   ///< full pull (m)
 
     bool operator==(const SlingshotDef&) const = default;
 };

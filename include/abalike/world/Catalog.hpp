@@ -90,7 +90,6 @@ public:
     const std::vector<BirdType>& birds() const { return m_birds; }
     const std::vector<PigType>& pigs() const { return m_pigs; }
 
-    double slingshotReleaseTimeS() const { return m_releaseTimeS; }
     int pointsPerUnusedBird() const { return m_scoring.pointsPerUnusedBird; }
     const ScoringRules& scoring() const { return m_scoring; }
     double damageSpeedThresholdMps() const { return m_damageSpeedThreshold; }
@@ -111,7 +110,6 @@ private:
     std::vector<PigType> m_pigs;
     AbilityParams m_abilities;
     ScoringRules m_scoring;
-    double m_releaseTimeS = 0.1;
     double m_damageSpeedThreshold = 0.5;
     double m_groundFriction = 0.8;
     double m_rollingResistance = 0.0;

@@ -3,10 +3,12 @@
 #include "cli/UsageError.hpp"
 
 #include <abalike/flight/Prediction.hpp>
+#include <abalike/level/SlingshotBand.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -25,11 +27,32 @@ constexpr double kMaxSteps = 2.0e6;
 struct PredictArgs
 {
     std::string angle, speed, x0 = "0", y0 = "0", dt, untilT, maxT = "60";
+    std::string pull, maxForce = "1800", maxPull = "2"; ///< a launch by the slingshot's band instead of a speed
     std::string stepper = "rk4", tol = "1e-9";
     FlightModelArgs model;
     bool json = false;
     bool noGuard = false;
 };
+
+/// With --pull: the launch the slingshot's band gives a bird of this mass (docs/slingshot.md). There is no world
+/// here, so no launch-speed cap.
+std::optional<BandPull> bandLaunch(const PredictArgs& a, double massKg)
+{
+    if (a.pull.empty())
+        return std::nullopt;
+    SlingshotDef sling;
+    sling.maxForceN = parseFinite(a.maxForce, "--max-force");
+    sling.maxPullM = parseFinite(a.maxPull, "--max-pull");
+    const double pull = parseFinite(a.pull, "--pull");
+    if (sling.maxForceN <= 0.0)
+        throw UsageError("--max-force: must be > 0 N, got " + a.maxForce);
+    if (sling.maxPullM <= 0.0)
+        throw UsageError("--max-pull: must be > 0 m, got " + a.maxPull);
+    if (pull < 0.0 || pull > sling.maxPullM)
+        throw UsageError("--pull: must be between 0 and the full pull " + a.maxPull + " m, got " + a.pull);
+    const SlingshotBand band(sling, massKg, std::numeric_limits<double>::infinity());
+    return band.atFraction(pull / sling.maxPullM);
+}
 
 int runPredict(const PredictArgs& a)
 {
@@ -50,7 +73,10 @@ int runPredict(const PredictArgs& a)
         throw UsageError("--tol: must be >= 1e-14 (finer is below double precision), got " + a.tol);
 
     const double angle = parseFinite(a.angle, "--angle");
-    const double speed = parseFinite(a.speed, "--speed");
+    const std::optional<BandPull> band = bandLaunch(a, model.massKg);
+    if (!band && a.speed.empty())
+        throw UsageError("give the launch as --speed M/S or as --pull M (the slingshot's band)");
+    const double speed = band ? band->speedMps : parseFinite(a.speed, "--speed");
     if (speed < 0.0)
         throw UsageError("--speed: must be >= 0 m/s, got " + a.speed);
     const double x0 = parseFinite(a.x0, "--x0");
@@ -101,6 +127,11 @@ int runPredict(const PredictArgs& a)
     }
 
     nlohmann::ordered_json out;
+    if (band)
+        out["launch"] = {{"pull_m", band->pullM},
+                         {"force_n", band->forceN},
+                         {"energy_j", band->energyJ},
+                         {"speed_mps", band->speedMps}};
     out["stepper"] = stepperName(settings.stepper);
     out["dt"] = settings.dtS;
     out["steps"] = flight.steps;
@@ -130,9 +161,17 @@ CommandRunner addPredictCommand(CLI::App& app)
     auto args = std::make_shared<PredictArgs>();
     CLI::App* cmd = app.add_subcommand("predict", "Integrate a flight (no level) and print where it lands");
     cmd->add_option("--angle", args->angle, "launch angle in degrees above horizontal")->required();
-    cmd->add_option("--speed", args->speed, "launch speed in m/s")->required();
+    auto* speed = cmd->add_option("--speed", args->speed, "launch speed in m/s (or --pull)");
+    auto* pull = cmd->add_option("--pull", args->pull,
+                                 "launch by the slingshot's band drawn back this far (m): v0 = sqrt(2E/m) with "
+                                 "E = 1/2 F x (instead of --speed; --mass is the bird's)");
+    speed->excludes(pull);
+    cmd->add_option("--max-force", args->maxForce, "with --pull: the band's force at full pull in N (default 1800)")
+        ->needs(pull);
+    cmd->add_option("--max-pull", args->maxPull, "with --pull: the band's full pull in m (default 2)")->needs(pull);
     cmd->add_option("--x0", args->x0, "launch x in m (default 0)");
-    cmd->add_option("--y0", args->y0, "launch y in m (default 0)");
+    cmd->add_option("--y0", args->y0,
+                    "launch y in m (default 0); the flight ends when it comes back down to y0, not at y = 0");
     addFlightModelOptions(*cmd, args->model);
     cmd->add_option("--stepper", args->stepper, "euler, semi-implicit-euler, rk4 (default), dopri5, analytic");
     cmd->add_option("--dt", args->dt, "step in s (default 1/60)");

@@ -130,6 +130,7 @@ nlohmann::ordered_json sessionToJson(const GameSession& session)
         s["bird"] = shot.bird;
         s["angle_deg"] = shot.angleDeg;
         s["speed"] = shot.speedMps;
+        s["slingshot"] = {{"pull_m", shot.pull.pullM}, {"force_n", shot.pull.forceN}, {"energy_j", shot.pull.energyJ}};
         s["predicted_contact"] = contactJson(shot.predictedContact);
         s["actual_contact"] = contactJson(shot.actualContact);
         s["deviation_m"] = shot.deviationM ? Json(*shot.deviationM) : Json(nullptr);

@@ -212,7 +212,8 @@ void EditorScreen::selectionTab()
         {
             changed |= inputDouble("x (m)", sling->x, m_fieldReleased);
             changed |= inputDouble("Pouch y (m)", sling->y, m_fieldReleased);
-            changed |= inputDouble("Max force (N)", sling->maxForceN, m_fieldReleased, "%.0f");
+            changed |= inputDouble("Force at full pull (N)", sling->maxForceN, m_fieldReleased, "%.0f");
+            changed |= inputDouble("Full pull (m)", sling->maxPullM, m_fieldReleased);
         }
         ImGui::PopItemWidth();
         (void)key;
@@ -412,17 +413,15 @@ void EditorScreen::birdTab()
         }
         bool aimChanged = sliderDouble("Angle (\u00B0)", m_playAngleDeg, -90.0, 90.0, "%.1f");
         m_playSpeedMps = std::min(m_playSpeedMps, maxSpeed);
-        ImGui::Checkbox("Set the force instead of the speed", &m_aimByForce);
-        const BirdType* bird = m_play->session().currentBird();
-        const double releaseS = m_play->session().catalog().slingshotReleaseTimeS();
-        if (m_aimByForce && bird != nullptr)
+        ImGui::Checkbox("Set the pull instead of the speed", &m_aimByPull);
+        const auto band = m_play->session().band();
+        if (m_aimByPull && band)
         {
-            // F = m v0 / t: the same pull sends a heavy bird slower.
-            double force = m_playSpeedMps * bird->massKg / releaseS;
-            const double maxForce = maxSpeed * bird->massKg / releaseS;
-            if (sliderDouble("Force (N)", force, 0.0, std::max(maxForce, 0.1), "%.0f"))
+            // The band stores E = 1/2 F x; the same pull gives every bird the same energy.
+            double pullM = band->forSpeed(m_playSpeedMps).pullM;
+            if (sliderDouble("Pull (m)", pullM, 0.0, band->maxPullM(), "%.2f"))
             {
-                m_playSpeedMps = force * releaseS / bird->massKg;
+                m_playSpeedMps = band->atFraction(pullM / band->maxPullM()).speedMps;
                 aimChanged = true;
             }
         }
@@ -431,8 +430,7 @@ void EditorScreen::birdTab()
         if (aimChanged)
             m_play->aimAt(m_playAngleDeg, m_playSpeedMps);
         if (const auto aim = m_play->aim())
-            ImGui::TextWrapped("F = m v\u2080 / t = %.3g kg \u00D7 %.2f m/s / %.2f s = %.0f N", aim->massKg,
-                               aim->speedMps, aim->releaseTimeS, aim->massKg * aim->speedMps / aim->releaseTimeS);
+            ImGui::TextWrapped("%s\n%s", aimSummary(*aim).c_str(), aimLesson(*aim).c_str());
         if (ImGui::Button("Fire", ImVec2(-FLT_MIN, 0.0f)))
         {
             m_play->aimAt(m_playAngleDeg, m_playSpeedMps);
@@ -536,10 +534,16 @@ void EditorScreen::birdListAndSlingshot(LevelDef& next)
 
     heading("Slingshot");
     double force = next.slingshot.maxForceN;
-    if (sliderDouble("Max force (N)", force, 1.0, 1.0e6, "%.0f", ImGuiSliderFlags_Logarithmic))
+    if (sliderDouble("Force at full pull (N)", force, 1.0, 1.0e6, "%.0f", ImGuiSliderFlags_Logarithmic))
     {
         next.slingshot.maxForceN = force;
         setProperties(next, "Slingshot force", "force");
+    }
+    double pull = next.slingshot.maxPullM;
+    if (sliderDouble("Full pull (m)", pull, 0.1, 10.0, "%.2f"))
+    {
+        next.slingshot.maxPullM = pull;
+        setProperties(next, "Slingshot pull", "pull");
     }
     endGestureIfReleased();
 }

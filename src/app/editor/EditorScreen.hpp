@@ -178,7 +178,7 @@ private:
     std::chrono::steady_clock::time_point m_lastAutosave = std::chrono::steady_clock::now();
     double m_playAngleDeg = 45.0;
     double m_playSpeedMps = 15.0;
-    bool m_aimByForce = false; ///< the launch is set by the slingshot's force, not the bird's speed
+    bool m_aimByPull = false; ///< the launch is set by the band's pull, not the bird's speed
     double m_altitudeM = 0.0;
     std::map<unsigned, std::string> m_textFields; ///< text being typed into the level's fields
 };

@@ -52,14 +52,14 @@ double ScenePlay::maxSpeedMps() const
 
 double ScenePlay::aimSpeedMps() const
 {
-    const double forceN = m_aim.powerFraction() * m_session->level().slingshot.maxForceN;
-    return std::min(m_session->launchSpeedForForce(forceN), maxSpeedMps());
+    const auto band = m_session->band();
+    return band ? band->atFraction(m_aim.powerFraction()).speedMps : 0.0;
 }
 
 void ScenePlay::aimAt(double angleDeg, double speedMps)
 {
-    const double full = m_session->launchSpeedForForce(m_session->level().slingshot.maxForceN);
-    m_aim.set(std::clamp(angleDeg, -90.0, 90.0), full > 0.0 ? speedMps / full : 0.0);
+    const auto band = m_session->band();
+    m_aim.set(std::clamp(angleDeg, -90.0, 90.0), band ? band->forSpeed(speedMps).fraction : 0.0);
     m_previewStale = true;
 }
 
@@ -160,16 +160,10 @@ void ScenePlay::frameUpdate(double frameS)
 
 std::optional<AimReadout> ScenePlay::aim() const
 {
-    const BirdType* bird = m_session->currentBird();
-    if (m_session->phase() != Phase::Aiming || bird == nullptr)
+    const auto band = m_session->band();
+    if (m_session->phase() != Phase::Aiming || !band)
         return std::nullopt;
-    AimReadout readout;
-    readout.angleDeg = m_aim.angleDeg();
-    readout.speedMps = aimSpeedMps();
-    readout.forceN = m_aim.powerFraction() * m_session->level().slingshot.maxForceN;
-    readout.massKg = bird->massKg;
-    readout.releaseTimeS = m_session->catalog().slingshotReleaseTimeS();
-    return readout;
+    return aimReadout(*band, m_aim.angleDeg(), band->atFraction(m_aim.powerFraction()));
 }
 
 void ScenePlay::draw(sf::RenderTarget& target)

@@ -154,10 +154,8 @@ void Hud::drawAim(sf::RenderTarget& target, sf::Vector2u size, float scale, cons
 {
     const unsigned mainSize = scaled(scale, 21.0f);
     const unsigned lessonSize = scaled(scale, 16.0f);
-    const sf::String main = utf8("angle " + formatFixed(aim.angleDeg, 1) + "\u00B0    force " +
-                                 formatFixed(aim.forceN, 0) + " N    speed " + formatFixed(aim.speedMps, 1) + " m/s");
-    const sf::String lesson = utf8("v\u2080 = F t / m = " + formatFixed(aim.forceN, 0) + " N \u00D7 " +
-                                   formatFixed(aim.releaseTimeS, 2) + " s / " + formatFixed(aim.massKg, 1) + " kg");
+    const sf::String main = utf8(aimSummary(aim));
+    const sf::String lesson = utf8(aimLesson(aim));
     const float pad = 10.0f * scale;
     const float mainHeight = m_font->getLineSpacing(mainSize);
     const float width =

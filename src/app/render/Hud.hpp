@@ -1,6 +1,8 @@
 #pragma once
 
+#include "render/AimReadout.hpp"
 #include <SFML/Graphics/Font.hpp>
+
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <abalike/game/GameSession.hpp>
 #include <optional>
@@ -8,16 +10,6 @@
 
 namespace abalike::app
 {
-
-/// The numbers behind the current aim, shown as a small physics lesson: v0 = F t / m.
-struct AimReadout
-{
-    double angleDeg = 0.0;
-    double forceN = 0.0;
-    double speedMps = 0.0;
-    double massKg = 0.0;
-    double releaseTimeS = 0.0;
-};
 
 /// Text over the scene while playing: level name, score, birds and pigs left, the air, the aim readout and
 /// the level's hint. Draws nothing without a font.

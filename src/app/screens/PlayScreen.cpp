@@ -265,31 +265,26 @@ void PlayScreen::syncScriptedAim()
     const ScriptedShot* shot = m_script.pending();
     if (shot == nullptr || m_session->phase() != Phase::Aiming || m_session->currentBird() == nullptr)
         return;
-    const double maxSpeed = m_session->maxLaunchSpeed();
-    m_aim.set(shot->angleDeg, maxSpeed > 0.0 ? shot->speedMps / maxSpeed : 0.0);
+    m_aim.set(shot->angleDeg, m_session->band()->forSpeed(shot->speedMps).fraction);
 }
 
 double PlayScreen::aimSpeedMps() const
 {
     if (const ScriptedShot* shot = m_script.pending())
         return shot->speedMps;
-    const double forceN = m_aim.powerFraction() * m_session->level().slingshot.maxForceN;
-    return std::min(m_session->launchSpeedForForce(forceN), m_session->maxLaunchSpeed());
+    const auto band = m_session->band();
+    return band ? band->atFraction(m_aim.powerFraction()).speedMps : 0.0;
 }
 
 std::optional<AimReadout> PlayScreen::aim() const
 {
-    const BirdType* bird = m_session->currentBird();
-    if (m_session->phase() != Phase::Aiming || bird == nullptr)
+    const auto band = m_session->band();
+    if (m_session->phase() != Phase::Aiming || !band)
         return std::nullopt;
-    AimReadout readout;
-    readout.angleDeg = m_aim.angleDeg();
-    readout.speedMps = aimSpeedMps();
-    readout.forceN = m_script.pending() != nullptr ? m_session->forceForLaunchSpeed(readout.speedMps)
-                                                   : m_aim.powerFraction() * m_session->level().slingshot.maxForceN;
-    readout.massKg = bird->massKg;
-    readout.releaseTimeS = m_session->catalog().slingshotReleaseTimeS();
-    return readout;
+    // A scripted shot is given as a speed: show the pull that gives it.
+    const BandPull pull = m_script.pending() != nullptr ? band->forSpeed(m_script.pending()->speedMps)
+                                                        : band->atFraction(m_aim.powerFraction());
+    return aimReadout(*band, m_aim.angleDeg(), pull);
 }
 
 void PlayScreen::refreshPreview()

@@ -68,7 +68,7 @@ private:
 
 /// The guide for a level, if it has one: the tutorial for level id "tutorial" (and, on a first run, for the first
 /// campaign level), a lesson for "lesson-..." levels.
-std::optional<Guide> guideFor(const std::string& levelId);
+std::optional<Guide> guideFor(const LevelDef& level, const Catalog& catalog);
 /// The tutorial itself.
 Guide tutorialGuide();
 

@@ -1,5 +1,9 @@
 #include "teach/Guide.hpp"
 
+#include "render/TextFormat.hpp"
+
+#include <abalike/level/LevelFlight.hpp>
+
 #include <cmath>
 
 namespace abalike::app
@@ -56,7 +60,46 @@ GuideStep overlayStep(const std::string& why)
             }};
 }
 
-Guide lesson(const std::string& id)
+/// Heavy and light birds: the numbers come from the lesson's own slingshot and birds.
+Guide massLesson(const LevelDef& level, const Catalog& catalog)
+{
+    const BirdType* light = catalog.findBird("red");
+    const BirdType* heavy = catalog.findBird("black");
+    if (light == nullptr || heavy == nullptr)
+        return {};
+    const SlingshotBand lightBand = slingshotBand(level.slingshot, *light, catalog);
+    const SlingshotBand heavyBand = slingshotBand(level.slingshot, *heavy, catalog);
+    const double energy = lightBand.fullEnergyJ();
+    const double vLight = lightBand.maxSpeedMps();
+    const double vHeavy = heavyBand.maxSpeedMps();
+    const auto kg = [](double m)
+    {
+        return formatFixed(m, 0) + " kg";
+    };
+    const auto mps = [](double v)
+    {
+        return formatFixed(v, 1) + " m/s";
+    };
+    return {
+        "Lesson: heavy and light birds",
+        {{"Pull all the way and launch the red bird (" + kg(light->massKg) +
+              "). The aim panel shows the band's pull, its force, the energy E = \u00BD F x it stores, and "
+              "v\u2080 = \u221A(2E / m).",
+          launched},
+         {"The black bird weighs " + kg(heavy->massKg) + ". Launch it at full pull too: the band gives it the same " +
+              formatFixed(energy, 0) + " J, so it leaves at " + mps(vHeavy) + " instead of " + mps(vLight) +
+              " (\u221A(" + kg(light->massKg) + " / " + kg(heavy->massKg) +
+              ") = " + formatFixed(100.0 * std::sqrt(light->massKg / heavy->massKg), 0) + " %).",
+          launched},
+         {"Same energy, different momentum: p = m v\u2080 = \u221A(2 m E) is " +
+              formatFixed(heavy->massKg * vHeavy, 0) + " N\u00B7s for the heavy bird and " +
+              formatFixed(light->massKg * vLight, 0) + " N\u00B7s for the light one. Knock out the pig.",
+          won}},
+        "Same pull, same energy: v\u2080 \u221D 1/\u221Am. Light birds fly fast and far; heavy birds carry "
+        "more momentum into what they hit."};
+}
+
+Guide lesson(const std::string& id, const LevelDef& level, const Catalog& catalog)
 {
     if (id == "lesson-angle")
         return {"Lesson: angle and range",
@@ -80,16 +123,7 @@ Guide lesson(const std::string& id)
                 "In vacuum from the ground 45\u00B0 throws farthest. From a height, or in air, a little lower wins: "
                 "try G on the other levels."};
     if (id == "lesson-mass")
-        return {
-            "Lesson: mass and launch speed",
-            {{"Pull to full power and launch the red bird (4 kg). The top panel shows v\u2080 = F t / m.", launched},
-             {"The black bird weighs 8 kg. Launch it at full power too: the same force for the same time gives it "
-              "half the speed.",
-              launched},
-             {"Both carried the same momentum, m v\u2080 = F t = 100 N\u00B7s, but the light bird twice the "
-              "kinetic energy (p\u00B2 / 2m). Knock out the pig.",
-              won}},
-            "Heavy birds are slow off the slingshot but hard to stop: momentum is what pushes blocks."};
+        return massLesson(level, catalog);
     if (id == "lesson-drag")
         return {
             "Lesson: air drag",
@@ -153,8 +187,8 @@ Guide tutorialGuide()
             {{"Aim: drag the bird back from the slingshot with the mouse (the direction sets the angle), or press "
               "\u2191 and \u2193.",
               angleChanged},
-             {"Power: pull further back, or press \u2192 and \u2190. The top panel shows the force and the launch "
-              "speed it gives: v\u2080 = F t / m.",
+             {"Power: pull further back, or press \u2192 and \u2190. The top panel shows how far the band is "
+              "pulled, its force, the energy it stores and the launch speed that energy gives the bird.",
               powerChanged},
              {"The white dots are the RK4 preview: where the bird will fly. Let go of the mouse, or press Space, to "
               "launch.",
@@ -174,13 +208,14 @@ Guide tutorialGuide()
             "That is every control. The campaign teaches the physics; the title menu has a short lesson on each idea."};
 }
 
-std::optional<Guide> guideFor(const std::string& levelId)
+std::optional<Guide> guideFor(const LevelDef& level, const Catalog& catalog)
 {
+    const std::string& levelId = level.id;
     if (levelId == "tutorial")
         return tutorialGuide();
     if (levelId.rfind("lesson-", 0) == 0)
     {
-        Guide guide = lesson(levelId);
+        Guide guide = lesson(levelId, level, catalog);
         if (!guide.steps.empty())
             return guide;
     }
@@ -191,7 +226,7 @@ const std::vector<LessonEntry>& lessonList()
 {
     static const std::vector<LessonEntry> lessons{
         {"lesson-angle", "Angle and range", "lesson-angle.json"},
-        {"lesson-mass", "Mass and launch speed", "lesson-mass.json"},
+        {"lesson-mass", "Heavy and light birds", "lesson-mass.json"},
         {"lesson-drag", "Air drag", "lesson-drag.json"},
         {"lesson-wind", "Wind", "lesson-wind.json"},
         {"lesson-momentum", "Momentum and energy", "lesson-momentum.json"},

@@ -3,6 +3,7 @@
 #include "render/LabelPlacement.hpp"
 #include "screens/App.hpp"
 #include "screens/PlayToolbar.hpp"
+#include "teach/BandGraph.hpp"
 #include "teach/ForceArrows.hpp"
 #include "teach/ImpactPanel.hpp"
 #include "teach/WhyPanel.hpp"
@@ -63,7 +64,7 @@ void TeachLayer::onLevelStart(PlayView& view)
     if (id != m_guideLevel)
     {
         m_guideLevel = id;
-        std::optional<Guide> guide = guideFor(id);
+        std::optional<Guide> guide = guideFor(view.session().level(), view.session().catalog());
         // A first run (no progress at all) starts the campaign with the tutorial; scripted runs never do.
         const Campaign& campaign = m_app.campaign();
         if (!guide && !m_app.scripted() && m_app.progress().levels.empty() && !campaign.levels.empty() &&
@@ -167,6 +168,9 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     // While aiming, the aim readout sits at the top centre: the chart and the comparison go below its line.
     if (aiming)
         right.y = std::max(right.y, 88.0f * scale);
+    if (aiming && overlayOn())
+        if (const std::optional<AimReadout> aim = view.aim())
+            below(BandGraph::draw(target, *font, right, *aim, titleSize, rowSize, scale));
     if (m_showChart && aiming)
         below(m_chart.draw(target, *font, right, titleSize, rowSize, scale));
     if (aiming)

@@ -46,20 +46,12 @@ int GameSession::birdsRemaining() const
     return static_cast<int>(m_level.birds.size()) - m_nextBird;
 }
 
-double GameSession::launchSpeedForForce(double forceN) const
+std::optional<SlingshotBand> GameSession::band() const
 {
     const BirdType* bird = currentBird();
     if (bird == nullptr)
-        return 0.0;
-    return forceN * m_catalog.slingshotReleaseTimeS() / bird->massKg;
-}
-
-double GameSession::forceForLaunchSpeed(double speedMps) const
-{
-    const BirdType* bird = currentBird();
-    if (bird == nullptr)
-        return 0.0;
-    return speedMps * bird->massKg / m_catalog.slingshotReleaseTimeS();
+        return std::nullopt;
+    return slingshotBand(m_level.slingshot, *bird, m_catalog);
 }
 
 double GameSession::maxLaunchSpeed() const
@@ -116,7 +108,7 @@ void GameSession::launch(double angleDeg, double speedMps)
     else if (speedMps > maxLaunchSpeed() * (1.0 + 1e-12))
         why << "bird " << m_nextBird + 1 << " (" << bird->name << ", " << bird->massKg
             << " kg) can be launched at most " << maxLaunchSpeed() << " m/s (slingshot " << m_level.slingshot.maxForceN
-            << " N), asked " << speedMps << " m/s";
+            << " N at a " << m_level.slingshot.maxPullM << " m pull), asked " << speedMps << " m/s";
     if (!why.str().empty())
         throw LaunchError(why.str());
 
@@ -124,6 +116,7 @@ void GameSession::launch(double angleDeg, double speedMps)
     shot.bird = bird->name;
     shot.angleDeg = angleDeg;
     shot.speedMps = speedMps;
+    shot.pull = band()->forSpeed(speedMps);
     const PredictedFlight predicted = preview(angleDeg, speedMps);
     shot.predictedContact = predicted.contact;
     for (const PathPoint& point : predicted.path)

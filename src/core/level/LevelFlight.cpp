@@ -1,7 +1,5 @@
 #include <abalike/level/LevelFlight.hpp>
 
-#include <algorithm>
-
 namespace abalike
 {
 
@@ -17,10 +15,14 @@ FlightModel levelFlightModel(const EnvironmentDef& environment, const BirdType& 
     return model;
 }
 
+SlingshotBand slingshotBand(const SlingshotDef& slingshot, const BirdType& bird, const Catalog& catalog)
+{
+    return SlingshotBand(slingshot, bird.massKg, catalog.maxLaunchSpeedMps());
+}
+
 double maxLaunchSpeed(const SlingshotDef& slingshot, const BirdType& bird, const Catalog& catalog)
 {
-    const double bySlingshot = slingshot.maxForceN * catalog.slingshotReleaseTimeS() / bird.massKg;
-    return std::min(bySlingshot, catalog.maxLaunchSpeedMps());
+    return slingshotBand(slingshot, bird, catalog).maxSpeedMps();
 }
 
 } // namespace abalike

@@ -6,8 +6,8 @@
 
 #include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelIO.hpp>
-#include <abalike/level/SafeText.hpp>
 #include <abalike/level/LevelWriter.hpp>
+#include <abalike/level/SafeText.hpp>
 #include <abalike/world/Catalog.hpp>
 
 #include <cmath>
@@ -201,13 +201,16 @@ void readSlingshot(LevelReader& r, const json& root, LevelDef& level)
 {
     const auto sling = root.find("slingshot");
     if (sling == root.end())
-        r.error("", "missing required key \"slingshot\" (expected {\"x\", \"y\", \"max_force_n\"})");
-    else if (r.object(*sling, "/slingshot", {"x", "y", "max_force_n"}))
+        r.error("", "missing required key \"slingshot\" (expected {\"x\", \"y\", \"max_force_n\", \"max_pull_m\"})");
+    else if (r.object(*sling, "/slingshot", {"x", "y", "max_force_n", "max_pull_m"}))
     {
         level.slingshot.x = r.number(*sling, "/slingshot", "x", 0.0, true, kCoordinate);
         level.slingshot.y = r.number(*sling, "/slingshot", "y", 1.5, true, kCoordinate);
-        level.slingshot.maxForceN =
-            r.number(*sling, "/slingshot", "max_force_n", 1200.0, false, NumberRange{kMinForceN, kMaxForceN, "N"});
+        const SlingshotDef defaults;
+        level.slingshot.maxForceN = r.number(*sling, "/slingshot", "max_force_n", defaults.maxForceN, false,
+                                             NumberRange{kMinForceN, kMaxForceN, "N"});
+        level.slingshot.maxPullM = r.number(*sling, "/slingshot", "max_pull_m", defaults.maxPullM, false,
+                                            NumberRange{kMinPullM, kMaxPullM, "m"});
     }
 }
 

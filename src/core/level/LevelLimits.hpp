@@ -19,6 +19,9 @@ inline constexpr double kOverlapToleranceM = 0.01;
 inline constexpr double kMaxAngleDeg = 360.0;
 inline constexpr double kMinForceN = 1.0;
 inline constexpr double kMaxForceN = 1.0e6;
+/// The slingshot's full pull: a hand catapult's 0.1 m to a siege engine's 10 m.
+inline constexpr double kMinPullM = 0.1;
+inline constexpr double kMaxPullM = 10.0;
 inline constexpr double kMaxGravity = 100.0;    // m/s^2; Jupiter is 24.79
 inline constexpr double kMaxAirDensity = 100.0; // kg/m^3; Venus's surface is about 65
 inline constexpr double kMaxWindMps = 100.0;

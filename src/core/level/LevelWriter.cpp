@@ -233,6 +233,8 @@ std::string writeLevelJson(const LevelDef& level, const std::string& schemaRefer
     json sling = {{"x", num(level.slingshot.x)}, {"y", num(level.slingshot.y)}};
     if (level.slingshot.maxForceN != defaults.slingshot.maxForceN)
         sling["max_force_n"] = num(level.slingshot.maxForceN);
+    if (level.slingshot.maxPullM != defaults.slingshot.maxPullM)
+        sling["max_pull_m"] = num(level.slingshot.maxPullM);
     root["slingshot"] = std::move(sling);
     root["birds"] = level.birds;
     if (level.customBird)

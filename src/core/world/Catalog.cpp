@@ -43,7 +43,6 @@ Catalog Catalog::fromJson(std::string_view text)
     {
         const json root = json::parse(text);
         catalog.m_slabDepthM = root.contains("slab_depth_m") ? positive(root, "slab_depth_m", "catalog") : 0.1;
-        catalog.m_releaseTimeS = positive(root.at("slingshot"), "release_time_s", "slingshot");
         catalog.m_maxLaunchSpeedMps = positive(root.at("slingshot"), "max_launch_speed_mps", "slingshot");
         const json& scoring = root.at("scoring");
         catalog.m_scoring.pointsPerUnusedBird = scoring.at("points_per_unused_bird").get<int>();

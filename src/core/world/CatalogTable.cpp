@@ -1,4 +1,6 @@
 #include <abalike/world/CatalogTable.hpp>
+
+#include <abalike/level/SlingshotBand.hpp>
 #include <cmath>
 #include <iomanip>
 #include <numbers>
@@ -71,15 +73,23 @@ std::string catalogMarkdown(const Catalog& catalog)
           "level and\n"
        << "stress scene at or below 10.\n\n";
 
+    const SlingshotDef sling;
     md << "## Birds\n\n"
-       << "The slingshot's force acts for " << fixed(catalog.slingshotReleaseTimeS(), 2)
-       << " s, so v0 = F t / m: the same pull sends a heavy bird slower.\n\n"
-       << "| Bird | Mass (kg) | Radius (m) | Drag Cd | Friction | Restitution | Ability | v0 at 1200 N (m/s) |\n"
-       << "|---|---:|---:|---:|---:|---:|---|---:|\n";
+       << "The slingshot's band is a linear spring: the default slingshot pulls with " << fixed(sling.maxForceN, 0)
+       << " N at its full " << fixed(sling.maxPullM, 1)
+       << " m pull and stores E = 1/2 F x = " << fixed(0.5 * sling.maxForceN * sling.maxPullM, 0)
+       << " J, which the bird leaves with as kinetic energy: v0 = sqrt(2 E / m), so the same pull sends a bird\n"
+       << "twice as heavy 1/sqrt(2) as fast (docs/slingshot.md).\n\n"
+       << "| Bird | Mass (kg) | Radius (m) | Drag Cd | Friction | Restitution | Ability | v0 at full pull (m/s) |"
+          " Momentum (N s) |\n"
+       << "|---|---:|---:|---:|---:|---:|---|---:|---:|\n";
     for (const BirdType& b : catalog.birds())
+    {
+        const double v0 = SlingshotBand(sling, b.massKg, catalog.maxLaunchSpeedMps()).maxSpeedMps();
         md << "| " << b.name << " | " << fixed(b.massKg, 1) << " | " << fixed(b.radiusM, 2) << " | "
            << fixed(b.dragCoefficient, 2) << " | " << fixed(b.friction, 2) << " | " << fixed(b.restitution, 2) << " | "
-           << b.ability << " | " << fixed(1200.0 * catalog.slingshotReleaseTimeS() / b.massKg, 1) << " |\n";
+           << b.ability << " | " << fixed(v0, 1) << " | " << fixed(b.massKg * v0, 0) << " |\n";
+    }
 
     const AbilityParams& a = catalog.abilities();
     md << "\n## Abilities (click or Space in flight)\n\n"
