@@ -3,6 +3,9 @@
 // walkthrough holds the world still, and every teaching key works in flight without a crash.
 #include "RunGame.hpp"
 
+#include <cstdlib>
+#include <fstream>
+
 #include <gtest/gtest.h>
 
 namespace abalike::test
@@ -66,6 +69,45 @@ TEST_F(TeachFlow, TheWalkthroughHoldsTheWorldStill)
         {"frame": 110, "key": "Space"}, {"frame": 120, "key": "RBracket"}])"));
     ASSERT_EQ(held.exitCode, 0) << held.err;
     EXPECT_TRUE(held.values("finished", "won").empty());
+}
+
+TEST_F(TeachFlow, TheTraceRecordsEveryDefeatAsSimulateDoes)
+{
+    // The shot of SimulateCli's defeat test: the window plays the same steps, so its defeat events are simulate's
+    // "defeats", field for field, except that the window launches later (the scripted pull is shown first): every
+    // t is later by the same amount.
+    const GameRun run = play(sourceFile("levels/1-1-first-flight.json") + " --shot 55,17 --frames 400");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    std::vector<nlohmann::json> traced;
+    for (const nlohmann::json& line : run.trace)
+        if (line.value("event", "") == "defeat")
+        {
+            nlohmann::json fields = line;
+            fields.erase("event");
+            fields.erase("frame");
+            traced.push_back(fields);
+        }
+    ASSERT_GE(traced.size(), 3u);
+    const std::string out = m_dir.file("simulate.json");
+    // append, not "+": GCC 12 warns falsely (-Wrestrict) on operator+ with a temporary.
+    std::string command = "'";
+    command.append(ABALIKE_EXECUTABLE).append("' simulate '").append(sourceFile("levels/1-1-first-flight.json"));
+    command.append("' --shot 55,17 --json > '").append(out).append("'");
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    std::ifstream in(out);
+    const nlohmann::json simulated = nlohmann::json::parse(in)["defeats"];
+    ASSERT_GE(simulated.size(), traced.size());
+    const double delay = traced[0]["t"].get<double>() - simulated[0]["t"].get<double>();
+    EXPECT_GE(delay, 0.0);
+    for (std::size_t i = 0; i < traced.size(); ++i)
+    {
+        EXPECT_NEAR(traced[i]["t"].get<double>() - simulated[i]["t"].get<double>(), delay, 1e-6) << i;
+        nlohmann::json a = traced[i];
+        nlohmann::json b = simulated[i];
+        a.erase("t");
+        b.erase("t");
+        EXPECT_EQ(a, b) << i;
+    }
 }
 
 TEST_F(TeachFlow, EveryTeachingKeyInFlightAndWhileAiming)

@@ -19,10 +19,10 @@ namespace abalike
 /// Where a level is in its life.
 enum class Phase
 {
-    Aiming, ///< a bird waits in the slingshot
-    Flying, ///< a shot is under way; the next bird waits until the world settles
-    Won,    ///< no pig left and the world settled
-    Lost,   ///< birds used up, pigs left, world settled
+    Aiming, ///< a bird waits in the slingshot (the world may still move)
+    Flying, ///< a shot is under way; the next bird waits until it is ready (GameSession::kReadyAfterContactS)
+    Won,    ///< no pig left (after at most kWinGraceS of grace)
+    Lost,   ///< birds used up, pigs left, world calm (or the time limit ran out)
 };
 
 /// What happened to one shot: the prediction made at launch and what the world did.
@@ -48,6 +48,14 @@ struct ShotRecord
     int pigsDefeated = 0;              ///< pigs defeated while this shot was under way
     /// The air or gravity changed while it flew (the sandbox): the prediction made at launch no longer applies.
     bool environmentChanged = false;
+    /// Something still moved when it was launched (GameWorld::isCalm): the preview was cast against the bodies
+    /// where they were then, so it gets no deviation and no accuracy points.
+    bool launchedIntoMovingWorld = false;
+    /// World time of the shot's first contact (its bird or a split bird touching anything); none if it touched
+    /// nothing.
+    std::optional<double> contactTimeS;
+    /// Seconds from the first contact until the next bird was ready or the level ended.
+    std::optional<double> readyAfterContactS;
     int accuracyPoints = 0; ///< this shot's share of ScoreBreakdown::accuracyBonus
 };
 
@@ -64,6 +72,15 @@ class GameSession
 public:
     explicit GameSession(LevelDef level, const Catalog& catalog = Catalog::builtin(), WorldSettings settings = {});
 
+    /// The next bird is ready at the latest this long after the shot's first contact, even if the world still moves.
+    static constexpr double kReadyAfterContactS = 3.0;
+    /// A bird that touched nothing and has left the world: the next is ready at the latest this long after.
+    static constexpr double kReadyAfterBirdsGoneS = 1.0;
+    /// When the last pig falls the level is won after at most this long (more may still break for points).
+    static constexpr double kWinGraceS = 1.0;
+    /// Longest a shot lasts with the last bird before the level is lost, even if something still moves.
+    static constexpr double kShotTimeCapS = 20.0;
+
     /// Starts the level again from its definition.
     void restart();
     /// One fixed physics step.
@@ -71,6 +88,8 @@ public:
 
     Phase phase() const { return m_phase; }
     bool finished() const { return m_phase == Phase::Won || m_phase == Phase::Lost; }
+    /// No pig is left: the level is won once the grace ends (kWinGraceS); no bird can be launched meanwhile.
+    bool winPending() const { return m_winSinceS.has_value() && !finished(); }
 
     /// The bird in (or next for) the slingshot; nullptr when none is left.
     const BirdType* currentBird() const;
@@ -105,8 +124,13 @@ public:
     double timeSinceLaunch() const { return m_world->time() - m_shotStartTime; }
 
     const std::vector<ShotRecord>& shots() const { return m_shots; }
-    /// Everything destroyed since the level (re)started, in order (the game's particles and score pop-ups).
+    /// Everything destroyed since the level (re)started, in order (the game's particles and score pop-ups), with
+    /// birds that retired (kind Bird).
     const std::vector<DestroyedEvent>& destroyed() const { return m_destroyed; }
+    /// Blocks broken and pigs defeated since the level (re)started, in order, with their causes.
+    std::vector<DestroyedEvent> defeats() const;
+    /// TNT blasts since the level (re)started, in order.
+    const std::vector<BlastEvent>& blasts() const { return m_blasts; }
     ScoreBreakdown score() const { return m_score; }
     int stars() const;
     double simTime() const { return m_world->time(); }
@@ -125,6 +149,8 @@ private:
     void collectEvents();
     void updateBird();
     void updatePhase();
+    /// The shot under way is over: the next bird is ready or the level ended.
+    void endTurn(Phase next);
 
     LevelDef m_level;
     Catalog m_catalog;
@@ -135,6 +161,9 @@ private:
     double m_shotStartTime = 0.0;
     std::vector<ShotRecord> m_shots;
     std::vector<DestroyedEvent> m_destroyed;
+    std::vector<BlastEvent> m_blasts;
+    std::optional<double> m_winSinceS;    ///< when the last pig fell
+    std::optional<double> m_birdsGoneAtS; ///< when the shot's birds had all left without touching anything
     std::string m_notice;
     ScoreBreakdown m_score;
 };
@@ -153,7 +182,8 @@ struct ScriptedShot
     std::optional<double> abilityAtS; ///< none: the ability is not used
 };
 
-/// Plays the shots in order, headless, letting the world settle between them; returns the finished session.
+/// Plays the shots in order, headless, each as soon as its bird is ready (as the window does); returns the finished
+/// session.
 /// Throws LaunchError if a shot cannot be fired (more shots than birds, too fast).
 std::unique_ptr<GameSession> simulateShots(const LevelDef& level, const std::vector<ScriptedShot>& shots,
                                            const Catalog& catalog = Catalog::builtin());

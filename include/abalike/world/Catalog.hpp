@@ -18,6 +18,10 @@ struct Material
     int points = 0;                  ///< score when destroyed
     std::string note;                ///< where the numbers come from
     double bulkDensityKgPerM3 = 0.0; ///< the real material's density; areal density = this x slab depth
+    /// A material that explodes when it breaks (TNT): every block and pig whose centre is within blastRadiusM gets
+    /// blastImpulseNs (1 - d / R) radially, as push and as damage. 0: it does not explode.
+    double blastRadiusM = 0.0;
+    double blastImpulseNs = 0.0;
 };
 
 /// A kind of bird: the spec's "unique masses and sizes".

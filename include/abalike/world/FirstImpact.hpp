@@ -38,6 +38,8 @@ struct FirstImpact
     std::array<double, 2> normal{};     ///< unit contact normal, from the bird into the body
     std::array<double, 2> point{};      ///< where they touched (m)
     double damageNs = 0.0;              ///< impulse the body took as damage during that step (N s)
+    double strengthBeforeNs = 0.0;      ///< what the body could still absorb when the step began (N s)
+    bool broke = false;                 ///< the body broke (or the pig was defeated) in that step
 
     /// Linear momentum of bird and body together (kg m/s).
     std::array<double, 2> momentumBefore() const;

@@ -53,6 +53,10 @@ struct WorldSettings
     double contactGapM = 0.001;
     /// Rolling resistance for pigs and round blocks (the catalog's "rolling" coefficient); false turns it off.
     bool rollingResistance = true;
+    /// Break-through (GameWorld::refundBreakingContacts): a body that breaks absorbs only its remaining strength and
+    /// whatever struck it keeps the rest of its momentum. false keeps Box2D's impulse as solved, as if the broken
+    /// body had been unbreakable for that step (the rule before; tests and `bench feel` compare the two).
+    bool breakThrough = true;
 
     static constexpr int kAutoSettle = -1;
 };
@@ -65,6 +69,9 @@ enum class EntityKind
     Pig,
     Bird, ///< the launched bird, the extra birds of a split and eggs (typeName "egg")
 };
+
+/// The name of a kind in simulate's JSON and reports ("ground", "terrain", "block", "pig", "bird").
+const char* entityKindName(EntityKind kind);
 
 /// Something in the world the game cares about. Bodies point back at their entity by index (user data).
 struct Entity
@@ -82,7 +89,30 @@ struct Entity
     b2Body* body = nullptr; ///< null once removed
 };
 
-/// Something that was destroyed during the last steps, for score and effects.
+/// What broke a block or defeated a pig: the body that delivered the largest impulse in the step in which its
+/// health reached zero, or the event that removed it.
+enum class CauseKind
+{
+    Bird,        ///< the shot's bird or one of its split birds
+    Block,       ///< a block (falling, sliding, thrown)
+    Pig,         ///< a pig
+    Explosion,   ///< the black bird's blast or a TNT crate's
+    Egg,         ///< the white bird's egg
+    Ground,      ///< the ground or terrain
+    OutOfBounds, ///< it left the level's bounds
+};
+
+/// The name a cause has in simulate's JSON and play's trace ("bird", "block", ... "out_of_bounds").
+const char* causeKindName(CauseKind kind);
+
+struct DefeatCause
+{
+    CauseKind kind = CauseKind::Bird;
+    int index = -1; ///< for Block and Pig: its index in the level's blocks or pigs; -1 otherwise
+};
+
+/// Something that was destroyed or left the world during the last steps, for score, effects and the defeat record.
+/// Birds that retire after their shot appear too (kind Bird, 0 points): the game shows a puff there.
 struct DestroyedEvent
 {
     EntityKind kind = EntityKind::Block;
@@ -90,6 +120,20 @@ struct DestroyedEvent
     double x = 0.0;
     double y = 0.0;
     int points = 0;
+    int index = -1;   ///< blocks and pigs: index in the level's blocks or pigs
+    double timeS = 0; ///< world time (s since the level started)
+    DefeatCause cause;
+    int shot = -1; ///< the shot under way (from 0; -1 before the first launch); set by GameSession
+};
+
+/// A TNT crate that exploded: where and when, and what its blast pushed.
+struct BlastEvent
+{
+    double timeS = 0.0;
+    double x = 0.0;
+    double y = 0.0;
+    double radiusM = 0.0;
+    int blockIndex = -1; ///< the crate's index in the level's blocks
 };
 
 /// The Box2D world of a level: builds bodies from the level definition, steps at a fixed rate, turns contact
@@ -167,6 +211,20 @@ public:
 
     /// True when every dynamic body is asleep.
     bool isSettled() const;
+    /// The world is calm when no block or pig has moved faster than kCalmSpeedMps or spun faster than
+    /// kCalmSpinRadPerS for the last kCalmHoldS (a sleeping body does neither). Birds do not count: they retire on
+    /// their own rules. The level starts calm (structures that stand, stand).
+    bool isCalm() const;
+    static constexpr double kCalmSpeedMps = 0.05;
+    static constexpr double kCalmSpinRadPerS = 0.1;
+    static constexpr double kCalmHoldS = 0.1;
+    /// World time at which the launched bird or one of its split birds first touched anything (a block, a pig, the
+    /// ground or terrain); none before that, and none once the shot's bird left the world untouched.
+    const std::optional<double>& shotContactTime() const { return m_shotContactTimeS; }
+    /// True while the launched bird, a split bird or an egg is in the world.
+    bool birdsInPlay() const { return m_birdIndex >= 0 || !m_projectiles.empty(); }
+    /// Takes every bird out with a puff (a DestroyedEvent of kind Bird each): the shot is over.
+    void retireAllBirds();
     int pigsAlive() const;
     /// True if any body has a non-finite position or velocity.
     bool hasNonFiniteState() const;
@@ -174,6 +232,8 @@ public:
     const std::vector<Entity>& entities() const { return m_entities; }
     /// Destroyed things since the last call.
     std::vector<DestroyedEvent> takeDestroyedEvents();
+    /// TNT blasts since the last call.
+    std::vector<BlastEvent> takeBlastEvents();
 
     const LevelDef& level() const { return m_level; }
     /// The catalog as this level sees it (its material overrides and custom bird applied, see levelCatalog).
@@ -191,6 +251,8 @@ private:
         double launchTimeS = 0.0; ///< when it was made (world time)
         double shotStartS = 0.0;  ///< when its shot was launched: the flight model's time origin (gusts)
         double slowSinceS = -1.0;
+        double groundSinceS = -1.0;              ///< when it first touched the ground or terrain
+        bool touched = false;                    ///< it has touched something
         std::unique_ptr<FlightIntegrator> model; ///< evaluates drag and wind for it
     };
 
@@ -206,11 +268,25 @@ private:
     void retireBirds();
     void snapshotImpactVelocities();
     void recordFirstImpact(int otherIndex, double tS);
+    /// Completes the first impact's record after damage: whether the body broke, the bird's velocity after it.
+    void finishImpactStep();
     void removeProjectile(std::size_t slot);
     void applyDamage();
-    void damageEntity(int index, double impulseNs);
+    /// Break-through: a body that breaks absorbs only its remaining strength; every surviving body that struck it
+    /// gets back the rest of the contact impulse along the contact normal.
+    void refundBreakingContacts(const std::vector<double>& keptShare);
+    DefeatCause causeOf(int index) const;
+    void damageEntity(int index, double impulseNs, const DefeatCause& cause);
+    /// Radial blast at (x, y): impulse impulseNs (1 - d / R) on every block and pig whose centre is within R, taken
+    /// as damage too; appends each push to impulses when given.
+    void blast(double x, double y, double radiusM, double impulseNs, std::vector<AbilityImpulse>* impulses, double tS);
+    void explodeCrates();
     void removeOutOfBounds();
-    void destroyEntity(int index, bool scored);
+    void destroyEntity(int index, bool scored, const DefeatCause& cause);
+    void updateCalm();
+    /// Tracks what a bird touches: first contact, ground contact. Returns true once it touched anything.
+    bool noteBirdContacts(const b2Body* body, bool& touched, double& groundSinceS);
+    void puff(int index);
     FlightState birdState() const;
     void setBirdVelocity(double vx, double vy);
     int addProjectile(const std::string& typeName, double radiusM, double massKg, const FlightState& s,
@@ -227,7 +303,13 @@ private:
     std::unique_ptr<ContactRecorder> m_contacts;
     std::vector<Entity> m_entities;
     std::vector<DestroyedEvent> m_destroyed;
+    std::vector<BlastEvent> m_blasts;
+    std::vector<int> m_cratesToExplode; ///< TNT crates that broke in this step, blasting after damage
     double m_time = 0.0;
+    double m_calmSinceS = 0.0; ///< < 0 while something moves
+    std::optional<double> m_shotContactTimeS;
+    double m_birdGroundSinceS = -1.0;
+    bool m_birdTouched = false;
     long m_steps = 0;
     int m_stackDepth = 0;
     int m_settleIterations = 0;
@@ -249,6 +331,8 @@ private:
     std::vector<std::array<double, 3>> m_birdPath;
     std::vector<BodyVelocity> m_stepStartVelocities; ///< per entity, at the start of a step in free flight
     std::optional<FirstImpact> m_birdImpact;
+    int m_impactEntity = -1; ///< the body of a first impact recorded in this step, until finishImpactStep
+    std::array<double, 2> m_impactRefund{}; ///< impulse the first impact's body gave back by breaking (N s)
     std::vector<Projectile> m_projectiles;
 };
 

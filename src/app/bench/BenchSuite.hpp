@@ -19,5 +19,6 @@ int runReferenceBench(const BenchOptions& options); ///< predicted vs actual fir
 int runPerfBench(const BenchOptions& options);      ///< world step times and headless speed (world issue)
 int runSoakBench(const BenchOptions& options);      ///< 10 000 shots, resident memory start to end (reliability)
 int runFramesBench(const BenchOptions& options);    ///< the game loop's frame times under the display (game issue)
+int runFeelBench(const BenchOptions& options);      ///< break-through, toppling and the pace of turns (core loop)
 
 } // namespace abalike::app

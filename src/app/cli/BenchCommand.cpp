@@ -46,6 +46,7 @@ CommandRunner addBenchCommand(CLI::App& app)
         {"soak", "10 000 random headless shots across the campaign; fails if resident memory grows > 5%", runSoakBench},
         {"frames", "frame times of the game loop under the current display (1280x720, every overlay on)",
          runFramesBench},
+        {"feel", "break-through, toppling defeats and the pace of turns over the campaign", runFeelBench},
     };
     for (const auto& suite : suites)
     {

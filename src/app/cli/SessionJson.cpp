@@ -32,24 +32,6 @@ Json abilityJson(const std::optional<AbilityUse>& use)
                 {"impulses", std::move(impulses)}};
 }
 
-const char* kindName(EntityKind kind)
-{
-    switch (kind)
-    {
-    case EntityKind::Ground:
-        return "ground";
-    case EntityKind::Terrain:
-        return "terrain";
-    case EntityKind::Block:
-        return "block";
-    case EntityKind::Pig:
-        return "pig";
-    case EntityKind::Bird:
-        return "bird";
-    }
-    return "unknown";
-}
-
 Json energyJson(const std::optional<FlightEnergy>& energy)
 {
     if (!energy)
@@ -79,7 +61,7 @@ Json impactJson(const std::optional<FirstImpact>& impact)
     };
     Json out;
     out["t"] = impact->tS;
-    out["body"] = {{"kind", kindName(impact->bodyKind)}, {"index", impact->bodyIndex}};
+    out["body"] = {{"kind", entityKindName(impact->bodyKind)}, {"index", impact->bodyIndex}};
     out["bird_before"] = linear(impact->birdBefore);
     out["bird_after"] = linear(impact->birdAfter);
     out["body_before"] = full(impact->bodyBefore);
@@ -102,6 +84,20 @@ Json pathJson(const std::vector<std::array<double, 3>>& path)
 }
 
 } // namespace
+
+nlohmann::ordered_json defeatJson(const DestroyedEvent& defeat)
+{
+    Json out;
+    out["t"] = defeat.timeS;
+    out["shot"] = defeat.shot >= 0 ? Json(defeat.shot) : Json(nullptr);
+    out["kind"] = defeat.kind == EntityKind::Pig ? "pig" : "block";
+    out["index"] = defeat.index;
+    Json cause;
+    cause["kind"] = causeKindName(defeat.cause.kind);
+    cause["index"] = defeat.cause.index >= 0 ? Json(defeat.cause.index) : Json(nullptr);
+    out["cause"] = std::move(cause);
+    return out;
+}
 
 nlohmann::ordered_json sessionToJson(const GameSession& session)
 {
@@ -134,17 +130,23 @@ nlohmann::ordered_json sessionToJson(const GameSession& session)
         s["predicted_contact"] = contactJson(shot.predictedContact);
         s["actual_contact"] = contactJson(shot.actualContact);
         s["deviation_m"] = shot.deviationM ? Json(*shot.deviationM) : Json(nullptr);
+        s["launched_into_moving_world"] = shot.launchedIntoMovingWorld;
         s["predicted_path"] = pathJson(shot.predictedPath);
         s["actual_path"] = pathJson(shot.actualPath);
-        s["first_touched"] = shot.firstTouched ? Json(kindName(*shot.firstTouched)) : Json(nullptr);
+        s["first_touched"] = shot.firstTouched ? Json(entityKindName(*shot.firstTouched)) : Json(nullptr);
         s["pigs_defeated"] = shot.pigsDefeated;
         s["accuracy_points"] = shot.accuracyPoints;
         s["ability"] = abilityJson(shot.ability);
         s["energy"] = energyJson(shot.energy);
         s["impact"] = impactJson(shot.impact);
+        s["ready_after_contact_s"] = shot.readyAfterContactS ? Json(*shot.readyAfterContactS) : Json(nullptr);
         shots.push_back(std::move(s));
     }
     out["shots"] = std::move(shots);
+    Json defeats = Json::array();
+    for (const DestroyedEvent& defeat : session.defeats())
+        defeats.push_back(defeatJson(defeat));
+    out["defeats"] = std::move(defeats);
     return out;
 }
 

@@ -57,6 +57,11 @@ int runSimulate(const SimulateArgs& a)
         if (shot.deviationM)
             std::cout << "first contact at (" << shot.actualContact->x << ", " << shot.actualContact->y
                       << "), predicted-actual " << *shot.deviationM * 1000.0 << " mm\n";
+        else if (shot.actualContact)
+            std::cout << "first contact at (" << shot.actualContact->x << ", " << shot.actualContact->y << ")"
+                      << (shot.launchedIntoMovingWorld ? ", launched while blocks still moved: no deviation scored"
+                                                       : "")
+                      << "\n";
         else
             std::cout << "no contact\n";
         for (const std::string& sentence : shotFeedback(level, Catalog::builtin(), shot))

@@ -36,6 +36,7 @@ void FxLayer::onLevelStart(PlayView& view)
     m_popUps.clear();
     m_seen = view.session().destroyed().size();
     m_explosionsSeen = view.session().shots().size();
+    m_blastsSeen = view.session().blasts().size();
     m_shake.reset();
 }
 
@@ -53,6 +54,8 @@ void FxLayer::afterStep(PlayView& view)
             m_particles.burstBlock(event.typeName, at, 0.6f, reduced ? 4 : 16);
         else if (event.kind == EntityKind::Pig)
             m_particles.burstPig(at, 0.5f, reduced ? 3 : 12);
+        else if (event.kind == EntityKind::Bird) // a bird leaving after its shot
+            m_particles.burstBird(at, 0.35f, reduced ? 2 : 8);
         if (!reduced)
             m_shake.kick(shakeKickPx(event));
         if (event.points > 0)
@@ -71,10 +74,27 @@ void FxLayer::afterStep(PlayView& view)
         m_explosionsSeen = 0;
     if (shots.size() > m_explosionsSeen && shots.back().ability && shots.back().ability->ability == "explode")
     {
+        const AbilityUse& use = *shots.back().ability;
+        m_particles.burstBlast({static_cast<float>(use.x), static_cast<float>(use.y)},
+                               static_cast<float>(view.session().catalog().abilities().explodeRadiusM),
+                               reduced ? 4 : 16);
         if (!reduced)
             m_shake.kick(12.0f);
         m_explosionsSeen = shots.size();
     }
+    // TNT: a flash as wide as the blast, and a shake.
+    const std::vector<BlastEvent>& blasts = view.session().blasts();
+    if (blasts.size() < m_blastsSeen)
+        m_blastsSeen = 0;
+    for (std::size_t i = m_blastsSeen; i < blasts.size(); ++i)
+    {
+        const BlastEvent& blast = blasts[i];
+        m_particles.burstBlast({static_cast<float>(blast.x), static_cast<float>(blast.y)},
+                               static_cast<float>(blast.radiusM), reduced ? 4 : 16);
+        if (!reduced)
+            m_shake.kick(10.0f);
+    }
+    m_blastsSeen = blasts.size();
 }
 
 sf::Vector2f FxLayer::worldShakePx(PlayView& view) const

@@ -85,13 +85,57 @@ void Particles::burstPig(sf::Vector2f centreM, float radiusM, int count)
     }
 }
 
+void Particles::burstBird(sf::Vector2f centreM, float radiusM, int count)
+{
+    for (int i = 0; i < count && m_pieces.size() < kMaxPieces; ++i)
+    {
+        Piece piece;
+        piece.shape = Shape::Puff;
+        const float angle = uniform(0.0f, 2.0f * std::numbers::pi_v<float>);
+        const float speed = uniform(0.3f, 1.0f);
+        piece.positionM = centreM + sf::Vector2f(std::cos(angle), std::sin(angle)) * (radiusM * 0.4f);
+        piece.velocityMps = {speed * std::cos(angle), speed * std::sin(angle) + 0.4f};
+        piece.sizeM = radiusM * uniform(0.4f, 0.7f);
+        piece.lifeS = uniform(0.5f, 0.8f);
+        piece.colour = i % 2 == 0 ? sf::Color(236, 236, 232, 220) : sf::Color(200, 200, 196, 200);
+        m_pieces.push_back(piece);
+    }
+}
+
+void Particles::burstBlast(sf::Vector2f centreM, float radiusM, int count)
+{
+    if (m_pieces.size() < kMaxPieces)
+    {
+        Piece flash;
+        flash.shape = Shape::Flash;
+        flash.positionM = centreM;
+        flash.sizeM = radiusM;
+        flash.lifeS = 0.35f;
+        flash.colour = sf::Color(255, 236, 150, 230);
+        m_pieces.push_back(flash);
+    }
+    for (int i = 0; i < count && m_pieces.size() < kMaxPieces; ++i)
+    {
+        Piece piece;
+        piece.shape = Shape::Puff;
+        const float angle = uniform(0.0f, 2.0f * std::numbers::pi_v<float>);
+        const float speed = uniform(1.0f, 3.0f);
+        piece.positionM = centreM;
+        piece.velocityMps = {speed * std::cos(angle), speed * std::sin(angle) + 0.8f};
+        piece.sizeM = radiusM * uniform(0.1f, 0.2f);
+        piece.lifeS = uniform(0.5f, 0.9f);
+        piece.colour = i % 3 == 0 ? sf::Color(90, 84, 80, 200) : sf::Color(250, 150, 40, 210);
+        m_pieces.push_back(piece);
+    }
+}
+
 void Particles::update(float dtS)
 {
     for (Piece& piece : m_pieces)
     {
         piece.ageS += dtS;
-        // Puffs float; debris falls.
-        if (piece.shape != Shape::Puff)
+        // Puffs and flashes float; debris falls.
+        if (piece.shape != Shape::Puff && piece.shape != Shape::Flash)
             piece.velocityMps.y -= kGravityMps2 * dtS;
         piece.velocityMps *= std::max(0.0f, 1.0f - kDragPerS * dtS);
         piece.positionM += piece.velocityMps * dtS;
@@ -140,6 +184,9 @@ void Particles::paint(Mesh& mesh) const
         }
         case Shape::Puff:
             mesh.addCircle({0.0f, 0.0f}, s * (0.6f + 0.8f * piece.ageS / piece.lifeS), colour, 12);
+            break;
+        case Shape::Flash:
+            mesh.addCircle({0.0f, 0.0f}, s * (0.3f + 0.7f * std::sqrt(piece.ageS / piece.lifeS)), colour, 32);
             break;
         }
     }

@@ -23,6 +23,7 @@ public:
         Shard,    ///< ice: a translucent triangle
         Chunk,    ///< stone: a rough quad
         Puff,     ///< a pig popping: a growing, fading cloud
+        Flash,    ///< a blast: a bright disc that grows to the blast radius and fades fast
     };
 
     /// Starts over with no pieces and a fixed seed.
@@ -31,6 +32,10 @@ public:
     void burstBlock(std::string_view material, sf::Vector2f centreM, float sizeM, int count);
     /// A cloud of green and white puffs where a pig was defeated.
     void burstPig(sf::Vector2f centreM, float radiusM, int count);
+    /// A grey puff where a bird leaves the world after its shot.
+    void burstBird(sf::Vector2f centreM, float radiusM, int count);
+    /// A blast of radius radiusM: a flash and orange smoke (TNT, the black bird).
+    void burstBlast(sf::Vector2f centreM, float radiusM, int count);
     /// Moves every piece on by dtS (ballistic, with a little air drag) and retires the expired ones.
     void update(float dtS);
     /// Adds every piece to the mesh, in world metres.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace abalike::app
@@ -111,6 +112,46 @@ void addCracks(Mesh& mesh, std::span<const sf::Vector2f> inner, int count, const
         mesh.addLine(bend, branch, 0.7f * width, palette::kCrack);
     }
 }
+/// A TNT crate: two braces across the boards and the letters TNT, stroked so they scale with the crate.
+void addCrate(Mesh& mesh, std::span<const sf::Vector2f> inner, const MaterialColours& colours, const BlockLook& look)
+{
+    const sf::FloatRect box = convex::bounds(inner);
+    const float brace = std::max(0.03f, 0.08f * std::min(box.width, box.height));
+    for (const auto& [a, b] :
+         {std::pair{sf::Vector2f(box.left, box.top), sf::Vector2f(box.left + box.width, box.top + box.height)},
+          std::pair{sf::Vector2f(box.left, box.top + box.height), sf::Vector2f(box.left + box.width, box.top)}})
+    {
+        sf::Vector2f from = a;
+        sf::Vector2f to = b;
+        if (convex::clipSegment(inner, from, to))
+            mesh.addLine(from, to, brace, colours.detail);
+    }
+    // Three letters side by side, each 0.6 as wide as high, in the middle of the crate (y up: the top is +y).
+    const float height = std::min(0.45f * box.height, 0.8f * box.width / (3.0f * 0.6f + 2.0f * 0.15f));
+    const float width = 0.6f * height;
+    const float gap = 0.15f * height;
+    const float stroke = std::max(1.2f * look.pixelM, 0.14f * height);
+    const sf::Vector2f centre(box.left + 0.5f * box.width, box.top + 0.5f * box.height);
+    const float left = centre.x - 1.5f * width - gap;
+    const float bottom = centre.y - 0.5f * height;
+    const float top = centre.y + 0.5f * height;
+    const sf::Color ink = colours.highlight;
+    const auto letterT = [&](float x)
+    {
+        mesh.addLine({x, top}, {x + width, top}, stroke, ink);
+        mesh.addLine({x + 0.5f * width, top}, {x + 0.5f * width, bottom}, stroke, ink);
+    };
+    const auto letterN = [&](float x)
+    {
+        mesh.addLine({x, bottom}, {x, top}, stroke, ink);
+        mesh.addLine({x, top}, {x + width, bottom}, stroke, ink);
+        mesh.addLine({x + width, bottom}, {x + width, top}, stroke, ink);
+    };
+    letterT(left);
+    letterN(left + width + gap);
+    letterT(left + 2.0f * (width + gap));
+}
+
 /// The colour-blind-safe look's patterns, so no material is told by colour alone: wood in stripes along its long
 /// side, ice hatched at 45 degrees, stone dotted on a grid.
 void addPattern(Mesh& mesh, std::span<const sf::Vector2f> inner, const MaterialColours& colours, const BlockLook& look)
@@ -187,6 +228,8 @@ void BlockPainter::paintPolygon(Mesh& mesh, std::span<const sf::Vector2f> polygo
         addGlint(mesh, inner, colours, look);
     else if (look.material == "stone")
         addSpeckles(mesh, inner, colours, look, random);
+    else if (look.material == "tnt")
+        addCrate(mesh, inner, colours, look);
 
     if (activeLook().colourBlindSafe)
         addPattern(mesh, inner, colours, look);

@@ -159,12 +159,14 @@ void OverlayRenderer::drawShotMarkers(sf::RenderTarget& target, const Camera& ca
     }
     m_mesh.draw(target);
 
-    if (m_font == nullptr || !shot.deviationM || !actualAt)
+    if (m_font == nullptr || !actualAt || !(shot.deviationM || shot.launchedIntoMovingWorld))
         return;
     // Next to the contact, in free sky: off the structure if there is room, inside the window.
     const float scale = hudScale(camera.windowSize());
     const auto size = static_cast<unsigned>(std::max(9.0f, std::round(16.0f * scale * textScale)));
-    const sf::String text = utf8("predicted vs actual: " + formatDistance(*shot.deviationM));
+    // Into a moving world the preview aimed at where the blocks were at launch: no deviation is claimed.
+    const sf::String text = utf8(shot.deviationM ? "predicted vs actual: " + formatDistance(*shot.deviationM)
+                                                 : std::string("launched while blocks moved: no deviation scored"));
     const sf::Vector2f extent = measureText(*m_font, text, size);
     const float pad = 0.4f * static_cast<float>(size);
     const sf::Vector2f at = placeLabel(*actualAt, extent + sf::Vector2f(2.0f * pad, 2.0f * pad),

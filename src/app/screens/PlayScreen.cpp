@@ -1,5 +1,6 @@
 #include "screens/PlayScreen.hpp"
 
+#include "cli/SessionJson.hpp"
 #include "render/CameraFocus.hpp"
 #include "screens/App.hpp"
 #include "screens/PauseScreen.hpp"
@@ -43,6 +44,7 @@ void PlayScreen::startSession()
     m_session = std::make_unique<GameSession>(m_source.level, Catalog::builtin());
     m_rig.reset(cameraFocus(), m_app.windowSize());
     m_finishHandled = false;
+    m_destroyedTraced = 0;
     m_frozen = false;
     resetAim();
     m_reloadErrors.clear();
@@ -60,6 +62,7 @@ void PlayScreen::restartLevel()
     m_session->restart();
     m_rig.reset(cameraFocus(), m_app.windowSize());
     m_finishHandled = false;
+    m_destroyedTraced = 0;
     m_frozen = false;
     resetAim();
     m_app.trace().write("restart", {{"id", m_source.level.id}});
@@ -166,7 +169,7 @@ void PlayScreen::handleKey(const sf::Event::KeyEvent& key)
 
 bool PlayScreen::playerMayAim() const
 {
-    return m_session->phase() == Phase::Aiming && m_session->currentBird() != nullptr &&
+    return m_session->phase() == Phase::Aiming && !m_session->winPending() && m_session->currentBird() != nullptr &&
            m_script.pending() == nullptr && !m_requestedLaunch;
 }
 
@@ -203,7 +206,7 @@ void PlayScreen::physicsStep()
         m_session->activateAbility();
         m_scriptAbilityAtS.reset();
     }
-    if (m_session->phase() == Phase::Aiming && m_script.pending() != nullptr)
+    if (m_session->phase() == Phase::Aiming && !m_session->winPending() && m_script.pending() != nullptr)
         fireScriptedShot();
     m_session->step();
     if (!m_session->notice().empty())
@@ -212,10 +215,22 @@ void PlayScreen::physicsStep()
         m_app.notify(m_session->notice());
         m_session->clearNotice();
     }
+    traceDefeats();
     m_trails.update(*m_session);
     for (const auto& layer : m_layers)
         layer->afterStep(*this);
     finishIfDone();
+}
+
+void PlayScreen::traceDefeats()
+{
+    const std::vector<DestroyedEvent>& destroyed = m_session->destroyed();
+    if (destroyed.size() < m_destroyedTraced) // the session reset itself
+        m_destroyedTraced = 0;
+    for (std::size_t i = m_destroyedTraced; i < destroyed.size(); ++i)
+        if (destroyed[i].kind == EntityKind::Block || destroyed[i].kind == EntityKind::Pig)
+            m_app.trace().write("defeat", nlohmann::json(defeatJson(destroyed[i])));
+    m_destroyedTraced = destroyed.size();
 }
 
 void PlayScreen::fireScriptedShot()

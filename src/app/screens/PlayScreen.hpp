@@ -97,6 +97,8 @@ private:
     void physicsStep();
     /// Fires the pending scripted shot once it has been shown long enough.
     void fireScriptedShot();
+    /// Writes each block broken and pig defeated since the last step to the trace as a "defeat" event.
+    void traceDefeats();
     void syncScriptedAim();
     double aimSpeedMps() const;
     void refreshPreview();
@@ -110,6 +112,7 @@ private:
     std::unique_ptr<GameSession> m_session;
     int m_generation = 0;
     bool m_finishHandled = false;
+    std::size_t m_destroyedTraced = 0; ///< events of session.destroyed() already written to the trace
     bool m_frozen = false;
     CameraRig m_rig; ///< fitted at start, follows the shot, returns when the world settles; the player pans and zooms
     CameraControls m_cameraControls;

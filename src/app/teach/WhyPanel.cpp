@@ -31,6 +31,12 @@ sf::FloatRect drawWhyPanel(sf::RenderTarget& target, const sf::Font& font, sf::V
             rows.push_back({"  last shot: predicted vs actual contact", formatDistance(*shot.deviationM)});
         else if (shot.ability && shot.ability->changedFlight)
             rows.push_back({"  last shot: its ability changed the flight", ""});
+        else if (shot.launchedIntoMovingWorld)
+        {
+            // The preview was cast against the blocks where they were at launch; they moved on since.
+            rows.push_back({"  last shot: launched while blocks still moved,", ""});
+            rows.push_back({"  so it has no deviation and no accuracy points", ""});
+        }
     }
     rows.push_back({"They part only if an ability changes the flight, above", ""});
     rows.push_back({"108 m/s (Box2D sub-steps), or by float rounding (\u00B5m)", ""});

@@ -8,12 +8,6 @@
 namespace abalike
 {
 
-namespace
-{
-/// Longest a shot lasts before the next bird is ready, even if something still moves.
-constexpr double kShotTimeCapS = 20.0;
-} // namespace
-
 GameSession::GameSession(LevelDef level, const Catalog& catalog, WorldSettings settings)
     : m_level(std::move(level)), m_catalog(levelCatalog(m_level, catalog)), m_settings(settings)
 {
@@ -31,6 +25,9 @@ void GameSession::restart()
     m_shotStartTime = 0.0;
     m_shots.clear();
     m_destroyed.clear();
+    m_blasts.clear();
+    m_winSinceS.reset();
+    m_birdsGoneAtS.reset();
     m_score = {};
 }
 
@@ -97,6 +94,8 @@ void GameSession::launch(double angleDeg, double speedMps)
         why << "the level is over";
     else if (bird == nullptr)
         why << "no bird left to launch (the level has " << m_level.birds.size() << ")";
+    else if (winPending())
+        why << "no pig is left: the level is won";
     else if (m_phase != Phase::Aiming)
         why << "a shot is still under way";
     else if (!std::isfinite(angleDeg) || !std::isfinite(speedMps))
@@ -117,6 +116,7 @@ void GameSession::launch(double angleDeg, double speedMps)
     shot.angleDeg = angleDeg;
     shot.speedMps = speedMps;
     shot.pull = band()->forSpeed(speedMps);
+    shot.launchedIntoMovingWorld = !m_world->isCalm();
     const PredictedFlight predicted = preview(angleDeg, speedMps);
     shot.predictedContact = predicted.contact;
     for (const PathPoint& point : predicted.path)
@@ -128,6 +128,7 @@ void GameSession::launch(double angleDeg, double speedMps)
     ++m_nextBird;
     m_phase = Phase::Flying;
     m_shotStartTime = m_world->time();
+    m_birdsGoneAtS.reset();
 }
 
 void GameSession::setEnvironment(const EnvironmentDef& environment)
@@ -183,8 +184,11 @@ void GameSession::step()
 void GameSession::collectEvents()
 {
     ShotRecord* shot = m_shots.empty() ? nullptr : &m_shots.back();
-    for (const DestroyedEvent& event : m_world->takeDestroyedEvents())
+    for (const BlastEvent& blast : m_world->takeBlastEvents())
+        m_blasts.push_back(blast);
+    for (DestroyedEvent event : m_world->takeDestroyedEvents())
     {
+        event.shot = static_cast<int>(m_shots.size()) - 1;
         m_destroyed.push_back(event);
         if (event.kind == EntityKind::Block && event.points > 0)
         {
@@ -231,7 +235,8 @@ void GameSession::updateBird()
     }
     // The prediction made at launch is only a claim about the flight that was launched: once an ability changed
     // that flight, the distance between the two contacts measures the ability, not the prediction.
-    const bool flightChanged = (shot.ability && shot.ability->changedFlight) || shot.environmentChanged;
+    const bool flightChanged =
+        (shot.ability && shot.ability->changedFlight) || shot.environmentChanged || shot.launchedIntoMovingWorld;
     if (!shot.predictedContact || flightChanged)
         return;
     shot.deviationM =
@@ -253,28 +258,69 @@ void GameSession::updatePhase()
     // A time-limited level is lost the moment its clock runs out with a pig still standing, whatever is flying.
     if (m_level.timeLimitS && !finished() && m_world->time() >= *m_level.timeLimitS && m_world->pigsAlive() > 0)
     {
-        m_world->removeAllBirds();
-        m_phase = Phase::Lost;
+        endTurn(Phase::Lost);
+        return;
+    }
+    const double now = m_world->time();
+    if (m_phase == Phase::Flying && !m_shots.empty() && !m_shots.back().contactTimeS)
+        m_shots.back().contactTimeS = m_world->shotContactTime();
+    const bool calm = !m_world->birdsInPlay() && m_world->isCalm();
+    // Won as soon as no pig is left, after a short grace in which more may still break (a sandbox scene without
+    // pigs is never won: it is played until its birds are used up).
+    if (!m_level.pigs.empty() && m_world->pigsAlive() == 0)
+    {
+        if (!m_winSinceS)
+            m_winSinceS = now;
+        if (calm || now - *m_winSinceS >= kWinGraceS - 1e-9)
+        {
+            m_score.unusedBirds = birdsRemaining();
+            m_score.unusedBirdBonus = birdsRemaining() * m_catalog.pointsPerUnusedBird();
+            endTurn(Phase::Won);
+        }
         return;
     }
     if (m_phase != Phase::Flying)
         return;
-    const bool timeUp = m_world->time() - m_shotStartTime >= kShotTimeCapS;
-    const bool birdsGone = m_world->bird() == nullptr && m_world->projectilesInPlay() == 0;
-    if (!(birdsGone && m_world->isSettled()) && !timeUp)
-        return;
-    m_world->removeAllBirds();
-    // A sandbox scene without pigs is never won: it is played until its birds are used up.
-    if (m_world->pigsAlive() == 0 && !m_level.pigs.empty())
+    const std::optional<double>& contact = m_shots.back().contactTimeS;
+    if (!contact && !m_world->birdsInPlay() && !m_birdsGoneAtS)
+        m_birdsGoneAtS = now; // the shot touched nothing and its birds are gone
+    const bool timeUp = now - m_shotStartTime >= kShotTimeCapS - 1e-9;
+    if (birdsRemaining() == 0)
     {
-        m_score.unusedBirds = birdsRemaining();
-        m_score.unusedBirdBonus = birdsRemaining() * m_catalog.pointsPerUnusedBird();
-        m_phase = Phase::Won;
+        // The last bird: a falling structure may still take a pig, so the level is lost only once all is calm.
+        if (calm || timeUp)
+            endTurn(Phase::Lost);
+        return;
     }
-    else if (birdsRemaining() == 0)
-        m_phase = Phase::Lost;
-    else
-        m_phase = Phase::Aiming;
+    const bool soonAfterContact = contact && now - *contact >= kReadyAfterContactS - 1e-9;
+    const bool soonAfterGone = m_birdsGoneAtS && now - *m_birdsGoneAtS >= kReadyAfterBirdsGoneS - 1e-9;
+    if (calm || soonAfterContact || soonAfterGone || timeUp)
+        endTurn(Phase::Aiming);
+}
+
+void GameSession::endTurn(Phase next)
+{
+    if (m_phase == Phase::Flying && !m_shots.empty())
+    {
+        ShotRecord& shot = m_shots.back();
+        if (!shot.contactTimeS)
+            shot.contactTimeS = m_world->shotContactTime();
+        if (shot.contactTimeS)
+            shot.readyAfterContactS = m_world->time() - *shot.contactTimeS;
+    }
+    // The shot's birds leave with a puff; what they set moving goes on moving.
+    m_world->retireAllBirds();
+    collectEvents();
+    m_phase = next;
+}
+
+std::vector<DestroyedEvent> GameSession::defeats() const
+{
+    std::vector<DestroyedEvent> defeats;
+    for (const DestroyedEvent& event : m_destroyed)
+        if (event.kind == EntityKind::Block || event.kind == EntityKind::Pig)
+            defeats.push_back(event);
+    return defeats;
 }
 
 int GameSession::stars() const
@@ -292,7 +338,7 @@ std::unique_ptr<GameSession> simulateShots(const LevelDef& level, const std::vec
     double abilityAtS = -1.0; // < 0: no ability pending
     const auto playOut = [&]
     {
-        while (session->phase() == Phase::Flying)
+        while (session->phase() == Phase::Flying || session->winPending())
         {
             // The ability fires at the first step boundary at or after its time (a bird that cannot use it by then
             // -- it already touched something -- simply flies on).

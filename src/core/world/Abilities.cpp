@@ -81,32 +81,9 @@ void GameWorld::boost(AbilityUse& use)
 
 void GameWorld::explode(AbilityUse& use)
 {
-    // Radial impulse J (1 - d / R) on every block and pig whose centre is within R, absorbed as damage too: a
-    // block's strength is the impulse it can take, whether it comes through a contact or through the blast.
     const AbilityParams& params = m_catalog.abilities();
-    const b2Vec2 centre(static_cast<float>(use.x), static_cast<float>(use.y));
-    std::vector<std::pair<int, double>> hits;
-    for (std::size_t i = 0; i < m_entities.size(); ++i)
-    {
-        Entity& e = m_entities[i];
-        if (!e.alive || e.body == nullptr || (e.kind != EntityKind::Block && e.kind != EntityKind::Pig))
-            continue;
-        const b2Vec2 offset = e.body->GetWorldCenter() - centre;
-        const double d = offset.Length();
-        if (d >= params.explodeRadiusM)
-            continue;
-        const double magnitude = params.explodeImpulseNs * (1.0 - d / params.explodeRadiusM);
-        const double ux = d > 1e-6 ? offset.x / d : 0.0;
-        const double uy = d > 1e-6 ? offset.y / d : 1.0;
-        const b2Vec2 impulse(static_cast<float>(magnitude * ux), static_cast<float>(magnitude * uy));
-        e.body->ApplyLinearImpulseToCenter(impulse, true);
-        const b2Vec2 at = e.body->GetWorldCenter();
-        use.impulses.push_back(
-            {use.tS, at.x, at.y, impulse.x, impulse.y, e.kind == EntityKind::Block ? "block" : "pig"});
-        hits.emplace_back(static_cast<int>(i), magnitude);
-    }
-    for (const auto& [index, magnitude] : hits)
-        damageEntity(index, magnitude);
+    blast(use.x, use.y, params.explodeRadiusM, params.explodeImpulseNs, &use.impulses, use.tS);
+    explodeCrates();
     use.changedFlight = use.beforeContact;
     removeBird(); // the bird is gone with the blast
 }

@@ -14,9 +14,11 @@ namespace abalike
 namespace
 {
 
-/// A bird slower than this for kBirdRestS (after its first contact) is taken off the field.
-constexpr double kBirdRestSpeedMps = 0.3;
-constexpr double kBirdRestS = 1.0;
+/// A bird that has touched something leaves the world with a puff once it is slower than kBirdRestSpeedMps for
+/// kBirdRestS (it rests or barely rolls), or kBirdGroundS after it first touched the ground or terrain.
+constexpr double kBirdRestSpeedMps = 0.5;
+constexpr double kBirdRestS = 0.2;
+constexpr double kBirdGroundS = 2.0;
 /// Longest a bird, a split bird or an egg stays in play after it was launched.
 constexpr double kBirdLifetimeS = 12.0;
 /// Birds never collide with each other: the three birds of a split start at the same point, an egg inside its
@@ -97,6 +99,9 @@ int GameWorld::launchBird(const BirdType& bird, const FlightModel& model, const 
     m_birdModel = std::make_unique<FlightIntegrator>(model, flightSettings);
     m_birdLaunchTime = m_time;
     m_birdSlowSinceS = -1.0;
+    m_birdGroundSinceS = -1.0;
+    m_birdTouched = false;
+    m_shotContactTimeS.reset();
     m_abilityUsed = false;
     m_birdContact.reset();
     m_birdContactKind.reset();
@@ -267,6 +272,32 @@ void GameWorld::finishBirdStep(const std::array<double, 2>& stepStart)
 
 void GameWorld::retireBirds()
 {
+    // What the birds began to touch in this step: the shot's first contact, and when each first met the ground.
+    for (const auto& [birdIndex, other] : m_contacts->birdTouches())
+    {
+        const bool ground = other >= 0 && (m_entities[static_cast<std::size_t>(other)].kind == EntityKind::Ground ||
+                                           m_entities[static_cast<std::size_t>(other)].kind == EntityKind::Terrain);
+        if (birdIndex == m_birdIndex)
+        {
+            m_birdTouched = true;
+            if (ground && m_birdGroundSinceS < 0.0)
+                m_birdGroundSinceS = m_time;
+            if (!m_shotContactTimeS)
+                m_shotContactTimeS = m_birdContact ? m_birdLaunchTime + m_birdContact->t : m_time;
+            continue;
+        }
+        for (Projectile& projectile : m_projectiles)
+            if (projectile.index == birdIndex)
+            {
+                projectile.touched = true;
+                if (ground && projectile.groundSinceS < 0.0)
+                    projectile.groundSinceS = m_time;
+                // The split birds are the shot's birds too; an egg is not.
+                if (!m_shotContactTimeS && m_entities[static_cast<std::size_t>(birdIndex)].typeName != "egg")
+                    m_shotContactTimeS = m_time;
+            }
+    }
+
     const auto slowFor = [this](const b2Body* body, double& slowSinceS, bool mayRest)
     {
         const bool slow = mayRest && body->GetLinearVelocity().Length() < kBirdRestSpeedMps;
@@ -276,21 +307,55 @@ void GameWorld::retireBirds()
             slowSinceS = m_time;
         return slow ? m_time - slowSinceS : 0.0;
     };
+    const auto done = [this](double rested, double groundSinceS, double launchedS)
+    {
+        return rested >= kBirdRestS - 1e-9 || (groundSinceS >= 0.0 && m_time - groundSinceS >= kBirdGroundS - 1e-9) ||
+               m_time - launchedS >= kBirdLifetimeS - 1e-9;
+    };
     if (m_birdIndex >= 0)
     {
         const b2Body* body = m_entities[static_cast<std::size_t>(m_birdIndex)].body;
-        const double rested = slowFor(body, m_birdSlowSinceS, !birdInFreeFlight());
-        if (rested >= kBirdRestS - 1e-9 || m_time - m_birdLaunchTime >= kBirdLifetimeS - 1e-9)
+        const double rested = slowFor(body, m_birdSlowSinceS, m_birdTouched && !birdInFreeFlight());
+        if (done(rested, m_birdGroundSinceS, m_birdLaunchTime))
+        {
+            puff(m_birdIndex);
             removeBird();
+        }
     }
     for (std::size_t slot = m_projectiles.size(); slot-- > 0;)
     {
         Projectile& projectile = m_projectiles[slot];
         const b2Body* body = m_entities[static_cast<std::size_t>(projectile.index)].body;
-        const double rested = slowFor(body, projectile.slowSinceS, true);
-        if (rested >= kBirdRestS - 1e-9 || m_time - projectile.launchTimeS >= kBirdLifetimeS - 1e-9)
+        const double rested = slowFor(body, projectile.slowSinceS, projectile.touched);
+        if (done(rested, projectile.groundSinceS, projectile.launchTimeS))
+        {
+            puff(projectile.index);
             removeProjectile(slot);
+        }
     }
+}
+
+void GameWorld::puff(int index)
+{
+    const Entity& e = m_entities[static_cast<std::size_t>(index)];
+    if (e.body == nullptr)
+        return;
+    DestroyedEvent event;
+    event.kind = EntityKind::Bird;
+    event.typeName = e.typeName;
+    event.x = e.body->GetPosition().x;
+    event.y = e.body->GetPosition().y;
+    event.timeS = m_time;
+    m_destroyed.push_back(event);
+}
+
+void GameWorld::retireAllBirds()
+{
+    if (m_birdIndex >= 0)
+        puff(m_birdIndex);
+    for (const Projectile& projectile : m_projectiles)
+        puff(projectile.index);
+    removeAllBirds();
 }
 
 } // namespace abalike

@@ -73,6 +73,11 @@ Catalog Catalog::fromJson(std::string_view text)
             if (std::abs(material.bulkDensityKgPerM3 * catalog.m_slabDepthM - material.densityKgPerM2) >
                 1e-9 * material.densityKgPerM2)
                 throw std::runtime_error(where + ": density_kg_per_m2 must be bulk_density_kg_per_m3 x slab_depth_m");
+            if (m.contains("blast"))
+            {
+                material.blastRadiusM = positive(m.at("blast"), "radius_m", where + " blast");
+                material.blastImpulseNs = positive(m.at("blast"), "impulse_ns", where + " blast");
+            }
             catalog.m_materials.push_back(std::move(material));
         }
         for (const json& b : root.at("birds"))

@@ -115,12 +115,26 @@ std::string catalogMarkdown(const Catalog& catalog)
     const ScoringRules& s = catalog.scoring();
     md << "\n## Damage and scoring\n\n"
        << "- Damage: the normal impulses Box2D reports (PostSolve) of contacts closing faster than "
-       << fixed(catalog.damageSpeedThresholdMps(), 1) << " m/s;\n  resting contact never hurts.\n"
-       << "- Points per destroyed block by material (above) and per pig by type.\n"
+       << fixed(catalog.damageSpeedThresholdMps(), 1)
+       << " m/s;\n  resting contact never hurts. Every body hurts what it "
+          "hits by this rule: birds, falling blocks, pigs and the ground.\n"
+       << "- Break-through: a block or pig whose remaining strength H is reached by the impulse J of a step breaks "
+          "and\n"
+          "  absorbs only H; whatever struck it gets the rest, J - H, back along the contact normal (a block that "
+          "fails\n"
+          "  cannot also stop the bird).\n";
+    for (const Material& m : catalog.materials())
+        if (m.blastRadiusM > 0.0)
+            md << "- " << m.name
+               << " explodes when it breaks: radial impulse J (1 - d/R), R = " << fixed(m.blastRadiusM, 1)
+               << " m, J = " << fixed(m.blastImpulseNs, 0)
+               << " N s, on every block and pig within R, absorbed as damage too; a crate it breaks explodes in "
+                  "turn.\n";
+    md << "- Points per destroyed block by material (above) and per pig by type.\n"
        << "- Efficiency: " << s.pointsPerUnusedBird << " per bird left when the level is won, and "
        << s.efficiencyPointsPerExtraPig << " per pig beyond the first\n  that one shot defeats.\n"
        << "- Accuracy: a shot whose first contact is a block or a pig, on the flight the preview predicted (no "
-          "ability\n  fired before contact), earns "
+          "ability\n  fired before contact, launched into a calm world), earns "
        << s.accuracyPointsPerShot << " x max(0, 1 - deviation / " << fixed(s.accuracyToleranceM, 2) << " m).\n";
     return md.str();
 }

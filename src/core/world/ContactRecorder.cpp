@@ -7,10 +7,14 @@ namespace abalike
 
 void GameWorld::ContactRecorder::BeginContact(b2Contact* contact)
 {
-    if (m_bird == nullptr || m_birdTouch)
-        return;
     b2Body* a = contact->GetFixtureA()->GetBody();
     b2Body* b = contact->GetFixtureB()->GetBody();
+    if (a->IsBullet())
+        m_birdTouches.emplace_back(entityIndexOf(a), entityIndexOf(b));
+    if (b->IsBullet())
+        m_birdTouches.emplace_back(entityIndexOf(b), entityIndexOf(a));
+    if (m_bird == nullptr || m_birdTouch)
+        return;
     // During a time-of-impact sub-step Box2D has already moved the bird to the moment of impact.
     if (a == m_bird || b == m_bird)
     {
@@ -68,12 +72,22 @@ void GameWorld::ContactRecorder::PostSolve(b2Contact* contact, const b2ContactIm
     double total = 0.0;
     for (int i = 0; i < impulse->count; ++i)
         total += impulse->normalImpulses[i];
-    for (b2Body* body : {contact->GetFixtureA()->GetBody(), contact->GetFixtureB()->GetBody()})
-    {
-        const int index = entityIndexOf(body);
+    if (!(total > 0.0))
+        return;
+    Hit hit;
+    hit.a = entityIndexOf(contact->GetFixtureA()->GetBody());
+    hit.b = entityIndexOf(contact->GetFixtureB()->GetBody());
+    hit.impulseNs = total;
+    b2WorldManifold manifold;
+    contact->GetWorldManifold(&manifold);
+    hit.normal = manifold.normal;
+    const int points = std::max(1, contact->GetManifold()->pointCount);
+    for (int i = 0; i < points; ++i)
+        hit.point += (1.0f / static_cast<float>(points)) * manifold.points[i];
+    for (const int index : {hit.a, hit.b})
         if (index >= 0)
             m_impulses[index] += total;
-    }
+    m_hits.push_back(hit);
 }
 
 } // namespace abalike

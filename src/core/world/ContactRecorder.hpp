@@ -40,12 +40,31 @@ public:
     /// Unit normal of that first contact, pointing from the bird into what it touched.
     const b2Vec2& birdTouchNormal() const { return m_birdTouchNormal; }
 
+    /// One impact of the last step between two entities: a contact closing faster than the damage threshold, in
+    /// one Box2D sub-step. The normal points from a into b: b was pushed along it, a against it.
+    struct Hit
+    {
+        int a = -1; ///< entity index (-1: not an entity)
+        int b = -1;
+        double impulseNs = 0.0;
+        b2Vec2 normal{0.0f, 0.0f};
+        b2Vec2 point{0.0f, 0.0f};
+    };
+
+    /// Touches that began during the last step between a bird (any bullet body: the launched bird, split birds,
+    /// eggs) and an entity: (bird index, other index).
+    const std::vector<std::pair<int, int>>& birdTouches() const { return m_birdTouches; }
+
     /// Impact impulses (N s) per entity index during the last step.
     const std::unordered_map<int, double>& impulses() const { return m_impulses; }
+    /// Every impact of the last step, in the order Box2D solved them (deterministic).
+    const std::vector<Hit>& hits() const { return m_hits; }
     void clearStep()
     {
         m_impulses.clear();
         m_closingSpeed.clear();
+        m_hits.clear();
+        m_birdTouches.clear();
     }
 
     void BeginContact(b2Contact* contact) override;
@@ -61,6 +80,8 @@ private:
     b2Vec2 m_birdTouchNormal{0.0f, 0.0f};
     std::unordered_map<const b2Contact*, float> m_closingSpeed; ///< only contacts closing above the threshold
     std::unordered_map<int, double> m_impulses;
+    std::vector<Hit> m_hits;
+    std::vector<std::pair<int, int>> m_birdTouches;
 };
 
 } // namespace abalike

@@ -2,6 +2,7 @@
 
 #include <abalike/world/FirstImpact.hpp>
 #include <abalike/world/GameWorld.hpp>
+#include <algorithm>
 
 namespace abalike
 {
@@ -65,6 +66,25 @@ std::optional<double> FirstImpact::restitution() const
     return std::max(0.0, -closing(birdAfter, bodyAfter) / before);
 }
 
+void GameWorld::finishImpactStep()
+{
+    if (m_impactEntity < 0 || !m_birdImpact)
+        return;
+    const Entity& other = m_entities[static_cast<std::size_t>(m_impactEntity)];
+    m_impactEntity = -1;
+    m_birdImpact->broke = !other.alive;
+    if (m_birdImpact->broke)
+    {
+        // It absorbed only its remaining strength; the impulse given back to the bird is momentum the broken body
+        // did not receive (GameWorld::refundBreakingContacts).
+        m_birdImpact->damageNs = std::min(m_birdImpact->damageNs, m_birdImpact->strengthBeforeNs);
+        m_birdImpact->bodyAfter.vx -= m_impactRefund[0] / m_birdImpact->bodyMassKg;
+        m_birdImpact->bodyAfter.vy -= m_impactRefund[1] / m_birdImpact->bodyMassKg;
+    }
+    if (m_birdIndex >= 0)
+        m_birdImpact->birdAfter = velocityOf(*m_entities[static_cast<std::size_t>(m_birdIndex)].body);
+}
+
 void GameWorld::snapshotImpactVelocities()
 {
     // Only while the bird flies free and has touched nothing: then the next contact may be its first impact, and
@@ -108,7 +128,9 @@ void GameWorld::recordFirstImpact(int otherIndex, double tS)
     impact.point = {touch.x + radius * impact.normal[0], touch.y + radius * impact.normal[1]};
     const auto damage = m_contacts->impulses().find(otherIndex);
     impact.damageNs = damage == m_contacts->impulses().end() ? 0.0 : damage->second;
+    impact.strengthBeforeNs = other.health;
     m_birdImpact = impact;
+    m_impactEntity = otherIndex; // finishImpactStep completes the record once damage is applied
 }
 
 } // namespace abalike

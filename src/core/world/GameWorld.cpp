@@ -154,27 +154,33 @@ void GameWorld::step()
     if (m_birdIndex >= 0)
         finishBirdStep(birdStart);
     applyDamage();
+    finishImpactStep();
     removeOutOfBounds();
     retireBirds();
+    updateCalm();
 }
 
-void GameWorld::damageEntity(int index, double impulseNs)
+void GameWorld::updateCalm()
 {
-    Entity& entity = m_entities[static_cast<std::size_t>(index)];
-    if (!entity.alive || (entity.kind != EntityKind::Block && entity.kind != EntityKind::Pig))
-        return;
-    entity.health -= impulseNs;
-    if (entity.health <= 0.0)
-        destroyEntity(index, true);
+    for (const Entity& e : m_entities)
+    {
+        if (!e.alive || e.body == nullptr || e.body->GetType() != b2_dynamicBody || e.kind == EntityKind::Bird ||
+            !e.body->IsAwake())
+            continue;
+        if (e.body->GetLinearVelocity().Length() > kCalmSpeedMps ||
+            std::abs(e.body->GetAngularVelocity()) > kCalmSpinRadPerS)
+        {
+            m_calmSinceS = -1.0;
+            return;
+        }
+    }
+    if (m_calmSinceS < 0.0)
+        m_calmSinceS = m_time;
 }
 
-void GameWorld::applyDamage()
+bool GameWorld::isCalm() const
 {
-    // Process in index order so results never depend on hash-map iteration order.
-    std::vector<std::pair<int, double>> hits(m_contacts->impulses().begin(), m_contacts->impulses().end());
-    std::sort(hits.begin(), hits.end());
-    for (const auto& [index, impulse] : hits)
-        damageEntity(index, impulse);
+    return m_calmSinceS >= 0.0 && (m_calmSinceS == 0.0 || m_time - m_calmSinceS >= kCalmHoldS - 1e-9);
 }
 
 void GameWorld::removeOutOfBounds()
@@ -200,11 +206,12 @@ void GameWorld::removeOutOfBounds()
                 }
         }
         else
-            destroyEntity(static_cast<int>(i), e.kind == EntityKind::Pig); // a pig off the world is defeated
+            // A pig off the world is defeated; a block off it is gone but not broken.
+            destroyEntity(static_cast<int>(i), e.kind == EntityKind::Pig, {CauseKind::OutOfBounds, -1});
     }
 }
 
-void GameWorld::destroyEntity(int index, bool scored)
+void GameWorld::destroyEntity(int index, bool scored, const DefeatCause& cause)
 {
     Entity& e = m_entities[static_cast<std::size_t>(index)];
     if (!e.alive)
@@ -212,6 +219,9 @@ void GameWorld::destroyEntity(int index, bool scored)
     DestroyedEvent event;
     event.kind = e.kind;
     event.typeName = e.typeName;
+    event.index = e.defIndex;
+    event.timeS = m_time;
+    event.cause = cause;
     if (e.body != nullptr)
     {
         event.x = e.body->GetPosition().x;

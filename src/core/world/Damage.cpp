@@ -1,0 +1,228 @@
+#include "world/ContactRecorder.hpp"
+
+#include <abalike/world/GameWorld.hpp>
+#include <algorithm>
+#include <cmath>
+
+namespace abalike
+{
+
+const char* entityKindName(EntityKind kind)
+{
+    switch (kind)
+    {
+    case EntityKind::Ground:
+        return "ground";
+    case EntityKind::Terrain:
+        return "terrain";
+    case EntityKind::Block:
+        return "block";
+    case EntityKind::Pig:
+        return "pig";
+    case EntityKind::Bird:
+        return "bird";
+    }
+    return "unknown";
+}
+
+const char* causeKindName(CauseKind kind)
+{
+    switch (kind)
+    {
+    case CauseKind::Bird:
+        return "bird";
+    case CauseKind::Block:
+        return "block";
+    case CauseKind::Pig:
+        return "pig";
+    case CauseKind::Explosion:
+        return "explosion";
+    case CauseKind::Egg:
+        return "egg";
+    case CauseKind::Ground:
+        return "ground";
+    case CauseKind::OutOfBounds:
+        return "out_of_bounds";
+    }
+    return "ground";
+}
+
+namespace
+{
+bool damageable(const Entity& e)
+{
+    return e.alive && (e.kind == EntityKind::Block || e.kind == EntityKind::Pig);
+}
+} // namespace
+
+void GameWorld::applyDamage()
+{
+    // Process in index order so results never depend on hash-map iteration order.
+    std::vector<std::pair<int, double>> totals(m_contacts->impulses().begin(), m_contacts->impulses().end());
+    std::sort(totals.begin(), totals.end());
+    // A body breaks when the step's impacts reach its remaining strength H; of their total J it absorbs only H,
+    // the share H / J of each contact impulse (keptShare; 1 for bodies that hold).
+    std::vector<double> keptShare(m_entities.size(), 1.0);
+    bool anyBreaks = false;
+    m_impactRefund = {0.0, 0.0};
+    for (const auto& [index, impulse] : totals)
+    {
+        const Entity& e = m_entities[static_cast<std::size_t>(index)];
+        if (damageable(e) && impulse >= e.health && impulse > 0.0)
+        {
+            keptShare[static_cast<std::size_t>(index)] = e.health / impulse;
+            anyBreaks = true;
+        }
+    }
+    if (anyBreaks && m_settings.breakThrough)
+        refundBreakingContacts(keptShare);
+    for (const auto& [index, impulse] : totals)
+        if (damageable(m_entities[static_cast<std::size_t>(index)]))
+            damageEntity(index, impulse, causeOf(index));
+    explodeCrates();
+}
+
+void GameWorld::refundBreakingContacts(const std::vector<double>& keptShare)
+{
+    // The solver stopped the striker as if the struck body were unbreakable. A brittle body cannot push back more
+    // than its strength: give each surviving partner the rest of the impulse back along the normal, at the contact
+    // point. In bookkeeping terms the broken body carried that impulse away with it (the first impact's record).
+    for (const ContactRecorder::Hit& hit : m_contacts->hits())
+    {
+        for (const bool brokenIsA : {true, false})
+        {
+            const int broken = brokenIsA ? hit.a : hit.b;
+            const int partner = brokenIsA ? hit.b : hit.a;
+            if (broken < 0 || partner < 0 || keptShare[static_cast<std::size_t>(broken)] >= 1.0 ||
+                keptShare[static_cast<std::size_t>(partner)] < 1.0)
+                continue; // nothing broke, or both did: neither survives to be refunded
+            b2Body* body = m_entities[static_cast<std::size_t>(partner)].body;
+            if (body == nullptr || body->GetType() != b2_dynamicBody)
+                continue;
+            const double refund = (1.0 - keptShare[static_cast<std::size_t>(broken)]) * hit.impulseNs;
+            // b was pushed along the normal and a against it: the refund restores what the partner lost.
+            const float sign = brokenIsA ? -1.0f : 1.0f;
+            const b2Vec2 impulse = (sign * static_cast<float>(refund)) * hit.normal;
+            body->ApplyLinearImpulse(impulse, hit.point, true);
+            if (broken == m_impactEntity)
+                m_impactRefund = {m_impactRefund[0] + impulse.x, m_impactRefund[1] + impulse.y};
+        }
+    }
+}
+
+DefeatCause GameWorld::causeOf(int index) const
+{
+    // The partner that delivered the most impulse to this body in the step, summed over its sub-steps.
+    std::vector<std::pair<int, double>> byPartner;
+    for (const ContactRecorder::Hit& hit : m_contacts->hits())
+    {
+        if (hit.a != index && hit.b != index)
+            continue;
+        const int partner = hit.a == index ? hit.b : hit.a;
+        const auto it =
+            std::find_if(byPartner.begin(), byPartner.end(), [partner](const auto& p) { return p.first == partner; });
+        if (it == byPartner.end())
+            byPartner.emplace_back(partner, hit.impulseNs);
+        else
+            it->second += hit.impulseNs;
+    }
+    int strongest = -1;
+    double most = -1.0;
+    for (const auto& [partner, impulse] : byPartner)
+        if (impulse > most)
+        {
+            most = impulse;
+            strongest = partner;
+        }
+    if (strongest < 0)
+        return {CauseKind::Ground, -1};
+    const Entity& e = m_entities[static_cast<std::size_t>(strongest)];
+    switch (e.kind)
+    {
+    case EntityKind::Block:
+        return {CauseKind::Block, e.defIndex};
+    case EntityKind::Pig:
+        return {CauseKind::Pig, e.defIndex};
+    case EntityKind::Bird:
+        return {e.typeName == "egg" ? CauseKind::Egg : CauseKind::Bird, -1};
+    case EntityKind::Ground:
+    case EntityKind::Terrain:
+        break;
+    }
+    return {CauseKind::Ground, -1};
+}
+
+void GameWorld::damageEntity(int index, double impulseNs, const DefeatCause& cause)
+{
+    Entity& entity = m_entities[static_cast<std::size_t>(index)];
+    if (!damageable(entity))
+        return;
+    entity.health -= impulseNs;
+    if (entity.health > 0.0)
+        return;
+    if (entity.kind == EntityKind::Block)
+        if (const Material* material = m_catalog.findMaterial(entity.typeName); material && material->blastRadiusM > 0)
+            m_cratesToExplode.push_back(index);
+    destroyEntity(index, true, cause);
+}
+
+void GameWorld::blast(double x, double y, double radiusM, double impulseNs, std::vector<AbilityImpulse>* impulses,
+                      double tS)
+{
+    // Every block and pig whose centre is within R gets a radial impulse J (1 - d / R) and absorbs the same impulse
+    // as damage: a block's strength is the impulse it can take, whether it comes through a contact or a blast.
+    const b2Vec2 centre(static_cast<float>(x), static_cast<float>(y));
+    std::vector<std::pair<int, double>> hits;
+    for (std::size_t i = 0; i < m_entities.size(); ++i)
+    {
+        Entity& e = m_entities[i];
+        if (!damageable(e) || e.body == nullptr)
+            continue;
+        const b2Vec2 offset = e.body->GetWorldCenter() - centre;
+        const double d = offset.Length();
+        if (d >= radiusM)
+            continue;
+        const double magnitude = impulseNs * (1.0 - d / radiusM);
+        const double ux = d > 1e-6 ? offset.x / d : 0.0;
+        const double uy = d > 1e-6 ? offset.y / d : 1.0;
+        const b2Vec2 impulse(static_cast<float>(magnitude * ux), static_cast<float>(magnitude * uy));
+        e.body->ApplyLinearImpulseToCenter(impulse, true);
+        if (impulses != nullptr)
+        {
+            const b2Vec2 at = e.body->GetWorldCenter();
+            impulses->push_back({tS, at.x, at.y, impulse.x, impulse.y, e.kind == EntityKind::Block ? "block" : "pig"});
+        }
+        hits.emplace_back(static_cast<int>(i), magnitude);
+    }
+    for (const auto& [index, magnitude] : hits)
+        damageEntity(index, magnitude, {CauseKind::Explosion, -1});
+}
+
+void GameWorld::explodeCrates()
+{
+    // A crate that broke blasts where it was; a crate its blast breaks joins the queue: chains run in this step, in
+    // the order the crates broke.
+    for (std::size_t next = 0; next < m_cratesToExplode.size(); ++next)
+    {
+        const int index = m_cratesToExplode[next];
+        const Entity& crate = m_entities[static_cast<std::size_t>(index)];
+        const Material* material = m_catalog.findMaterial(crate.typeName);
+        const auto event = std::find_if(m_destroyed.rbegin(), m_destroyed.rend(),
+                                        [&](const DestroyedEvent& d)
+                                        { return d.kind == EntityKind::Block && d.index == crate.defIndex; });
+        if (material == nullptr || event == m_destroyed.rend())
+            continue;
+        m_blasts.push_back({m_time, event->x, event->y, material->blastRadiusM, crate.defIndex});
+        blast(event->x, event->y, material->blastRadiusM, material->blastImpulseNs, nullptr, 0.0);
+    }
+    m_cratesToExplode.clear();
+}
+
+std::vector<BlastEvent> GameWorld::takeBlastEvents()
+{
+    std::vector<BlastEvent> events;
+    events.swap(m_blasts);
+    return events;
+}
+
+} // namespace abalike
