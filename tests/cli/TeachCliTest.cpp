@@ -170,7 +170,7 @@ TEST(SimulateTeachCli, EnergyAndImpactPerShot)
         keys.push_back(item.key());
     EXPECT_EQ(keys, (std::vector<std::string>{"t", "body", "bird_before", "bird_after", "body_before", "body_after",
                                               "body_mass_kg", "momentum_before", "momentum_after", "kinetic_before_j",
-                                              "kinetic_after_j", "damage_ns"}));
+                                              "kinetic_after_j", "damage_ns", "strength_before_ns", "broke"}));
     EXPECT_EQ(impact["body"]["kind"], "block");
     EXPECT_TRUE(impact["body"]["index"].is_number_integer());
     EXPECT_EQ(impact["bird_before"].size(), 2u);

@@ -72,6 +72,8 @@ Json impactJson(const std::optional<FirstImpact>& impact)
     out["kinetic_before_j"] = impact->kineticBeforeJ();
     out["kinetic_after_j"] = impact->kineticAfterJ();
     out["damage_ns"] = impact->damageNs;
+    out["strength_before_ns"] = impact->strengthBeforeNs;
+    out["broke"] = impact->broke;
     return out;
 }
 

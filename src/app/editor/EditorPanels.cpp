@@ -42,6 +42,8 @@ void heading(const char* text)
 
 std::string capitalised(std::string text)
 {
+    if (text == "tnt")
+        return "TNT"; // an acronym, as printed on the crate
     if (!text.empty() && text[0] >= 'a' && text[0] <= 'z')
         text[0] = static_cast<char>(text[0] - 'a' + 'A');
     return text;

@@ -28,6 +28,8 @@ std::string hitName(const FirstImpact& impact)
 {
     if (impact.bodyKind == EntityKind::Pig)
         return "the " + impact.bodyType + " pig";
+    if (impact.bodyType == "tnt")
+        return "a TNT crate";
     const bool vowel = !impact.bodyType.empty() && std::string("aeiou").find(impact.bodyType[0]) != std::string::npos;
     return (vowel ? "an " : "a ") + impact.bodyType + " block";
 }
@@ -44,7 +46,11 @@ std::string momentumSentence(const FirstImpact& impact)
     // Bouncing back hands over more than the bird had: it must also cancel its own momentum.
     if (passed > carried * 1.02)
         text += " (more than it carried: it bounced back)";
-    if (impact.damageNs > 0.0)
+    if (impact.broke)
+        // Break-through: a body that fails absorbs only what strength it had left.
+        text += format(": that broke it (it could take only %.0f N\u00B7s more), so the bird flew on with the rest",
+                       impact.strengthBeforeNs);
+    else if (impact.damageNs > 0.0)
         text += format(", a %.0f N\u00B7s blow", impact.damageNs);
     return text + ".";
 }
