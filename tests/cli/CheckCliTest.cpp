@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 namespace abalike::test
@@ -135,7 +136,73 @@ TEST(CheckCli, AnUnstableLevelFailsTheRestTest)
     const RunResult r = runAbalike("check " + path.string());
     std::filesystem::remove(path);
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.out.find("does not stand after 10.0 s"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("does not stand"), std::string::npos) << r.out;
+    // Located, in words, with the fix: its lowest corner is at x = 10 - 0.15 cos 10 + 2.5 sin 10 = 10.286 m.
+    EXPECT_NE(
+        r.err.find(":3:18: error: /blocks/0: leans 10\u00B0 on one corner with its centre of mass 28.6 cm past it, "
+                   "so it tips over and breaks before any shot; set angle_deg = 0"),
+        std::string::npos)
+        << r.err;
+}
+
+TEST(CheckCli, HeavyOnLightThatStandsIsAWarningNotAFailure)
+{
+    const auto path =
+        std::filesystem::temp_directory_path() / ("abalike-check-ratio-" + std::to_string(::getpid()) + ".json");
+    // A 1 m stone cube (240 kg) on a 0.1 m ice plank (10 kg) on stone posts: 24:1, and it stands.
+    std::ofstream(path) << R"({"format": 1, "id": "ratio", "title": "Ratio", "slingshot": {"x": 0, "y": 1.5},
+      "birds": ["red"], "pigs": [{"type": "small", "x": 21, "y": 0.25}],
+      "blocks": [{"material": "stone", "x": 20, "y": 0.5, "w": 0.25, "h": 1},
+                 {"material": "stone", "x": 22, "y": 0.5, "w": 0.25, "h": 1},
+                 {"material": "ice", "x": 21, "y": 1.05, "w": 2.5, "h": 0.1},
+                 {"material": "stone", "x": 21, "y": 1.6, "w": 1, "h": 1}]})";
+    const RunResult r = runAbalike("check --json " + path.string());
+    std::filesystem::remove(path);
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    const auto doc = nlohmann::json::parse(r.out);
+    const auto& file = doc["files"][0];
+    EXPECT_TRUE(file["ok"].get<bool>());
+    ASSERT_EQ(file["warnings"].size(), 1u);
+    EXPECT_NE(file["warnings"][0].get<std::string>().find("mass ratio 24"), std::string::npos) << file["warnings"];
+}
+
+TEST(CheckCli, FixSnapsFloatingAndOverlappingBodiesAndKeepsTheFilesLayout)
+{
+    const auto path =
+        std::filesystem::temp_directory_path() / ("abalike-check-fix-" + std::to_string(::getpid()) + ".json");
+    const std::string before = R"({"format": 1, "id": "fix", "title": "Fix", "slingshot": {"x": 0, "y": 1.5},
+  "birds": ["red"],
+  "pigs": [{"type": "small", "x": 21,   "y": 0.26}],
+  "blocks": [
+    {"material": "wood", "x": 20, "y": 0.76,  "w": 0.25, "h": 1.5},
+    {"material": "wood", "x": 22, "y": 0.75,  "w": 0.25, "h": 1.5},
+    {"material": "wood", "x": 21, "y": 1.628, "w": 2.6,  "h": 0.25},
+    {"material": "stone", "x": 30, "y": 0.493, "w": 1,   "h": 1}
+  ]}
+)";
+    std::ofstream(path) << before;
+    const RunResult plain = runAbalike("check --json " + path.string());
+    EXPECT_EQ(plain.exitCode, 2);
+    const auto errors = nlohmann::json::parse(plain.out)["files"][0]["errors"];
+    ASSERT_GE(errors.size(), 3u);
+    EXPECT_EQ(errors[0]["pointer"], "/blocks/0");
+    EXPECT_EQ(errors[0]["line"], 5);
+    EXPECT_EQ(errors[0]["message"], "floats 1.0 cm above the ground; set y = 0.75");
+
+    const RunResult fixed = runAbalike("check --fix " + path.string());
+    std::ifstream in(path);
+    const std::string after{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    std::filesystem::remove(path);
+    EXPECT_EQ(fixed.exitCode, 0) << fixed.out << fixed.err;
+    EXPECT_NE(fixed.out.find("fixed "), std::string::npos);
+    EXPECT_NE(fixed.out.find("/blocks/2/y: 1.628 -> 1.625"), std::string::npos) << fixed.out;
+    std::string expected = before;
+    for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{{"\"y\": 0.26", "\"y\": 0.25"},
+                                                                                   {"\"y\": 0.76,", "\"y\": 0.75,"},
+                                                                                   {"\"y\": 1.628", "\"y\": 1.625"},
+                                                                                   {"\"y\": 0.493", "\"y\": 0.5"}})
+        expected.replace(expected.find(from), from.size(), to);
+    EXPECT_EQ(after, expected) << "only the four numbers change, every space and line stays";
 }
 
 } // namespace

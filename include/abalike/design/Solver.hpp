@@ -44,6 +44,11 @@ struct Solution
     ShotOutcome outcome;
     std::size_t simulations = 0; ///< shot sequences played
     double seconds = 0.0;        ///< wall time of the search
+    /// Pigs (indices in the level's pigs) that the best sequence leaves standing; empty when it wins.
+    std::vector<int> survivingPigs;
+    /// Pigs that break or take damage with no shot fired (the level does not stand, checkRest): a win would be the
+    /// level's own doing, so the solver does not search and the level counts as not won.
+    std::vector<int> pigsFallingAlone;
 };
 
 /// The outcome of a session, finished or not. On a level with a time limit a win counts only if play ended

@@ -5,10 +5,17 @@
 
 #include <abalike/design/Solver.hpp>
 #include <abalike/level/LevelIO.hpp>
+#include <abalike/level/LevelText.hpp>
 #include <abalike/level/SafeText.hpp>
+#include <abalike/save/AtomicWrite.hpp>
 #include <abalike/world/RestCheck.hpp>
+#include <abalike/world/RestFindings.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -28,6 +35,7 @@ struct CheckArgs
     std::vector<std::string> files;
     bool json = false;
     bool solve = false;
+    bool fix = false;
     int threads = 0;
 };
 
@@ -46,7 +54,9 @@ struct FileReport
     std::vector<LevelIssue> issues;
     std::optional<RestReport> rest;
     std::optional<Solution> solution;
-    std::vector<std::string> reasons; ///< why it fails, one short phrase each
+    std::vector<std::string> reasons;  ///< why it fails, one short phrase each
+    std::vector<std::string> warnings; ///< worth a look, but the level is fine
+    std::vector<std::string> fixes;    ///< what --fix changed in the file
 
     bool ok() const { return reasons.empty(); }
 };
@@ -98,6 +108,68 @@ std::vector<CheckItem> expand(const std::vector<std::string>& files, std::vector
     return items;
 }
 
+std::string readText(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string shortest(double value)
+{
+    std::ostringstream out;
+    out << std::setprecision(10) << std::round(value * 10000.0) / 10000.0;
+    return out.str();
+}
+
+/// check --fix: snaps floating and overlapping bodies (up to RestFinding::kMaxSnapM) onto what is under them and
+/// rewrites just those numbers in the file, round after round (a block resting on a snapped one may need the next).
+/// Returns what it changed, one line each.
+std::vector<std::string> fixRestFindings(const std::string& file, LevelDef& level)
+{
+    std::vector<std::string> changes;
+    for (int round = 0; round < 5; ++round)
+    {
+        const RestReport rest = checkRest(level);
+        if (rest.passed())
+            break;
+        std::string text = readText(file);
+        bool changed = false;
+        // Lowest first, each measured again on the level as fixed so far: a plank on a post that was lowered
+        // follows it in the same round.
+        std::vector<std::pair<double, std::string>> order;
+        for (const RestFinding& finding : restFindings(level, Catalog::builtin(), rest))
+        {
+            const bool pig = finding.pointer.rfind("/pigs/", 0) == 0;
+            const auto index = static_cast<std::size_t>(std::stoi(finding.pointer.substr(pig ? 6 : 8)));
+            order.emplace_back(pig ? level.pigs[index].y : level.blocks[index].y, finding.pointer);
+        }
+        std::sort(order.begin(), order.end());
+        for (const auto& [unused, pointer] : order)
+        {
+            const bool pig = pointer.rfind("/pigs/", 0) == 0;
+            const int index = std::stoi(pointer.substr(pig ? 6 : 8));
+            const SupportGap under = supportUnder(level, Catalog::builtin(), pig, index);
+            if (under.support.empty() || std::abs(under.gapM) <= 0.0005 ||
+                std::abs(under.gapM) > RestFinding::kMaxSnapM)
+                continue;
+            double& y =
+                pig ? level.pigs[static_cast<std::size_t>(index)].y : level.blocks[static_cast<std::size_t>(index)].y;
+            const std::string number = shortest(y - under.gapM);
+            text = replaceNumber(text, pointer + "/y", number);
+            changes.push_back(pointer + "/y: " + shortest(y) + " -> " + number + " (" +
+                              (under.gapM > 0 ? "floated " : "overlapped ") +
+                              std::to_string(std::lround(std::abs(under.gapM) * 1000.0)) + " mm " +
+                              (under.gapM > 0 ? "above " : "into ") + under.support + ")");
+            y -= under.gapM;
+            changed = true;
+        }
+        if (!changed)
+            break;
+        writeFileAtomically(file, text);
+    }
+    return changes;
+}
+
 FileReport checkFile(const CheckItem& item, const CheckArgs& a)
 {
     FileReport report;
@@ -124,14 +196,33 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
         report.reasons.push_back("the campaign lists it in episode \"" + item.episode + "\" but it says \"" +
                                  level.episode + "\"");
 
+    if (a.fix)
+        report.fixes = fixRestFindings(item.file, *report.level);
     report.rest = checkRest(level);
     if (!report.rest->passed())
-        report.reasons.push_back(report.rest->summary());
-    else if (report.rest->worstMassRatio.ratio > kMaxStackMassRatio)
-        report.reasons.push_back("stacks too heavy on light for Box2D (expected a mass ratio of at most 10, got " +
-                                 std::to_string(report.rest->worstMassRatio.ratio) + ": " +
-                                 report.rest->worstMassRatio.heavier + " on " + report.rest->worstMassRatio.lighter +
-                                 ")");
+    {
+        // Each body that moved or broke, located in the file, with the fix where one is clear.
+        const std::vector<LevelIssue> findings = restIssues(level, Catalog::builtin(), *report.rest, item.file);
+        std::string reason = report.rest->summary();
+        if (!findings.empty())
+            reason = "does not stand: " + std::to_string(findings.size()) + " bod" +
+                     (findings.size() == 1 ? "y" : "ies") + " moved or broke, first " + findings.front().pointer +
+                     " at " + std::to_string(findings.front().line) + ":" + std::to_string(findings.front().column) +
+                     ": " + findings.front().message;
+        report.reasons.push_back(reason);
+        report.issues.insert(report.issues.end(), findings.begin(), findings.end());
+    }
+    if (report.rest->worstMassRatio.ratio > kMaxStackMassRatio)
+    {
+        // Box2D's guidance, not a law: a structure that stands the rest check stands.
+        const std::string what = "stacks heavy on light (mass ratio " + shortest(report.rest->worstMassRatio.ratio) +
+                                 ", Box2D advises at most 10: " + report.rest->worstMassRatio.heavier + " on " +
+                                 report.rest->worstMassRatio.lighter + ")";
+        if (report.rest->passed())
+            report.warnings.push_back(what + "; it stands the rest check, but a hit may make it jitter");
+        else
+            report.reasons.push_back(what);
+    }
     if (a.solve && report.rest->passed() && !level.pigs.empty()) // a sandbox scene without pigs has nothing to win
     {
         SolverOptions options;
@@ -144,8 +235,15 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
         report.solution = solveLevel(level, Catalog::builtin(), options);
         bar.finish();
         if (!report.solution->outcome.won)
-            report.reasons.push_back("the solver found no win (best: " +
-                                     std::to_string(report.solution->outcome.pigsRemaining) + " pig(s) left)");
+        {
+            std::string left;
+            for (const int pig : report.solution->survivingPigs)
+                left += (left.empty() ? ": " : ", ") + std::string("pig ") + std::to_string(pig) + " (" +
+                        level.pigs[static_cast<std::size_t>(pig)].type + ")";
+            report.reasons.push_back(
+                "the solver found no win (best: " + std::to_string(report.solution->outcome.pigsRemaining) +
+                " pig(s) left" + left + ")");
+        }
         else if (report.solution->outcome.stars < 1)
             report.reasons.push_back("the solver's best win earns no star");
     }
@@ -178,6 +276,8 @@ std::string summaryLine(const FileReport& r)
         return line.str();
     }
     line << " (" << r.level->id << (r.level->sandbox ? ", sandbox scene" : "") << ", stands still";
+    for (const std::string& warning : r.warnings)
+        line << "; warning: " << warning;
     if (r.solution)
         line << "; solved: " << r.solution->outcome.score << " points, " << r.solution->outcome.stars << " star(s), "
              << r.solution->shots.size() << " shot(s)";
@@ -214,6 +314,8 @@ nlohmann::ordered_json reportJson(const FileReport& r)
         out["rest"] = nullptr;
     out["solve"] = r.solution ? solutionToJson(*r.level, *r.solution) : nlohmann::ordered_json(nullptr);
     out["reasons"] = r.reasons;
+    out["warnings"] = r.warnings;
+    out["fixes"] = r.fixes;
     return out;
 }
 
@@ -242,6 +344,8 @@ int runCheck(const CheckArgs& a)
     {
         for (const FileReport& r : reports)
         {
+            for (const std::string& change : r.fixes)
+                std::cout << escapeForTerminal("fixed " + r.file + ": " + change) << '\n';
             std::cout << escapeForTerminal(summaryLine(r)) << '\n';
             // Every problem in the FILE:LINE:COL form editors jump to, on stderr like a compiler's.
             for (const LevelIssue& issue : r.issues)
@@ -262,6 +366,9 @@ CommandRunner addCheckCommand(CLI::App& app)
     cmd->add_flag("--json", args->json, "print one JSON report");
     cmd->add_flag("--solve", args->solve, "also run the solver: each level must be won with at least one star");
     cmd->add_option("--threads", args->threads, "solver worker threads (default 0: every core)");
+    cmd->add_flag("--fix", args->fix,
+                  "snap bodies that float or overlap by up to 2 cm onto what is under them, rewriting just those "
+                  "numbers in the file, and print each change");
     return [args]
     {
         return runCheck(*args);

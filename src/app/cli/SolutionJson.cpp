@@ -28,6 +28,8 @@ nlohmann::ordered_json solutionToJson(const LevelDef& level, const Solution& sol
     out["shots"] = std::move(shots);
     out["pigs_remaining"] = solution.outcome.pigsRemaining;
     out["simulations"] = solution.simulations;
+    out["surviving_pigs"] = solution.survivingPigs;
+    out["pigs_falling_alone"] = solution.pigsFallingAlone;
     return out;
 }
 

@@ -70,8 +70,24 @@ int runSolve(const SolveArgs& a)
               << ", score " << solution.outcome.score << ", " << solution.outcome.stars << " star(s), "
               << solution.shots.size() << " shot(s), " << solution.simulations << " simulations in " << std::fixed
               << std::setprecision(1) << solution.seconds << " s\n";
+    if (!solution.pigsFallingAlone.empty())
+    {
+        std::cout << "  the level does not stand: pig(s)";
+        for (const int pig : solution.pigsFallingAlone)
+            std::cout << ' ' << pig;
+        std::cout << " fall or take damage before any shot, so nothing was searched (abalike check says why)\n";
+        return 0;
+    }
     std::cout << "  replay: abalike simulate " << escapeForTerminal(a.level) << ' ' << shotArguments(solution.shots)
               << '\n';
+    if (!solution.survivingPigs.empty())
+    {
+        std::cout << "  pigs left standing:";
+        for (const int pig : solution.survivingPigs)
+            std::cout << " pig " << pig << " (" << level.pigs[static_cast<std::size_t>(pig)].type
+                      << " at x = " << level.pigs[static_cast<std::size_t>(pig)].x << ")";
+        std::cout << '\n';
+    }
     if (difficulty)
         std::cout << "  random play: " << difficulty->wins << " of " << difficulty->samples << " random sequences won ("
                   << std::setprecision(1) << 100.0 * difficulty->winShare << "%), " << std::setprecision(0)

@@ -19,7 +19,7 @@ const sf::Color kNoticeTitle(255, 214, 200);
 } // namespace
 
 void ReloadNotice::draw(sf::RenderTarget& target, sf::Vector2u size, const std::vector<std::string>& lines,
-                        float textScale) const
+                        float textScale, const std::string& heading) const
 {
     if (m_font == nullptr || lines.empty())
         return;
@@ -39,9 +39,7 @@ void ReloadNotice::draw(sf::RenderTarget& target, sf::Vector2u size, const std::
     target.draw(box);
 
     float y = top + pad;
-    drawLabel(target, *m_font,
-              utf8("The level file has errors; still playing the last good version. Save a fix to reload."),
-              {2 * pad, y}, titleSize, kNoticeTitle);
+    drawLabel(target, *m_font, utf8(heading), {2 * pad, y}, titleSize, kNoticeTitle);
     y += m_font->getLineSpacing(titleSize);
     for (std::size_t i = 0; i < shown; ++i)
     {

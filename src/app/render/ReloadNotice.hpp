@@ -15,9 +15,15 @@ class ReloadNotice
 public:
     explicit ReloadNotice(const sf::Font* font) : m_font(font) {}
 
-    /// lines: one FILE:LINE:COL problem each.
+    /// lines: one FILE:LINE:COL problem each; heading: the sentence above them (the default: an edit that did not
+    /// load).
     void draw(sf::RenderTarget& target, sf::Vector2u size, const std::vector<std::string>& lines,
-              float textScale = 1.0f) const;
+              float textScale = 1.0f, const std::string& heading = kEditDidNotLoad) const;
+
+    static constexpr const char* kEditDidNotLoad =
+        "The level file has errors; still playing the last good version. Save a fix to reload.";
+    static constexpr const char* kDoesNotStand =
+        "This level does not stand as built: bodies move with no shot fired. Save a fix to reload.";
 
 private:
     const sf::Font* m_font;

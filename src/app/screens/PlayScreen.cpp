@@ -9,6 +9,7 @@
 #include "screens/ResultsScreen.hpp"
 
 #include <abalike/level/LevelIO.hpp>
+#include <abalike/world/RestFindings.hpp>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -48,6 +49,13 @@ void PlayScreen::startSession()
     m_frozen = false;
     resetAim();
     m_reloadErrors.clear();
+    m_restFindings.clear();
+    // A level file that does not stand plays, with what is wrong in the banner (cheap: 10 s of an untouched level
+    // simulate in milliseconds).
+    if (!m_source.path.empty())
+        for (const LevelIssue& issue :
+             restIssues(m_source.level, Catalog::builtin(), checkRest(m_source.level), m_source.path))
+            m_restFindings.push_back(issue.format());
     nlohmann::json event{{"id", m_source.level.id}, {"title", m_source.level.title}};
     if (m_source.campaignIndex)
         event["campaign_index"] = *m_source.campaignIndex;
@@ -351,7 +359,11 @@ void PlayScreen::onResize(sf::Vector2u size)
 void PlayScreen::draw(sf::RenderTarget& target)
 {
     drawPlay(target, *this, m_world, m_overlay, m_hud, m_aim.pullOffset(), m_aim.dragging(), m_layers);
-    m_reloadNotice.draw(target, target.getSize(), m_reloadErrors, static_cast<float>(m_app.settings().textScale));
+    if (!m_reloadErrors.empty())
+        m_reloadNotice.draw(target, target.getSize(), m_reloadErrors, static_cast<float>(m_app.settings().textScale));
+    else
+        m_reloadNotice.draw(target, target.getSize(), m_restFindings, static_cast<float>(m_app.settings().textScale),
+                            ReloadNotice::kDoesNotStand);
 }
 
 } // namespace abalike::app

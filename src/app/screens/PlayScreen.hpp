@@ -132,6 +132,7 @@ private:
     Hud m_hud;
     std::optional<LevelWatcher> m_watcher;
     std::vector<std::string> m_reloadErrors; ///< problems of the last edit that did not load
+    std::vector<std::string> m_restFindings; ///< bodies of the level file that move with no shot fired
     ReloadNotice m_reloadNotice;
     std::vector<std::unique_ptr<PlayLayer>> m_layers;
 };

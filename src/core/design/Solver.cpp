@@ -3,6 +3,7 @@
 #include <abalike/design/Solver.hpp>
 #include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelFlight.hpp>
+#include <abalike/world/RestCheck.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -274,7 +275,27 @@ Solution solveLevel(const LevelDef& level, const Catalog& catalog, const SolverO
 {
     if (level.birds.empty())
         return {};
-    return Search(level, catalog, options).run();
+    // A pig that falls before any shot is not the player's to win: do not count it.
+    Solution refused;
+    for (const BodyRest& body : checkRest(level, catalog).bodies)
+        if (body.kind == EntityKind::Pig && (body.destroyed || body.damaged))
+            refused.pigsFallingAlone.push_back(body.defIndex);
+    if (!refused.pigsFallingAlone.empty())
+    {
+        refused.outcome.pigsRemaining = static_cast<int>(level.pigs.size());
+        for (int i = 0; i < static_cast<int>(level.pigs.size()); ++i)
+            refused.survivingPigs.push_back(i);
+        return refused;
+    }
+    Solution solution = Search(level, catalog, options).run();
+    if (!solution.outcome.won)
+    {
+        const auto session = simulateShots(level, solution.shots, catalog);
+        for (const Entity& e : session->world().entities())
+            if (e.kind == EntityKind::Pig && e.alive)
+                solution.survivingPigs.push_back(e.defIndex);
+    }
+    return solution;
 }
 
 } // namespace abalike

@@ -1,0 +1,19 @@
+#pragma once
+
+#include <abalike/level/LevelIO.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace abalike
+{
+
+/// Fills in the line and column of each issue from its JSON pointer in the level file's text (valid JSON), and the
+/// file name; issues whose pointer is not in the text keep 0.
+void locateIssues(std::vector<LevelIssue>& issues, std::string_view text, const std::string& file);
+
+/// The text with the number at pointer (e.g. /blocks/3/y) replaced by `number`, everything else byte for byte as
+/// it was (a hand-written file keeps its layout). Throws std::invalid_argument when the pointer is not a number.
+std::string replaceNumber(std::string_view text, const std::string& pointer, const std::string& number);
+
+} // namespace abalike

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <abalike/level/LevelDef.hpp>
+#include <abalike/level/LevelIO.hpp>
+#include <abalike/world/Catalog.hpp>
+#include <abalike/world/RestCheck.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace abalike
+{
+
+/// Why one body of a level did not stay where it was built, in the designer's terms, and the fix where one is
+/// clear: what `check` reports in `errors[]` for a level that fails the rest check.
+struct RestFinding
+{
+    std::string pointer; ///< the body in the level file: /blocks/3 or /pigs/0
+    std::string what;    ///< "floats 1.0 cm above block 3 (wood)", "overlaps the ground by 7 mm", ...
+    std::string fix;     ///< "set y = 0.25"; empty when no single change is clear
+    /// The y that rests the body on its support (for floating or overlapping bodies within kMaxSnapM); what
+    /// `check --fix` writes.
+    std::optional<double> snapY;
+
+    /// "what; fix" (or just "what").
+    std::string message() const;
+
+    /// `check --fix` moves bodies at most this far.
+    static constexpr double kMaxSnapM = 0.02;
+};
+
+/// The designed bottom of a body and what is right under it, from the level as written (no simulation).
+struct SupportGap
+{
+    std::string support;       ///< "block 3 (wood)", "the ground", "terrain 1"; empty when nothing is under it
+    double gapM = 0.0;         ///< bottom of the body minus top of the support: > 0 floats, < 0 overlaps
+    double supportLeftM = 0.0; ///< the support's horizontal extent under the body
+    double supportRightM = 0.0;
+    bool supportIsIce = false;
+};
+
+/// What is right under a block (blocks[index]) or a pig (pigs[index]) as designed.
+SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig, int index);
+
+/// One finding per body that moved more than the report's tolerance or took damage.
+std::vector<RestFinding> restFindings(const LevelDef& level, const Catalog& catalog, const RestReport& report);
+
+/// The findings of a rest report as issues of the level file: located (line, column) when the file can be read,
+/// each message "what; fix". Empty when the report passed.
+std::vector<LevelIssue> restIssues(const LevelDef& level, const Catalog& catalog, const RestReport& report,
+                                   const std::string& file);
+
+} // namespace abalike
