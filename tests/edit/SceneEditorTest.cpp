@@ -36,7 +36,7 @@ LevelDef towerLevel()
                     {BlockShape::Box, "wood", 19.0, 1.5, 0.25, 2.0, 0.0, 0.1},
                     {BlockShape::Box, "wood", 21.0, 1.5, 0.25, 2.0, 0.0, 0.1}};
     level.pigs = {{"small", 20.0, 0.75}};
-    level.terrain = {{40.0, 1.0, 4.0, 2.0, 0.0}};
+    level.terrain = {{40.0, 1.0, 4.0, 2.0, 0.0, {}}};
     return level;
 }
 
@@ -86,7 +86,7 @@ TEST(SceneEditor, PlacesPigsOfEveryTypeTerrainAndTheSlingshot)
         EXPECT_EQ(editor.level().pigs.back().y, 3.0);
         x += 2.0;
     }
-    expectUndoable(editor, [&] { editor.place(TerrainDef{30.0, 2.0, 6.0, 4.0, 10.0}); });
+    expectUndoable(editor, [&] { editor.place(TerrainDef{30.0, 2.0, 6.0, 4.0, 10.0, {}}); });
     EXPECT_EQ(editor.level().terrain.size(), 1u);
     expectUndoable(editor, [&] { editor.place(SlingshotDef{-3.0, 2.0, 1200.0}); });
     EXPECT_EQ(editor.level().slingshot.x, -3.0);

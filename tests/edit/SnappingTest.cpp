@@ -144,7 +144,7 @@ TEST(Snapping, ABlockOrPigPutBelowTheGroundComesUpOntoItTerrainMaySink)
     const SnapResult pig = snapObject(level, Catalog::builtin(), PigDef{"large", 5.0, -2.0}, {}, surfacesOnly());
     EXPECT_EQ(pig.y, 0.5);
     const SnapResult hill =
-        snapObject(level, Catalog::builtin(), TerrainDef{5.0, -3.0, 10.0, 4.0, 0.0}, {}, surfacesOnly());
+        snapObject(level, Catalog::builtin(), TerrainDef{5.0, -3.0, 10.0, 4.0, 0.0, {}}, {}, surfacesOnly());
     EXPECT_EQ(hill.y, -3.0);
 }
 

@@ -55,7 +55,7 @@ public:
         }
         for (int i = integer(0, 4); i > 0; --i)
             level.terrain.push_back(
-                {number(-2000, 2000), number(-2000, 2000), number(0.1, 50), number(0.1, 50), angle()});
+                {number(-2000, 2000), number(-2000, 2000), number(0.1, 50), number(0.1, 50), angle(), {}});
         environment(level.environment);
         for (const auto& material : catalog.materials())
             if (coin())

@@ -52,7 +52,7 @@ TEST(LaunchCap, EveryBirdAtTheCapLandsWhereThePreviewSaysAndStopsAtTheWall)
             if (dynamicWall)
                 level.blocks.push_back({BlockShape::Box, "stone", 150.0, 1.5, 0.2, 3.0, 0.0});
             else
-                level.terrain.push_back({150.0, 1.5, 0.2, 3.0, 0.0});
+                level.terrain.push_back({150.0, 1.5, 0.2, 3.0, 0.0, {}});
             GameSession session(level, unbreakable());
             session.launch(0.2, session.maxLaunchSpeed());
             double furthest = 0.0;

@@ -164,7 +164,7 @@ LevelDef pigOnASlope(double angleDeg)
 {
     LevelDef level;
     level.birds = {"red"};
-    level.terrain = {{20.0, 1.0, 4.0, 0.5, angleDeg}};
+    level.terrain = {{20.0, 1.0, 4.0, 0.5, angleDeg, {}}};
     const double a = angleDeg * std::numbers::pi / 180.0;
     // On the slab's top face, above its centre: 0.25 + 0.25 m along the face normal.
     level.pigs = {{"small", 20.0 - 0.5 * std::sin(a), 1.0 + 0.5 * std::cos(a)}};

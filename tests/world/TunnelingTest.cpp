@@ -23,7 +23,7 @@ LevelDef wallLevel(bool staticWall)
     level.pigs = {{"small", 40.0, 0.25}};
     level.slingshot.maxForceN = 1.0e5; // every bird as fast as the world allows
     if (staticWall)
-        level.terrain.push_back({kWallX, kWallHeight / 2, kWallWidth, kWallHeight, 0.0});
+        level.terrain.push_back({kWallX, kWallHeight / 2, kWallWidth, kWallHeight, 0.0, {}});
     else
         level.blocks.push_back({BlockShape::Box, "stone", kWallX, kWallHeight / 2, kWallWidth, kWallHeight, 0.0});
     return level;

@@ -52,6 +52,12 @@ struct TerrainDef
     double widthM = 1.0;
     double heightM = 1.0;
     double angleDeg = 0.0;
+    /// A polygon instead of a box (hills, slopes, pits, floating islands): its corners in metres, simple, convex or
+    /// not, either winding; solid. When given, x, y, w and h hold its bounding box (centre and size) and angleDeg is
+    /// 0; the file gives only the points.
+    std::vector<std::array<double, 2>> points;
+
+    bool isPolygon() const { return !points.empty(); }
 
     bool operator==(const TerrainDef&) const = default;
 };

@@ -33,7 +33,7 @@ LevelDef wallLevel(bool staticWall, double gravity)
     level.environment.airDensity = 1.2;
     level.slingshot.maxForceN = 1e9;
     if (staticWall)
-        level.terrain.push_back({kWallX, kWallHeightM / 2, kWallWidthM, kWallHeightM, 0.0});
+        level.terrain.push_back({kWallX, kWallHeightM / 2, kWallWidthM, kWallHeightM, 0.0, {}});
     else
         level.blocks.push_back(
             {BlockShape::Box, "stone", kWallX, kWallHeightM / 2, kWallWidthM, kWallHeightM, 0.0, 0.1});

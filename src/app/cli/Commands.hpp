@@ -19,5 +19,6 @@ CommandRunner addCheckCommand(CLI::App& app);
 CommandRunner addSolveCommand(CLI::App& app);
 CommandRunner addWalkthroughCommand(CLI::App& app);
 CommandRunner addChartCommand(CLI::App& app);
+CommandRunner addFmtCommand(CLI::App& app);
 
 } // namespace abalike::app

@@ -147,7 +147,7 @@ private:
     Tool m_tool = Tool::Select;
     BlockDef m_blockTemplate{BlockShape::Box, "wood", 0.0, 0.0, 1.0, 1.0, 0.0, 0.1};
     PigDef m_pigTemplate{"small", 0.0, 0.0};
-    TerrainDef m_terrainTemplate{0.0, 0.0, 4.0, 1.0, 0.0};
+    TerrainDef m_terrainTemplate{0.0, 0.0, 4.0, 1.0, 0.0, {}};
 
     // Pointer state on the scene.
     sf::Vector2f m_pointer;

@@ -7,6 +7,7 @@
 #include "render/Palette.hpp"
 #include "render/SlingshotPainter.hpp"
 
+#include <abalike/level/PolygonPartition.hpp>
 #include <algorithm>
 #include <box2d/box2d.h>
 #include <numbers>
@@ -66,7 +67,13 @@ void WorldRenderer::drawBackground(sf::RenderTarget& target, const Camera& camer
     for (const Entity& entity : session.world().entities())
     {
         if (entity.alive && entity.body != nullptr && entity.kind == EntityKind::Terrain)
-            addTerrain(entity, camera.metresPerPixel());
+        {
+            const TerrainDef& def = session.level().terrain[static_cast<std::size_t>(entity.defIndex)];
+            if (def.isPolygon())
+                addTerrainPolygon(entity, def, camera.metresPerPixel());
+            else
+                addTerrain(entity, camera.metresPerPixel());
+        }
     }
     m_mesh.draw(target, camera.transform());
 }
@@ -140,6 +147,49 @@ void WorldRenderer::addTerrain(const Entity& entity, float pixelM)
         m_mesh.addConvex(inner.empty() ? points : inner, palette::kTerrain);
     }
     m_mesh.resetLocalTransform();
+}
+
+void WorldRenderer::addTerrainPolygon(const Entity& entity, const TerrainDef& def, float pixelM)
+{
+    // The designed convex pieces (not the world's, which are inset for Box2D's skin and would show seams), then
+    // the outline and the grass along the polygon as designed. Terrain never moves: world coordinates.
+    (void)entity;
+    for (const std::vector<Point2>& piece : convexPieces(def.points))
+    {
+        std::vector<sf::Vector2f> corners;
+        for (const auto& [x, y] : piece)
+            corners.emplace_back(static_cast<float>(x), static_cast<float>(y));
+        m_mesh.addConvex(corners, palette::kTerrain);
+    }
+    std::vector<sf::Vector2f> points;
+    for (const auto& [x, y] : def.points)
+        points.emplace_back(static_cast<float>(x), static_cast<float>(y));
+    float twiceArea = 0.0f;
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+        const sf::Vector2f& a = points[i];
+        const sf::Vector2f& b = points[(i + 1) % points.size()];
+        twiceArea += a.x * b.y - b.x * a.y;
+    }
+    const float outward = twiceArea > 0.0f ? 1.0f : -1.0f; // counter-clockwise: the outside is to the right
+    const float edge = std::max(0.05f, 2.0f * pixelM);
+    const float grass = std::max(0.12f, 5.0f * pixelM);
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+        const sf::Vector2f& a = points[i];
+        const sf::Vector2f& b = points[(i + 1) % points.size()];
+        const sf::Vector2f d = b - a;
+        const float length = std::hypot(d.x, d.y);
+        if (length <= 0.0f)
+            continue;
+        const sf::Vector2f normal = outward * sf::Vector2f(d.y, -d.x) / length;
+        m_mesh.addLine(a, b, edge, palette::kTerrainEdge);
+        if (normal.y > 0.5f) // a top edge: grass, drawn just inside the surface
+        {
+            const sf::Vector2f in = -normal * (0.5f * grass);
+            m_mesh.addLine(a + in, b + in, grass, palette::kGrass);
+        }
+    }
 }
 
 void WorldRenderer::addBlock(const Entity& entity, std::size_t index, float pixelM)

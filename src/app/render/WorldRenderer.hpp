@@ -24,6 +24,8 @@ public:
 
 private:
     void addTerrain(const Entity& entity, float pixelM);
+    /// A terrain polygon: its convex pieces filled as one, its outline, grass on its top edges.
+    void addTerrainPolygon(const Entity& entity, const TerrainDef& def, float pixelM);
     void addBlock(const Entity& entity, std::size_t index, float pixelM);
     void addPig(const Entity& entity, const Catalog& catalog, float pixelM);
     void addBird(const Entity& entity, std::size_t index, float pixelM);

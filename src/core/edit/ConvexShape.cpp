@@ -96,7 +96,7 @@ ConvexShape objectShape(const ObjectDef& def, const Catalog& catalog)
         return type ? circle(pig->x, pig->y, type->radiusM) : ConvexShape{};
     }
     if (const auto* terrain = std::get_if<TerrainDef>(&def))
-        return terrainOutline(*terrain).vertices;
+        return terrain->isPolygon() ? hull(terrain->points) : terrainOutline(*terrain).vertices; // hull: for picking
     return {};
 }
 

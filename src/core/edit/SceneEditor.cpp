@@ -19,6 +19,28 @@ namespace abalike
 namespace
 {
 
+/// Turns a terrain polygon's points about its bounding box's centre; its box follows (a polygon has no angle).
+void rotatePolygon(TerrainDef& terrain, double deltaDeg)
+{
+    const double c = std::cos(deltaDeg * std::numbers::pi / 180.0);
+    const double s = std::sin(deltaDeg * std::numbers::pi / 180.0);
+    double left = 1e300, right = -1e300, bottom = 1e300, top = -1e300;
+    for (auto& point : terrain.points)
+    {
+        const double dx = point[0] - terrain.x;
+        const double dy = point[1] - terrain.y;
+        point = {terrain.x + c * dx - s * dy, terrain.y + s * dx + c * dy};
+        left = std::min(left, point[0]);
+        right = std::max(right, point[0]);
+        bottom = std::min(bottom, point[1]);
+        top = std::max(top, point[1]);
+    }
+    terrain.x = 0.5 * (left + right);
+    terrain.y = 0.5 * (bottom + top);
+    terrain.widthM = right - left;
+    terrain.heightM = top - bottom;
+}
+
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 /// Half the width of the slingshot's frame and how far above the pouch it reaches, for picking it (m).
 constexpr double kSlingshotPickHalfWidthM = 0.4;
@@ -355,6 +377,8 @@ void SceneEditor::rotateSelection(double deltaDeg)
                                 clampCoordinate(py + s * (p[0] - px) + c * (p[1] - py)));
         if (auto* block = std::get_if<BlockDef>(&turned))
             block->angleDeg = normaliseAngle(block->angleDeg + deltaDeg);
+        else if (auto* terrain = std::get_if<TerrainDef>(&turned); terrain != nullptr && terrain->isPolygon())
+            rotatePolygon(*terrain, deltaDeg);
         else if (auto* terrain = std::get_if<TerrainDef>(&turned))
             terrain->angleDeg = normaliseAngle(terrain->angleDeg + deltaDeg);
         after.push_back(std::move(turned));
@@ -384,6 +408,8 @@ std::string SceneEditor::resizeObject(const ObjectRef& ref, double widthM, doubl
         block->widthM = widthM;
         block->heightM = heightM;
     }
+    else if (auto* terrain = std::get_if<TerrainDef>(&def); terrain != nullptr && terrain->isPolygon())
+        return "a terrain polygon's size is its points: move them in its file";
     else if (auto* terrain = std::get_if<TerrainDef>(&def))
     {
         grow(terrain->x, terrain->y, terrain->angleDeg, terrain->heightM, heightM);

@@ -122,6 +122,13 @@ std::array<double, 2> centreOf(const ObjectDef& def)
 
 ObjectDef withCentre(ObjectDef def, double x, double y)
 {
+    // A terrain polygon moves with its bounding box's centre: every point by the same step.
+    if (auto* terrain = std::get_if<TerrainDef>(&def); terrain != nullptr && terrain->isPolygon())
+        for (auto& point : terrain->points)
+        {
+            point[0] += x - terrain->x;
+            point[1] += y - terrain->y;
+        }
     std::visit(
         [&](auto& d)
         {

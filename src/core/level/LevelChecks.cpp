@@ -48,7 +48,8 @@ std::vector<Body> collectBodies(const LevelDef& level, const Catalog& catalog)
 {
     std::vector<Body> bodies;
     for (std::size_t i = 0; i < level.terrain.size(); ++i)
-        bodies.push_back({"/terrain/" + std::to_string(i), terrainOutline(level.terrain[i]), true});
+        for (Outline& piece : terrainOutlines(level.terrain[i]))
+            bodies.push_back({"/terrain/" + std::to_string(i), std::move(piece), true});
     for (std::size_t i = 0; i < level.blocks.size(); ++i)
         for (Outline& piece : blockOutlines(level.blocks[i]))
             bodies.push_back({"/blocks/" + std::to_string(i), std::move(piece), false});

@@ -7,10 +7,13 @@
 #include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/level/LevelWriter.hpp>
+#include <abalike/level/PolygonPartition.hpp>
 #include <abalike/level/SafeText.hpp>
 #include <abalike/world/Catalog.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace abalike
@@ -147,6 +150,96 @@ void readPigs(LevelReader& r, const json& root, LevelDef& level, const Catalog& 
     }
 }
 
+/// A terrain polygon: "points": [[x, y], ...], simple, 3 to kMaxTerrainPoints corners, no wider or taller than a
+/// static body may be; its box fields then hold the bounding box.
+std::optional<TerrainDef> readTerrainPolygon(LevelReader& r, const json& t, const std::string& p)
+{
+    for (const char* key : {"x", "y", "w", "h", "angle_deg"})
+        if (t.contains(key))
+        {
+            r.error(p + "/" + key, std::string("a polygon's shape is its \"points\" (expected no \"") + key +
+                                       "\"; give either points or x, y, w and h)");
+            return std::nullopt;
+        }
+    const json& points = t.at("points");
+    const std::string pp = p + "/points";
+    if (!r.array(points, pp, 3, kMaxTerrainPoints, "points"))
+        return std::nullopt;
+    TerrainDef terrain;
+    bool ok = true;
+    for (std::size_t k = 0; k < points.size(); ++k)
+    {
+        const std::string at = pp + "/" + std::to_string(k);
+        if (!points[k].is_array() || points[k].size() != 2)
+        {
+            r.error(at, "expected a point [x, y] in metres, got " + describeJsonType(points[k]) +
+                            (points[k].is_array() ? " of " + std::to_string(points[k].size()) + " numbers" : ""));
+            ok = false;
+            continue;
+        }
+        const std::optional<double> x = r.numberAt(points[k][0], at + "/0", kCoordinate);
+        const std::optional<double> y = r.numberAt(points[k][1], at + "/1", kCoordinate);
+        if (!x || !y)
+        {
+            ok = false;
+            continue;
+        }
+        terrain.points.push_back({*x, *y});
+    }
+    if (!ok)
+        return std::nullopt;
+    double left = terrain.points[0][0], right = left, bottom = terrain.points[0][1], top = bottom;
+    for (const auto& [x, y] : terrain.points)
+    {
+        left = std::min(left, x);
+        right = std::max(right, x);
+        bottom = std::min(bottom, y);
+        top = std::max(top, y);
+    }
+    // A polygon whose points all lie on one line has no area (and "crosses itself" along that line): say the
+    // former. Otherwise a crossing is the problem to fix first.
+    const bool tiny = std::abs(twiceSignedArea(terrain.points)) < 2.0 * kMinBodySizeM * kMinBodySizeM;
+    bool onOneLine = true;
+    for (const auto& point : terrain.points)
+    {
+        const auto& a = terrain.points.front();
+        const auto& b = terrain.points[terrain.points.size() / 2];
+        onOneLine = onOneLine && std::abs((b[0] - a[0]) * (point[1] - a[1]) - (b[1] - a[1]) * (point[0] - a[0])) < 1e-9;
+    }
+    if (tiny && onOneLine)
+    {
+        r.error(pp, "the polygon has (almost) no area (expected at least 0.01 m^2: are its points on one line?)");
+        return std::nullopt;
+    }
+    if (const std::optional<EdgeCrossing> crossing = firstCrossing(terrain.points))
+    {
+        const std::size_t n = terrain.points.size();
+        r.error(pp, "the outline crosses itself: the edge from point " + std::to_string(crossing->first) + " to " +
+                        std::to_string((crossing->first + 1) % n) + " meets the edge from point " +
+                        std::to_string(crossing->second) + " to " + std::to_string((crossing->second + 1) % n) +
+                        " (expected a simple polygon: list the corners in order around it)");
+        return std::nullopt;
+    }
+    if (tiny)
+    {
+        r.error(pp, "the polygon has (almost) no area (expected at least 0.01 m^2: are its points on one line?)");
+        return std::nullopt;
+    }
+    if (right - left > kMaxStaticSizeM || top - bottom > kMaxStaticSizeM)
+    {
+        std::ostringstream why;
+        why << "the polygon is " << right - left << " x " << top - bottom << " m (expected at most " << kMaxStaticSizeM
+            << " m each way, the largest static body Box2D simulates well: split it into pieces)";
+        r.error(pp, why.str());
+        return std::nullopt;
+    }
+    terrain.x = 0.5 * (left + right);
+    terrain.y = 0.5 * (bottom + top);
+    terrain.widthM = right - left;
+    terrain.heightM = top - bottom;
+    return terrain;
+}
+
 void readTerrain(LevelReader& r, const json& root, LevelDef& level)
 {
     const auto it = root.find("terrain");
@@ -156,8 +249,14 @@ void readTerrain(LevelReader& r, const json& root, LevelDef& level)
     {
         const json& t = (*it)[i];
         const std::string p = "/terrain/" + std::to_string(i);
-        if (!r.object(t, p, {"x", "y", "w", "h", "angle_deg"}))
+        if (!r.object(t, p, {"x", "y", "w", "h", "angle_deg", "points"}))
             continue;
+        if (t.contains("points"))
+        {
+            if (std::optional<TerrainDef> polygon = readTerrainPolygon(r, t, p))
+                level.terrain.push_back(std::move(*polygon));
+            continue;
+        }
         TerrainDef terrain;
         terrain.x = r.number(t, p, "x", 0.0, true, kCoordinate);
         terrain.y = r.number(t, p, "y", 0.0, true, kCoordinate);

@@ -53,6 +53,7 @@ inline constexpr std::size_t kMaxBirds = 20;
 inline constexpr std::size_t kMaxBlocks = 1000;
 inline constexpr std::size_t kMaxPigs = 100;
 inline constexpr std::size_t kMaxTerrain = 200;
+inline constexpr std::size_t kMaxTerrainPoints = 256; ///< corners of one terrain polygon
 inline constexpr std::size_t kMaxHints = 20;
 inline constexpr std::size_t kMaxGustSteps = 100;
 

@@ -216,7 +216,8 @@ std::string writeLevelJson(const LevelDef& level, const std::string& schemaRefer
 {
     const LevelDef defaults;
     json root = json::object();
-    root["$schema"] = schemaReference;
+    if (!schemaReference.empty())
+        root["$schema"] = schemaReference;
     root["format"] = level.format;
     root["id"] = level.id;
     root["title"] = level.title;
@@ -257,6 +258,14 @@ std::string writeLevelJson(const LevelDef& level, const std::string& schemaRefer
         json terrain = json::array();
         for (const TerrainDef& t : level.terrain)
         {
+            if (t.isPolygon())
+            {
+                json points = json::array();
+                for (const auto& [x, y] : t.points)
+                    points.push_back(json::array({num(x), num(y)}));
+                terrain.push_back({{"points", std::move(points)}});
+                continue;
+            }
             json item = {{"x", num(t.x)}, {"y", num(t.y)}, {"w", num(t.widthM)}, {"h", num(t.heightM)}};
             if (t.angleDeg != 0.0)
                 item["angle_deg"] = num(t.angleDeg);
@@ -268,7 +277,8 @@ std::string writeLevelJson(const LevelDef& level, const std::string& schemaRefer
         root["environment"] = std::move(environment);
     if (!level.materials.empty())
         root["materials"] = materialsJson(level.materials);
-    root["stars"] = level.starScores;
+    if (level.starScores != defaults.starScores)
+        root["stars"] = level.starScores;
     if (level.timeLimitS)
         root["time_limit_s"] = num(*level.timeLimitS);
     if (level.referenceShot)

@@ -1,5 +1,6 @@
 #include "level/Outline.hpp"
 
+#include <abalike/level/PolygonPartition.hpp>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -119,7 +120,29 @@ std::vector<Outline> blockOutlines(const BlockDef& b)
 
 Outline terrainOutline(const TerrainDef& t)
 {
+    if (t.isPolygon())
+    {
+        Outline all;
+        all.vertices = t.points;
+        if (twiceSignedArea(all.vertices) < 0)
+            std::reverse(all.vertices.begin(), all.vertices.end());
+        return all;
+    }
     return box(t.x, t.y, t.widthM, t.heightM, t.angleDeg);
+}
+
+std::vector<Outline> terrainOutlines(const TerrainDef& t)
+{
+    if (!t.isPolygon())
+        return {terrainOutline(t)};
+    std::vector<Outline> pieces;
+    for (std::vector<Point2>& piece : convexPieces(t.points))
+    {
+        Outline outline;
+        outline.vertices = std::move(piece);
+        pieces.push_back(std::move(outline));
+    }
+    return pieces;
 }
 
 Outline circleOutline(double x, double y, double radius)

@@ -26,6 +26,8 @@ struct Outline
 /// do not know, which is then not checked.
 std::vector<Outline> blockOutlines(const BlockDef& block);
 Outline terrainOutline(const TerrainDef& terrain);
+/// The convex pieces of a terrain entry as the world builds it: its box, or its polygon split by convexPieces.
+std::vector<Outline> terrainOutlines(const TerrainDef& terrain);
 Outline circleOutline(double x, double y, double radius);
 
 /// How deep two convex outlines interpenetrate (m), by the separating axis theorem: <= 0 when they are apart or

@@ -1,3 +1,4 @@
+#include "level/Outline.hpp"
 #include "world/Fixtures.hpp"
 #include "world/Skin.hpp"
 
@@ -83,13 +84,30 @@ void GameWorld::buildLevel()
         entity.heightM = t.heightM;
         const int index = addEntity(entity);
         b2BodyDef def;
-        def.position.Set(static_cast<float>(t.x), static_cast<float>(t.y));
-        def.angle = static_cast<float>(t.angleDeg * kDegToRad);
         def.userData = userDataFor(index);
-        b2Body* body = m_world->CreateBody(&def);
         b2FixtureDef fixture;
         fixture.friction = static_cast<float>(m_catalog.groundFriction());
-        addBoxFixture(body, t.widthM, t.heightM, fixture, static_cast<float>(m_settings.cornerChamferM));
+        b2Body* body = nullptr;
+        if (t.isPolygon())
+        {
+            // Solid: one fixture per convex piece, in world coordinates. Static pieces need no chamfer (it keeps
+            // diagonal neighbours among moving blocks apart) and would notch the surface where pieces meet.
+            body = m_world->CreateBody(&def);
+            for (const Outline& piece : terrainOutlines(t))
+            {
+                std::vector<b2Vec2> outline;
+                for (const auto& [x, y] : piece.vertices)
+                    outline.emplace_back(static_cast<float>(x), static_cast<float>(y));
+                addPolygonFixture(body, outline, fixture, 0.0f);
+            }
+        }
+        else
+        {
+            def.position.Set(static_cast<float>(t.x), static_cast<float>(t.y));
+            def.angle = static_cast<float>(t.angleDeg * kDegToRad);
+            body = m_world->CreateBody(&def);
+            addBoxFixture(body, t.widthM, t.heightM, fixture, static_cast<float>(m_settings.cornerChamferM));
+        }
         m_entities[static_cast<std::size_t>(index)].body = body;
     }
 

@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <iterator>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 namespace abalike
@@ -63,6 +64,22 @@ std::string coordinate(double y)
     return out.str();
 }
 
+/// The highest point of a polygon's outline straight above or below x; none when x is outside it.
+std::optional<double> topAt(const std::vector<std::array<double, 2>>& polygon, double x)
+{
+    std::optional<double> top;
+    for (std::size_t i = 0; i < polygon.size(); ++i)
+    {
+        const auto& a = polygon[i];
+        const auto& b = polygon[(i + 1) % polygon.size()];
+        if (x < std::min(a[0], b[0]) || x > std::max(a[0], b[0]))
+            continue;
+        const double y = a[0] == b[0] ? std::max(a[1], b[1]) : a[1] + (b[1] - a[1]) * (x - a[0]) / (b[0] - a[0]);
+        top = top ? std::max(*top, y) : y;
+    }
+    return top;
+}
+
 } // namespace
 
 std::string RestFinding::message() const
@@ -113,6 +130,17 @@ SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig,
     for (std::size_t i = 0; i < level.terrain.size(); ++i)
     {
         const TerrainDef& t = level.terrain[i];
+        if (t.isPolygon())
+        {
+            // Only where its top is flat under the body is there one gap to name.
+            const std::optional<double> a = topAt(t.points, from);
+            const std::optional<double> b = topAt(t.points, 0.5 * (from + to));
+            const std::optional<double> c = topAt(t.points, to);
+            if (a && b && c && std::abs(*a - *b) < 1e-3 && std::abs(*b - *c) < 1e-3)
+                consider("terrain " + std::to_string(i), {t.x - 0.5 * t.widthM, t.x + 0.5 * t.widthM, *b - 1.0, *b},
+                         false);
+            continue;
+        }
         if (std::abs(std::fmod(t.angleDeg, 90.0)) < 1e-9) // a tilted hill's top is not flat: no single gap
             consider("terrain " + std::to_string(i), rotatedBox(t.x, t.y, t.widthM, t.heightM, t.angleDeg), false);
     }

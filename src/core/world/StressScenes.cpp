@@ -212,15 +212,15 @@ LevelDef ledgeScene()
     constexpr double kBrickH = 0.25;
     level.pigs.clear();
     // A 6 m ledge 3 m up, covered edge to edge by three rows of twelve bricks.
-    level.terrain.push_back({30.0, 1.5, 6.0, 3.0, 0.0});
+    level.terrain.push_back({30.0, 1.5, 6.0, 3.0, 0.0, {}});
     for (int row = 0; row < 3; ++row)
         for (int c = 0; c < 12; ++c)
             level.blocks.push_back(box(row == 1 ? "ice" : "wood", 27.0 + kBrickW * (c + 0.5),
                                        3.0 + kBrickH * (row + 0.5), kBrickW, kBrickH));
     level.pigs.push_back({"small", 30.0, 3.0 + 3 * kBrickH + 0.25});
     // Ten blocks wedged between two terrain walls 5 m apart, two rows, the lower one of ice.
-    level.terrain.push_back({39.5, 1.5, 1.0, 3.0, 0.0});
-    level.terrain.push_back({45.5, 1.5, 1.0, 3.0, 0.0});
+    level.terrain.push_back({39.5, 1.5, 1.0, 3.0, 0.0, {}});
+    level.terrain.push_back({45.5, 1.5, 1.0, 3.0, 0.0, {}});
     for (int row = 0; row < 2; ++row)
         for (int c = 0; c < 10; ++c)
             level.blocks.push_back(
