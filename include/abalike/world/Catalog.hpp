@@ -70,6 +70,13 @@ struct ScoringRules
     double accuracyToleranceM = 0.05;       ///< accuracy: deviation at which the accuracy points reach zero
 };
 
+/// The model player that measures a level's difficulty (design/ModelPlayer.hpp): how unsteady its aim is.
+struct PlayerAim
+{
+    double angleSigmaDeg = 0.5; ///< standard deviation of the launch angle
+    double pullSigma = 0.01;    ///< standard deviation of the pull, as a share of the full pull
+};
+
 /// Balance data (materials, birds, pigs), kept in one data file (assets/catalog.json) that is compiled into
 /// the core, so the game, the levels, the tests and the docs all read the same table.
 class Catalog
@@ -96,6 +103,7 @@ public:
 
     int pointsPerUnusedBird() const { return m_scoring.pointsPerUnusedBird; }
     const ScoringRules& scoring() const { return m_scoring; }
+    const PlayerAim& playerAim() const { return m_playerAim; }
     double damageSpeedThresholdMps() const { return m_damageSpeedThreshold; }
     const AbilityParams& abilities() const { return m_abilities; }
     double groundFriction() const { return m_groundFriction; }
@@ -114,6 +122,7 @@ private:
     std::vector<PigType> m_pigs;
     AbilityParams m_abilities;
     ScoringRules m_scoring;
+    PlayerAim m_playerAim;
     double m_damageSpeedThreshold = 0.5;
     double m_groundFriction = 0.8;
     double m_rollingResistance = 0.0;

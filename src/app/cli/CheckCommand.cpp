@@ -3,6 +3,7 @@
 #include "cli/SolutionJson.hpp"
 #include "cli/UsageError.hpp"
 
+#include <abalike/design/ModelPlayer.hpp>
 #include <abalike/design/Solver.hpp>
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/level/LevelText.hpp>
@@ -37,6 +38,7 @@ struct CheckArgs
     bool solve = false;
     bool fix = false;
     int threads = 0;
+    std::size_t playerRuns = 40;
 };
 
 /// A level to check, and the campaign episode that lists it (if any).
@@ -54,6 +56,7 @@ struct FileReport
     std::vector<LevelIssue> issues;
     std::optional<RestReport> rest;
     std::optional<Solution> solution;
+    std::optional<PlayerDifficulty> player;
     std::vector<std::string> reasons;  ///< why it fails, one short phrase each
     std::vector<std::string> warnings; ///< worth a look, but the level is fine
     std::vector<std::string> fixes;    ///< what --fix changed in the file
@@ -246,6 +249,19 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
         }
         else if (report.solution->outcome.stars < 1)
             report.reasons.push_back("the solver's best win earns no star");
+        if (a.playerRuns > 0 && report.solution->outcome.won)
+        {
+            ProgressBar playerBar("model player " + level.id);
+            ModelPlayerOptions playerOptions;
+            playerOptions.runs = a.playerRuns;
+            playerOptions.threads = a.threads;
+            playerOptions.progress = [&playerBar](std::size_t done, std::size_t total)
+            {
+                playerBar.update(done, total);
+            };
+            report.player = measurePlayerDifficulty(level, Catalog::builtin(), playerOptions);
+            playerBar.finish();
+        }
     }
     return report;
 }
@@ -281,6 +297,8 @@ std::string summaryLine(const FileReport& r)
     if (r.solution)
         line << "; solved: " << r.solution->outcome.score << " points, " << r.solution->outcome.stars << " star(s), "
              << r.solution->shots.size() << " shot(s)";
+    if (r.player)
+        line << "; " << playerDifficultyText(*r.player);
     line << ")";
     return line.str();
 }
@@ -313,6 +331,7 @@ nlohmann::ordered_json reportJson(const FileReport& r)
     else
         out["rest"] = nullptr;
     out["solve"] = r.solution ? solutionToJson(*r.level, *r.solution) : nlohmann::ordered_json(nullptr);
+    out["player"] = r.player ? playerDifficultyJson(*r.player) : nlohmann::ordered_json(nullptr);
     out["reasons"] = r.reasons;
     out["warnings"] = r.warnings;
     out["fixes"] = r.fixes;
@@ -366,6 +385,9 @@ CommandRunner addCheckCommand(CLI::App& app)
     cmd->add_flag("--json", args->json, "print one JSON report");
     cmd->add_flag("--solve", args->solve, "also run the solver: each level must be won with at least one star");
     cmd->add_option("--threads", args->threads, "solver worker threads (default 0: every core)");
+    cmd->add_option("--player-runs", args->playerRuns,
+                    "with --solve: plays of the model player, whose win rate is the level's difficulty (default 40; "
+                    "0: none)");
     cmd->add_flag("--fix", args->fix,
                   "snap bodies that float or overlap by up to 2 cm onto what is under them, rewriting just those "
                   "numbers in the file, and print each change");

@@ -1,5 +1,9 @@
 #include "cli/SolutionJson.hpp"
 
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
 namespace abalike::app
 {
 
@@ -31,6 +35,26 @@ nlohmann::ordered_json solutionToJson(const LevelDef& level, const Solution& sol
     out["surviving_pigs"] = solution.survivingPigs;
     out["pigs_falling_alone"] = solution.pigsFallingAlone;
     return out;
+}
+
+nlohmann::ordered_json playerDifficultyJson(const PlayerDifficulty& player)
+{
+    return {{"runs", player.runs},      {"wins", player.wins},     {"win_share", player.winShare},
+            {"low90", player.low90},    {"high90", player.high90}, {"simulations", player.simulations},
+            {"seconds", player.seconds}};
+}
+
+std::string playerDifficultyText(const PlayerDifficulty& player)
+{
+    const auto percent = [](double share)
+    {
+        return std::to_string(static_cast<int>(std::lround(100.0 * share)));
+    };
+    std::ostringstream text;
+    text << "model player: " << player.wins << " of " << player.runs << " runs won (" << percent(player.winShare)
+         << " %, 90 % interval " << percent(player.low90) << "-" << percent(player.high90) << " %), "
+         << player.simulations << " games in " << std::fixed << std::setprecision(1) << player.seconds << " s";
+    return text.str();
 }
 
 std::string shotArguments(const std::vector<ScriptedShot>& shots)

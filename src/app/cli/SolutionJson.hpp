@@ -1,5 +1,6 @@
 #pragma once
 
+#include <abalike/design/ModelPlayer.hpp>
 #include <abalike/design/Solver.hpp>
 
 #include <nlohmann/json.hpp>
@@ -13,5 +14,10 @@ nlohmann::ordered_json solutionToJson(const LevelDef& level, const Solution& sol
 
 /// The shots as `--shot` arguments for `abalike simulate` ("ANGLE,SPEED" or "ANGLE,SPEED,ABILITY_AT_S").
 std::string shotArguments(const std::vector<ScriptedShot>& shots);
+
+/// {"runs", "wins", "win_share", "low90", "high90", "simulations", "seconds"}
+nlohmann::ordered_json playerDifficultyJson(const PlayerDifficulty& player);
+/// "model player: 31 of 40 runs won (78 %, 90 % interval 65-86 %), 2 390 games in 12.0 s"
+std::string playerDifficultyText(const PlayerDifficulty& player);
 
 } // namespace abalike::app

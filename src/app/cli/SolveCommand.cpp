@@ -4,6 +4,7 @@
 #include "cli/UsageError.hpp"
 
 #include <abalike/design/Difficulty.hpp>
+#include <abalike/design/ModelPlayer.hpp>
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/level/SafeText.hpp>
 
@@ -25,6 +26,7 @@ struct SolveArgs
     bool noAbilities = false;
     std::size_t difficultySamples = 0;
     std::uint64_t seed = 1;
+    std::size_t playerRuns = 40;
 };
 
 int runSolve(const SolveArgs& a)
@@ -55,9 +57,27 @@ int runSolve(const SolveArgs& a)
                               [&randomBar](std::size_t done, std::size_t total) { randomBar.update(done, total); });
     }
 
+    std::optional<PlayerDifficulty> player;
+    if (a.playerRuns > 0 && solution.pigsFallingAlone.empty())
+    {
+        ProgressBar playerBar("model player " + level.id);
+        ModelPlayerOptions playerOptions;
+        playerOptions.runs = a.playerRuns;
+        playerOptions.seed = a.seed;
+        playerOptions.threads = a.threads;
+        playerOptions.progress = [&playerBar](std::size_t done, std::size_t total)
+        {
+            playerBar.update(done, total);
+        };
+        player = measurePlayerDifficulty(level, Catalog::builtin(), playerOptions);
+        playerBar.finish();
+    }
+
     if (a.json)
     {
         nlohmann::ordered_json out = solutionToJson(level, solution);
+        if (player)
+            out["player"] = playerDifficultyJson(*player);
         if (difficulty)
             out["difficulty"] = {{"samples", difficulty->samples},
                                  {"wins", difficulty->wins},
@@ -88,6 +108,8 @@ int runSolve(const SolveArgs& a)
                       << " at x = " << level.pigs[static_cast<std::size_t>(pig)].x << ")";
         std::cout << '\n';
     }
+    if (player)
+        std::cout << "  " << playerDifficultyText(*player) << '\n';
     if (difficulty)
         std::cout << "  random play: " << difficulty->wins << " of " << difficulty->samples << " random sequences won ("
                   << std::setprecision(1) << 100.0 * difficulty->winShare << "%), " << std::setprecision(0)
@@ -107,7 +129,9 @@ CommandRunner addSolveCommand(CLI::App& app)
     cmd->add_flag("--no-abilities", args->noAbilities, "do not try the birds' abilities");
     cmd->add_option("--difficulty", args->difficultySamples,
                     "also play N random full shot sequences and report the share that wins");
-    cmd->add_option("--seed", args->seed, "seed of the random sequences (default 1)");
+    cmd->add_option("--seed", args->seed, "seed of the random sequences and the model player's aim (default 1)");
+    cmd->add_option("--player-runs", args->playerRuns,
+                    "plays of the model player, whose win rate is the level's difficulty (default 40; 0: none)");
     return [args]
     {
         return runSolve(*args);

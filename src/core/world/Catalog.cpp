@@ -103,6 +103,14 @@ Catalog Catalog::fromJson(std::string_view text)
             pig.restitution = p.value("restitution", pig.restitution);
             catalog.m_pigs.push_back(std::move(pig));
         }
+        if (root.contains("model_player"))
+        {
+            const json& player = root.at("model_player");
+            catalog.m_playerAim.angleSigmaDeg = player.value("angle_sigma_deg", 0.5);
+            catalog.m_playerAim.pullSigma = player.value("pull_sigma", 0.01);
+            if (!(catalog.m_playerAim.angleSigmaDeg >= 0.0) || !(catalog.m_playerAim.pullSigma >= 0.0))
+                throw std::runtime_error("model_player: the aim's standard deviations must be >= 0");
+        }
         if (root.contains("abilities"))
         {
             const json& a = root.at("abilities");

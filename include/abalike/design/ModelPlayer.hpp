@@ -1,0 +1,48 @@
+#pragma once
+
+#include <abalike/design/Solver.hpp>
+
+#include <array>
+#include <cstdint>
+
+namespace abalike
+{
+
+/// How the model player plays and how many times.
+struct ModelPlayerOptions
+{
+    std::size_t runs = 40; ///< plays of the level; run i draws its aim errors from its own seed (seed, i)
+    std::uint64_t seed = 1;
+    int threads = 0; ///< 0: every hardware thread
+    ProgressCallback progress;
+};
+
+/// A level's difficulty as a player finds it: the share of the model player's runs that win.
+struct PlayerDifficulty
+{
+    std::size_t runs = 0;
+    std::size_t wins = 0;
+    double winShare = 0.0;
+    double low90 = 0.0; ///< 90 % interval of the win rate (Wilson score interval)
+    double high90 = 0.0;
+    std::size_t simulations = 0; ///< headless games played in all
+    double seconds = 0.0;
+};
+
+/// The 90 % Wilson score interval of a win rate: {low, high}.
+std::array<double, 2> wilsonInterval90(std::size_t wins, std::size_t runs);
+
+/// The next shot the model player aims for, given the shots already fired: its search budget is every angle from
+/// -10 to 80 degrees in 5 degree steps at 60, 80 and 100 % of the bird's full pull (57 candidates, no abilities),
+/// each played headless after the shots so far (simulateShots: the world as it now is), ranked won, then fewer
+/// pigs left, then score, then candidate order.
+ScriptedShot modelPlayerShot(const LevelDef& level, const std::vector<ScriptedShot>& fired, const Catalog& catalog,
+                             std::size_t* simulations = nullptr);
+
+/// Plays the level `runs` times as the model player: for each bird in turn it takes modelPlayerShot and launches
+/// it with aiming noise (the catalog's model_player: normal errors of the angle and the pull); a run wins when the
+/// level is won. Deterministic for a seed, whatever the number of threads.
+PlayerDifficulty measurePlayerDifficulty(const LevelDef& level, const Catalog& catalog = Catalog::builtin(),
+                                         const ModelPlayerOptions& options = {});
+
+} // namespace abalike
