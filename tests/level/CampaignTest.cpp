@@ -45,12 +45,50 @@ TEST(Campaign, ReportsTheProblemsOfEveryBrokenLevel)
         for (const LevelIssue& issue : error.issues())
         {
             fromA = fromA || issue.file.ends_with("a.json");
-            fromMissing = fromMissing || issue.file.ends_with("missing.json");
+            // A missing file is the manifest's error, at its entry (not "missing.json:0:0").
+            fromMissing =
+                fromMissing || (issue.file.ends_with("campaign.json") && issue.pointer == "/episodes/0/levels/2" &&
+                                issue.line == 1 && issue.message.find("no level file \"missing.json\"") == 0);
         }
         EXPECT_TRUE(fromA);
         EXPECT_TRUE(fromMissing);
     }
     std::filesystem::remove_all(dir);
+}
+
+TEST(Campaign, EveryProblemOfTheManifestAtOnceAtItsOwnLines)
+{
+    const auto dir = std::filesystem::temp_directory_path() / ("abalike-manifest-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string levels = std::string(ABALIKE_SOURCE_DIR) + "/levels/";
+    std::filesystem::copy_file(levels + "1-1-first-flight.json", dir / "a.json",
+                               std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::copy_file(levels + "1-2-the-long-shot.json", dir / "b.json",
+                               std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::copy_file(levels + "structures/polygon-hill.json", dir / "sand.json",
+                               std::filesystem::copy_options::overwrite_existing);
+    std::ofstream(dir / "campaign.json") << R"({"format": 1, "episodes": [
+  {"id": "1", "levels": ["a.json", "sand.json", "missing.json", "a.json"]},
+  {"id": "2", "levels": ["b.json"]}]})";
+    std::vector<std::string> found;
+    try
+    {
+        loadCampaignLevels((dir / "campaign.json").string(), Catalog::builtin());
+        ADD_FAILURE() << "a broken manifest loaded";
+    }
+    catch (const LevelLoadError& error)
+    {
+        for (const LevelIssue& issue : error.issues())
+            found.push_back(std::to_string(issue.line) + ":" + std::to_string(issue.column) + " " + issue.pointer +
+                            " " + issue.message.substr(0, 30));
+    }
+    std::filesystem::remove_all(dir);
+    EXPECT_EQ(found, (std::vector<std::string>{
+                         "2:36 /episodes/0/levels/1 \"sand.json\" is a sandbox scene",
+                         "2:49 /episodes/0/levels/2 no level file \"missing.json\" n",
+                         "2:65 /episodes/0/levels/3 \"a.json\" is already listed at ",
+                         "3:26 /episodes/1/levels/0 the level says \"episode\": \"1\" ",
+                     }));
 }
 
 } // namespace

@@ -186,6 +186,7 @@ TEST(SafeText, TheCampaignManifestIsCheckedToo)
                                                     R"(", "levels": [")" + level + R"("]}]})";
         return (dir / "campaign.json").string();
     };
+    std::ofstream(dir / "a.json") << "{}"; // listed files must exist; what is in them is the level loader's business
     EXPECT_NO_THROW(loadCampaignEpisodes(write("Launch angle", "a.json")));
     for (const auto& [title, level, pointer] : {std::tuple{"Launch\\u001b[2J", "a.json", "/episodes/0/title"},
                                                 {"ok", "a\\u202e.json", "/episodes/0/levels/0"},
@@ -198,7 +199,8 @@ TEST(SafeText, TheCampaignManifestIsCheckedToo)
         }
         catch (const LevelLoadError& e)
         {
-            ASSERT_EQ(e.issues().size(), 1u);
+            // The unsafe name is reported (and, for a level name, that no such file exists).
+            ASSERT_GE(e.issues().size(), 1u);
             EXPECT_EQ(e.issues()[0].pointer, pointer);
             EXPECT_NE(e.issues()[0].message.find("unsafe character in a string"), std::string::npos);
         }

@@ -71,6 +71,7 @@ struct CampaignEpisode
     std::string id;
     std::string title;
     std::vector<std::string> levelPaths; ///< resolved against the manifest's folder
+    std::vector<LevelIssue> levelPlaces;  ///< where each level is listed in the manifest (file, line, column, pointer)
 };
 
 /// True if the file is a JSON object with "episodes" (a campaign manifest) rather than a level; false for anything
@@ -78,7 +79,8 @@ struct CampaignEpisode
 bool isCampaignManifest(const std::string& path);
 
 /// The episodes of a campaign manifest (levels/campaign.json), in play order. Throws LevelLoadError.
-std::vector<CampaignEpisode> loadCampaignEpisodes(const std::string& manifestPath);
+/// keepGoing: return the entries that could be read despite problems in others (syntax errors still throw).
+std::vector<CampaignEpisode> loadCampaignEpisodes(const std::string& manifestPath, bool keepGoing = false);
 
 /// The levels of a campaign manifest, in play order (paths resolved against the manifest's folder).
 std::vector<std::string> loadCampaign(const std::string& manifestPath);

@@ -5,6 +5,7 @@
 
 #include <abalike/design/ModelPlayer.hpp>
 #include <abalike/design/Solver.hpp>
+#include <abalike/level/Campaign.hpp>
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/level/LevelText.hpp>
 #include <abalike/level/SafeText.hpp>
@@ -93,19 +94,36 @@ std::vector<CheckItem> expand(const std::vector<std::string>& files, std::vector
             add(file, "");
             continue;
         }
+        // Every problem of the manifest at once, at its own lines: entries that are missing, listed twice or
+        // sandbox scenes, levels whose episode or id disagrees. The levels themselves are checked one by one below.
+        std::vector<LevelIssue> manifestIssues;
         try
         {
-            for (const CampaignEpisode& episode : loadCampaignEpisodes(file))
-                for (const std::string& level : episode.levelPaths)
-                    add(level, episode.id);
+            loadCampaignLevels(file, Catalog::builtin());
         }
         catch (const LevelLoadError& e)
         {
+            for (const LevelIssue& issue : e.issues())
+                if (canonical(issue.file) == canonical(file))
+                    manifestIssues.push_back(issue);
+        }
+        if (!manifestIssues.empty())
+        {
             FileReport report;
             report.file = file;
-            report.issues = e.issues();
-            report.reasons.push_back(std::to_string(e.issues().size()) + " error(s) in the campaign manifest");
+            report.reasons.push_back(std::to_string(manifestIssues.size()) + " error(s) in the campaign manifest");
+            report.issues = std::move(manifestIssues);
             manifestFailures.push_back(std::move(report));
+        }
+        try
+        {
+            for (const CampaignEpisode& episode : loadCampaignEpisodes(file, true))
+                for (const std::string& level : episode.levelPaths)
+                    add(level, episode.id);
+        }
+        catch (const LevelLoadError&)
+        {
+            // Unreadable as JSON: loadCampaignLevels has reported why.
         }
     }
     return items;

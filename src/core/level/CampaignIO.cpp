@@ -6,6 +6,7 @@
 #include <abalike/level/LevelIO.hpp>
 
 #include <filesystem>
+#include <map>
 
 namespace abalike
 {
@@ -44,7 +45,7 @@ bool isCampaignManifest(const std::string& path)
     }
 }
 
-std::vector<CampaignEpisode> loadCampaignEpisodes(const std::string& manifestPath)
+std::vector<CampaignEpisode> loadCampaignEpisodes(const std::string& manifestPath, bool keepGoing)
 {
     const std::string text = readJsonFile(manifestPath, kManifestText);
     const nlohmann::json root = parseJsonText(text, manifestPath, kManifestText);
@@ -53,6 +54,7 @@ std::vector<CampaignEpisode> loadCampaignEpisodes(const std::string& manifestPat
     r.duplicateKeys();
     r.safeText(root);
     std::vector<CampaignEpisode> out;
+    std::map<std::string, std::string> listedAt; // each level file once: canonical path -> pointer of its entry
     const auto folder = std::filesystem::path(manifestPath).parent_path();
     if (r.object(root, "", {"$schema", "format", "title", "episodes"}))
     {
@@ -80,27 +82,46 @@ std::vector<CampaignEpisode> loadCampaignEpisodes(const std::string& manifestPat
                     continue;
                 for (std::size_t l = 0; l < levels->size(); ++l)
                 {
+                    const std::string at = p + "/levels/" + std::to_string(l);
                     if ((*levels)[l].is_string())
                     {
-                        item.levelPaths.push_back((folder / (*levels)[l].get<std::string>()).string());
+                        const std::string name = (*levels)[l].get<std::string>();
+                        const std::filesystem::path path = folder / name;
+                        std::error_code ec;
+                        if (!std::filesystem::is_regular_file(path, ec))
+                        {
+                            r.error(at, "no level file \"" + name + "\" next to the manifest (expected " +
+                                            path.generic_string() + " to exist)");
+                            continue;
+                        }
+                        const auto [first, fresh] =
+                            listedAt.emplace(std::filesystem::weakly_canonical(path, ec).string(), at);
+                        if (!fresh)
+                        {
+                            r.error(at, "\"" + name + "\" is already listed at " + first->second +
+                                            " (expected each level once)");
+                            continue;
+                        }
+                        item.levelPaths.push_back(path.string());
+                        const auto [line, column] = locator.locate(at);
+                        item.levelPlaces.push_back({manifestPath, line, column, at, ""});
                         if (isSandboxScene(item.levelPaths.back()))
                         {
                             std::string message = "\"";
                             message += (*levels)[l].get<std::string>();
                             message += "\" is a sandbox scene (expected a level to play: a campaign lists no "
                                        "\"sandbox\": true scene)";
-                            r.error(p + "/levels/" + std::to_string(l), message);
+                            r.error(at, message);
                         }
                     }
                     else
-                        r.error(p + "/levels/" + std::to_string(l),
-                                "expected a level file name, got " + describeJsonType((*levels)[l]));
+                        r.error(at, "expected a level file name, got " + describeJsonType((*levels)[l]));
                 }
                 out.push_back(std::move(item));
             }
         }
     }
-    if (!r.ok())
+    if (!r.ok() && !keepGoing)
         throw LevelLoadError(r.take());
     return out;
 }
