@@ -3,6 +3,7 @@
 #include "RunGame.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <fstream>
 #include <iterator>
@@ -220,6 +221,39 @@ TEST_F(ScreenFlow, AMalformedScriptExitsTwoWithALocatedError)
               std::string::npos)
         << run.err;
     EXPECT_TRUE(run.trace.empty()) << "no window opens for a bad script";
+}
+
+TEST_F(ScreenFlow, PlayPackOpensThePacksFirstUnfinishedLevelAndInstalledPacksFollowTheCampaign)
+{
+    // A pack of two levels (1-1 and 1-2 under the ids p-1 and p-2, episode "A"), its first level won before.
+    const std::filesystem::path pack = m_dir.path() / "mypack";
+    std::filesystem::create_directories(pack);
+    const std::filesystem::path levels = std::filesystem::path(ABALIKE_SOURCE_DIR) / "levels";
+    int n = 0;
+    for (const char* from : {"1-1-first-flight.json", "1-2-the-long-shot.json"})
+    {
+        std::ifstream in(levels / from);
+        nlohmann::json level = nlohmann::json::parse(in);
+        level["id"] = "p-" + std::to_string(++n);
+        level["episode"] = "A";
+        std::ofstream(pack / ("l" + std::to_string(n) + ".json")) << level.dump(2);
+    }
+    std::ofstream(pack / "campaign.json")
+        << R"({"format": 1, "episodes": [{"id": "A", "levels": ["l1.json", "l2.json"]}]})";
+    std::ofstream(data() / "progress.json")
+        << R"({"format": 1, "levels": {"mypack/p-1": {"best_score": 30000, "stars": 2}}, "unlocked": ["1-1", "mypack/p-1", "mypack/p-2"]})";
+    const GameRun run = play("--pack '" + pack.string() + "' --frames 3");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"p-2"}));
+    EXPECT_EQ(run.values("level", "campaign_index"), (std::vector<std::string>{"26"})) << "after the 25 bundled levels";
+
+    // Installed (copied into the data folder's packs/), it follows the campaign in every run.
+    std::filesystem::create_directories(data() / "packs");
+    std::filesystem::copy(pack, data() / "packs" / "mypack", std::filesystem::copy_options::recursive);
+    const GameRun installed = play("--pack '" + (data() / "packs" / "mypack").string() + "' --frames 3");
+    ASSERT_EQ(installed.exitCode, 0) << installed.err;
+    EXPECT_EQ(installed.values("level", "id"), (std::vector<std::string>{"p-2"}));
+    EXPECT_EQ(installed.err.find("does not load"), std::string::npos) << installed.err;
 }
 
 } // namespace

@@ -18,6 +18,9 @@ struct CampaignLevel
     std::string path;        ///< the level file
     std::size_t episode = 0; ///< index into Campaign::episodes
     LevelDef level;
+    /// What progress is saved under: the level's id for the bundled campaign, "PACK/ID" for a level pack's.
+    std::string key;
+    std::string pack; ///< the level pack's name (its folder); empty for the bundled campaign
 };
 
 /// A campaign manifest with every level it lists loaded, in play order.
@@ -27,14 +30,23 @@ struct Campaign
     std::vector<CampaignEpisode> episodes;
     std::vector<CampaignLevel> levels;
 
-    /// Level ids in play order (what progress is keyed by).
+    /// Progress keys in play order (CampaignLevel::key: the level id, or PACK/ID in a level pack).
     std::vector<std::string> levelIds() const;
-    /// Index into levels of the level with that id.
-    std::optional<std::size_t> indexOf(const std::string& levelId) const;
+    /// Index into levels of the level with that progress key.
+    std::optional<std::size_t> indexOf(const std::string& levelKey) const;
 };
 
 /// Loads a manifest and every level it lists. Throws LevelLoadError with the problems of every file that does not
 /// load, so a designer sees them all at once.
 Campaign loadCampaignLevels(const std::string& manifestPath, const Catalog& catalog);
+
+/// Adds a level pack after the campaign's episodes: a folder with a campaign.json (the same manifest format), its
+/// levels keyed "NAME/ID" where NAME is the folder's name, its episodes titled "NAME: TITLE". Throws LevelLoadError
+/// (every problem of the pack) and leaves the campaign unchanged then.
+void appendLevelPack(Campaign& campaign, const std::string& packFolder, const Catalog& catalog);
+
+/// The level packs installed in a folder (the user data folder's packs/): its sub-folders that hold a
+/// campaign.json, by name.
+std::vector<std::string> installedLevelPacks(const std::string& packsFolder);
 
 } // namespace abalike

@@ -7,13 +7,17 @@
 #include "render/Font.hpp"
 #include "screens/App.hpp"
 
+#include <abalike/level/Campaign.hpp>
 #include <abalike/level/LevelIO.hpp>
+#include <abalike/level/SafeText.hpp>
 #include <abalike/save/DataDirectory.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace abalike::app
 {
@@ -24,6 +28,7 @@ namespace
 struct PlayArgs
 {
     std::string level;
+    std::string pack;
     std::vector<std::string> shots;
     WindowArgs window;
 };
@@ -58,11 +63,58 @@ int runPlayCommand(const PlayArgs& a)
     else
         campaign = loadCampaignLevels(options.campaignPath, Catalog::builtin());
 
+    // Level packs installed in the data folder follow the bundled campaign; one that does not load is skipped
+    // with a line saying why, so a broken pack never stops the game.
+    std::string packName;
+    for (const std::string& folder : installedLevelPacks((defaultDataDirectory() / "packs").string()))
+    {
+        try
+        {
+            appendLevelPack(campaign, folder, Catalog::builtin());
+        }
+        catch (const LevelLoadError& error)
+        {
+            std::cerr << "abalike: the level pack " << escapeForTerminal(folder) << " does not load, so it is skipped ("
+                      << (error.issues().empty() ? error.what() : error.issues().front().format()) << ")\n";
+        }
+    }
+    if (!a.pack.empty())
+    {
+        if (!a.level.empty())
+            throw UsageError("--pack: give a level pack or a level file, not both");
+        const std::filesystem::path folder = std::filesystem::absolute(a.pack).lexically_normal();
+        packName = (folder.filename().empty() ? folder.parent_path() : folder).filename().string();
+        const bool installed = std::any_of(campaign.levels.begin(), campaign.levels.end(),
+                                           [&](const CampaignLevel& l) { return l.pack == packName; });
+        if (!installed)
+            appendLevelPack(campaign, a.pack, Catalog::builtin()); // its errors end the command, every one shown
+    }
+
     SaveStore store(defaultDataDirectory());
     // A scripted run never writes the data folder, not even to set a damaged file aside.
     const bool scripted = options.scripted() || !a.window.script.empty();
     store.load(scripted ? SaveStore::Damaged::LeaveAlone : SaveStore::Damaged::SetAside);
     loadWindowScript(a.window, store, options);
+    if (!packName.empty())
+    {
+        // The pack's first level without a star, or its first level when every one has some.
+        std::optional<std::size_t> start;
+        for (std::size_t i = 0; i < campaign.levels.size(); ++i)
+        {
+            if (campaign.levels[i].pack != packName)
+                continue;
+            if (!start)
+                start = i;
+            const auto record = store.progress().levels.find(campaign.levels[i].key);
+            if (record == store.progress().levels.end() || record->second.stars == 0)
+            {
+                start = i;
+                break;
+            }
+        }
+        options.levelPath = campaign.levels[*start].path;
+        options.level = campaign.levels[*start].level;
+    }
     if (!haveDisplay())
         return kUsageExitCode;
     App app(std::move(options), std::move(campaign), std::move(store), loadGameFont());
@@ -77,6 +129,9 @@ CommandRunner addPlayCommand(CLI::App& app)
     CLI::App* cmd = app.add_subcommand(
         "play", "Open the game window: the title screen, or straight into a level when one is given");
     cmd->add_option("level", args->level, "level JSON file to play directly (live reload while it runs)");
+    cmd->add_option("--pack", args->pack,
+                    "a level pack (a folder with a campaign.json): its episodes follow the campaign's, and play opens "
+                    "its first unfinished level");
     cmd->add_option("--shot", args->shots,
                     "ANGLE,SPEED[,ABILITY_AT_S] to fire when a bird is ready; repeat for more (with no level: the "
                     "campaign's first level)")

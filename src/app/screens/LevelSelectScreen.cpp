@@ -53,7 +53,7 @@ void LevelSelectScreen::move(int dx, int dy)
 void LevelSelectScreen::play(std::size_t index)
 {
     m_selected = index;
-    if (m_app.isUnlocked(m_app.campaign().levels[index].level.id))
+    if (m_app.isUnlocked(m_app.campaign().levels[index].key))
         playCampaignLevel(m_app, index);
 }
 
@@ -198,7 +198,7 @@ void LevelSelectScreen::draw(sf::RenderTarget& target)
     for (std::size_t i = 0; i < campaign.levels.size(); ++i)
     {
         const sf::FloatRect& tile = m_tiles[i];
-        const std::string& id = campaign.levels[i].level.id;
+        const std::string& id = campaign.levels[i].key;
         const bool unlocked = m_app.isUnlocked(id);
         const bool selected = i == m_selected;
         sf::RectangleShape box({tile.width, tile.height});
@@ -235,10 +235,10 @@ void LevelSelectScreen::draw(sf::RenderTarget& target)
     if (font == nullptr || campaign.levels.empty())
         return;
     const CampaignLevel& chosen = campaign.levels[m_selected];
-    const bool unlocked = m_app.isUnlocked(chosen.level.id);
+    const bool unlocked = m_app.isUnlocked(chosen.key);
     float detailY = window.y - margin - detailHeight;
-    const auto record = m_app.progress().levels.find(chosen.level.id);
-    std::string heading = chosen.level.id + "  " + chosen.level.title;
+    const auto record = m_app.progress().levels.find(chosen.key);
+    std::string heading = chosen.key + "  " + chosen.level.title;
     if (record != m_app.progress().levels.end())
         heading += "   best " + formatPoints(record->second.bestScore);
     else if (!unlocked)

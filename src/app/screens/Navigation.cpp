@@ -26,7 +26,7 @@ std::size_t continueLevel(const App& app)
     std::size_t lastUnlocked = 0;
     for (std::size_t i = 0; i < campaign.levels.size(); ++i)
     {
-        const std::string& id = campaign.levels[i].level.id;
+        const std::string& id = campaign.levels[i].key;
         if (!app.isUnlocked(id))
             continue;
         lastUnlocked = i;

@@ -279,7 +279,8 @@ void PlayScreen::finishIfDone()
                                      {"stars", session.stars()}});
     // Only campaign levels count towards progress; a scene from a file or the editor is not the player's record.
     if (m_source.campaignIndex)
-        m_app.recordResult(session.level().id, session.score().total(), session.stars());
+        m_app.recordResult(m_app.campaign().levels[*m_source.campaignIndex].key, session.score().total(),
+                           session.stars());
     m_app.screens().push(std::make_unique<ResultsScreen>(m_app, *this));
 }
 

@@ -32,7 +32,7 @@ TitleScreen::TitleScreen(App& app)
       m_camera(Camera::fitLevel(m_scenery->level(), Catalog::builtin(), app.windowSize()))
 {
     const bool hasCampaign = !app.campaign().levels.empty();
-    const bool started = hasCampaign && app.progress().levels.count(app.campaign().levels.front().level.id) > 0;
+    const bool started = hasCampaign && app.progress().levels.count(app.campaign().levels.front().key) > 0;
     m_menu.setItems({
         {"play", started ? "Continue" : "Play", hasCampaign},
         {"levels", "Level select", hasCampaign},

@@ -1,5 +1,7 @@
 #include <abalike/level/Campaign.hpp>
 
+#include <algorithm>
+#include <filesystem>
 #include <map>
 
 namespace abalike
@@ -10,14 +12,14 @@ std::vector<std::string> Campaign::levelIds() const
     std::vector<std::string> ids;
     ids.reserve(levels.size());
     for (const CampaignLevel& entry : levels)
-        ids.push_back(entry.level.id);
+        ids.push_back(entry.key);
     return ids;
 }
 
-std::optional<std::size_t> Campaign::indexOf(const std::string& levelId) const
+std::optional<std::size_t> Campaign::indexOf(const std::string& levelKey) const
 {
     for (std::size_t i = 0; i < levels.size(); ++i)
-        if (levels[i].level.id == levelId)
+        if (levels[i].key == levelKey)
             return i;
     return std::nullopt;
 }
@@ -67,7 +69,8 @@ Campaign loadCampaignLevels(const std::string& manifestPath, const Catalog& cata
                 if (!fresh)
                     atEntry("id \"" + level.id + "\" is already used by the level at " + first->second +
                             " (expected every id once: progress is saved by id)");
-                campaign.levels.push_back({episode.levelPaths[l], e, std::move(level)});
+                const std::string key = level.id;
+                campaign.levels.push_back({episode.levelPaths[l], e, std::move(level), key, ""});
             }
             catch (const LevelLoadError& error)
             {
@@ -78,6 +81,55 @@ Campaign loadCampaignLevels(const std::string& manifestPath, const Catalog& cata
     if (!issues.empty())
         throw LevelLoadError(std::move(issues));
     return campaign;
+}
+
+void appendLevelPack(Campaign& campaign, const std::string& packFolder, const Catalog& catalog)
+{
+    const std::filesystem::path folder = std::filesystem::path(packFolder);
+    std::string name = folder.filename().string();
+    if (name.empty() || name == ".")
+        name = std::filesystem::absolute(folder).lexically_normal().filename().string();
+    if (name.empty())
+        name = std::filesystem::absolute(folder).parent_path().filename().string();
+    const std::filesystem::path manifest = folder / "campaign.json";
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(manifest, ec))
+        throw LevelLoadError(
+            {{manifest.string(), 0, 0, "",
+              "a level pack is a folder with a campaign.json (expected " + manifest.string() + " to exist)"}});
+    for (const CampaignLevel& existing : campaign.levels)
+        if (existing.pack == name)
+            throw LevelLoadError({{manifest.string(), 0, 0, "",
+                                   "a level pack named \"" + name +
+                                       "\" is already loaded (expected one per name: "
+                                       "progress is saved under it)"}});
+    Campaign pack = loadCampaignLevels(manifest.string(), catalog);
+    const std::size_t firstEpisode = campaign.episodes.size();
+    for (CampaignEpisode& episode : pack.episodes)
+    {
+        episode.title = name + ": " + (episode.title.empty() ? episode.id : episode.title);
+        campaign.episodes.push_back(std::move(episode));
+    }
+    for (CampaignLevel& level : pack.levels)
+    {
+        level.episode += firstEpisode;
+        level.pack = name;
+        level.key = name + "/" + level.level.id;
+        campaign.levels.push_back(std::move(level));
+    }
+}
+
+std::vector<std::string> installedLevelPacks(const std::string& packsFolder)
+{
+    std::vector<std::string> packs;
+    std::error_code ec;
+    if (!std::filesystem::is_directory(packsFolder, ec))
+        return packs;
+    for (const auto& entry : std::filesystem::directory_iterator(packsFolder, ec))
+        if (entry.is_directory(ec) && std::filesystem::is_regular_file(entry.path() / "campaign.json", ec))
+            packs.push_back(entry.path().string());
+    std::sort(packs.begin(), packs.end());
+    return packs;
 }
 
 } // namespace abalike

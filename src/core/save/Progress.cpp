@@ -56,10 +56,17 @@ bool Progress::unlock(const std::string& levelId)
 bool unlockCampaign(Progress& progress, const std::vector<std::string>& levelIds)
 {
     bool changed = false;
+    // Each chain unlocks on its own: the bundled campaign (plain ids) and every level pack ("PACK/ID").
+    const auto packOf = [](const std::string& key)
+    {
+        const auto slash = key.find('/');
+        return slash == std::string::npos ? std::string() : key.substr(0, slash);
+    };
     for (std::size_t i = 0; i < levelIds.size(); ++i)
     {
-        const auto previous = i == 0 ? progress.levels.end() : progress.levels.find(levelIds[i - 1]);
-        if (i == 0 || (previous != progress.levels.end() && previous->second.stars >= 1))
+        const bool first = i == 0 || packOf(levelIds[i]) != packOf(levelIds[i - 1]);
+        const auto previous = first ? progress.levels.end() : progress.levels.find(levelIds[i - 1]);
+        if (first || (previous != progress.levels.end() && previous->second.stars >= 1))
             changed = progress.unlock(levelIds[i]) || changed;
     }
     return changed;
