@@ -221,8 +221,9 @@ void LevelSelectScreen::draw(sf::RenderTarget& target)
         if (font != nullptr)
         {
             const sf::Color colour = unlocked ? palette::kText : palette::kTextDisabled;
-            drawLabel(target, *font, utf8(id), {tile.left + 0.5f * tile.width, tile.top + 4.0f * scale}, tileSize,
-                      colour, Align::Centre);
+            // The level's own id: a pack's episode heading already names the pack.
+            drawLabel(target, *font, utf8(campaign.levels[i].level.id),
+                      {tile.left + 0.5f * tile.width, tile.top + 4.0f * scale}, tileSize, colour, Align::Centre);
             if (!unlocked)
                 drawLabel(target, *font, utf8("locked"),
                           {tile.left + 0.5f * tile.width, tile.top + font->getLineSpacing(tileSize)}, smallSize, colour,
