@@ -473,3 +473,43 @@ TEST(SceneEditor, RandomEditsUndoAllTheWayBackAndRedoAllTheWayForward)
 
 } // namespace
 } // namespace abalike
+
+namespace abalike
+{
+namespace
+{
+
+TEST(SceneEditorMirror, MirrorsPositionsAnglesTrianglesAndPolygonsInOneUndoStep)
+{
+    LevelDef level = emptyScene();
+    level.blocks.push_back({BlockShape::Box, "wood", 20.0, 1.0, 0.25, 2.0, 10.0, 0.1});
+    level.blocks.push_back({BlockShape::Triangle, "stone", 22.0, 0.5, 2.0, 1.0, 0.0, 0.1});
+    level.terrain.push_back({0.0, 0.0, 0.0, 0.0, 0.0, {{30.0, 0.0}, {34.0, 0.0}, {30.0, 2.0}}});
+    level.terrain.back().x = 32.0;
+    level.terrain.back().y = 1.0;
+    level.terrain.back().widthM = 4.0;
+    level.terrain.back().heightM = 2.0;
+    SceneEditor editor(level);
+    editor.selectAll();
+    editor.mirrorSelection();
+    const LevelDef& m = editor.level();
+    // The selection spans x = 19.7 .. 34 (the tilted post reaches 19.7): the axis is at 26.85.
+    const double axis = 0.5 * (34.0 + (20.0 - 0.5 * (0.25 * std::cos(10 * 3.141592653589793 / 180) +
+                                                     2.0 * std::sin(10 * 3.141592653589793 / 180))));
+    EXPECT_NEAR(m.blocks[0].x, 2.0 * axis - 20.0, 1e-9);
+    EXPECT_NEAR(m.blocks[0].angleDeg, -10.0, 1e-9);
+    // The triangle's right angle moves from the bottom left to the bottom right: legs swapped, a quarter turn.
+    EXPECT_EQ(m.blocks[1].widthM, 1.0);
+    EXPECT_EQ(m.blocks[1].heightM, 2.0);
+    EXPECT_NEAR(m.blocks[1].angleDeg, 90.0, 1e-9);
+    // The polygon's points mirror about its own new centre.
+    ASSERT_EQ(m.terrain[0].points.size(), 3u);
+    EXPECT_NEAR(m.terrain[0].points[0][0] - m.terrain[0].points[1][0], 4.0, 1e-9);
+    EXPECT_NEAR(m.terrain[0].points[2][0], m.terrain[0].points[0][0], 1e-9);
+    editor.undo();
+    EXPECT_EQ(editor.level().blocks, level.blocks);
+    EXPECT_EQ(editor.level().terrain, level.terrain);
+}
+
+} // namespace
+} // namespace abalike

@@ -62,11 +62,29 @@ TEST(SceneSave, ASceneBuiltThroughTheModelSavesAsALevelThatPassesTheChecks)
     EXPECT_EQ(loaded.pigs, editor.level().pigs);
     const RestReport rest = checkRest(loaded);
     EXPECT_TRUE(rest.passed()) << rest.summary();
-    // Saving again changes nothing, and the file names its schema relative to itself.
+    // Saving again changes nothing. The schema is far from the temporary folder: a path there would break when
+    // the file is shared, so the new file names none.
     const std::string first = readText(path);
     editor.save(path, kSchema);
     EXPECT_EQ(readText(path), first);
-    EXPECT_NE(first.find(schemaReferenceFor(path, kSchema)), std::string::npos);
+    EXPECT_EQ(first.find("$schema"), std::string::npos) << first;
+}
+
+TEST(SceneSave, AFilesOwnSchemaReferenceIsKeptAndANewFileNextToTheSchemaGetsAShortOne)
+{
+    test::TempDir dir;
+    std::filesystem::create_directories(dir / "schema");
+    std::filesystem::copy_file(kSchema, dir / "schema" / "level.schema.json");
+    SceneEditor editor(emptyScene());
+    buildLevel(editor);
+    editor.save(dir / "new.json", dir / "schema" / "level.schema.json");
+    EXPECT_NE(readText(dir / "new.json").find("\"$schema\": \"schema/level.schema.json\""), std::string::npos);
+    // A hand-written file pointing at its author's own copy keeps that reference when the editor saves it.
+    std::string text = readText(dir / "new.json");
+    text.replace(text.find("schema/level.schema.json"), 24, "../mine/level.schema.json");
+    std::ofstream(dir / "mine.json") << text;
+    editor.save(dir / "mine.json", dir / "schema" / "level.schema.json");
+    EXPECT_NE(readText(dir / "mine.json").find("\"$schema\": \"../mine/level.schema.json\""), std::string::npos);
 }
 
 TEST(SceneSave, ALevelWithoutPigsIsRefusedAndNothingIsWritten)

@@ -29,6 +29,10 @@ enum class SelectMode
 /// A new sandbox scene: the ground, a slingshot at (0, 1.5), three red birds, Earth's gravity in vacuum, no pigs.
 LevelDef emptyScene();
 
+/// The "$schema" a save writes: an existing file's own value as written (none if it has none); for a new file the
+/// schema's path relative to it when that is short (no more than one folder up), else none.
+std::string schemaReferenceToWrite(const std::filesystem::path& path, const std::filesystem::path& schemaPath);
+
 /// The level editor's model, headless: a level being edited, the selection, snapping, and the history that makes
 /// every edit undoable. The app draws it and turns mouse and keys into these calls; tests drive it directly.
 /// Every edit keeps the level loadable: values out of range are refused (the edit returns why), positions and
@@ -79,6 +83,9 @@ public:
     std::string resizeObject(const ObjectRef& ref, double widthM, double heightM, const std::string& mergeKey = {});
     /// Copies the selection one grid step (at least 0.25 m) to the right and selects the copies.
     void duplicateSelection();
+    /// Mirrors the selection left to right about the vertical line through its bounding box's centre: positions,
+    /// angles (negated), triangles (their right angle moves to the other side) and terrain polygons; one undo step.
+    void mirrorSelection();
     /// Removes the selected blocks, pigs and terrain (the slingshot stays).
     void deleteSelection();
     /// Replaces one object's definition (the property panels). Returns why not, or an empty string.

@@ -129,6 +129,8 @@ void EditorScreen::menuBar()
         const bool any = !m_editor->selection().empty();
         if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, any))
             m_editor->duplicateSelection();
+        if (ImGui::MenuItem("Mirror left to right", "Ctrl+M", false, any))
+            m_editor->mirrorSelection();
         if (ImGui::MenuItem("Delete", "Del", false, any))
             m_editor->deleteSelection();
         if (ImGui::MenuItem("Rotate left 15\u00B0", "Q", false, any))

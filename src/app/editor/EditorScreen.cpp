@@ -235,6 +235,9 @@ void EditorScreen::handleKey(const sf::Event::KeyEvent& key)
         case K::D:
             m_editor->duplicateSelection();
             break;
+        case K::M:
+            m_editor->mirrorSelection();
+            break;
         case K::A:
             m_editor->selectAll();
             break;

@@ -27,6 +27,7 @@ EditorSource editorSourceFor(const std::filesystem::path& path)
         source.level = emptyScene();
         source.level.id = path.stem().string().empty() ? "level" : path.stem().string();
         source.level.title = source.level.id;
+        source.level.sandbox = false; // a level to play, unless the designer makes it a sandbox scene
         source.newFile = true;
         return source;
     }

@@ -10,7 +10,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <numbers>
 
 namespace abalike
@@ -117,13 +119,36 @@ LevelDef levelWithOnly(const LevelDef& level, const ObjectDef& def)
 
 } // namespace
 
+std::string schemaReferenceToWrite(const std::filesystem::path& path, const std::filesystem::path& schemaPath)
+{
+    // A file that has a "$schema" keeps it as written: it may point at a copy only its author has.
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(path, ec))
+    {
+        std::ifstream in(path, std::ios::binary);
+        const nlohmann::json root = nlohmann::json::parse(in, nullptr, false);
+        if (root.is_object())
+            return root.contains("$schema") && root["$schema"].is_string() ? root["$schema"].get<std::string>()
+                                                                           : std::string();
+    }
+    // A new file gets the schema's path only when it is short and relative (next to it or one folder up, as in
+    // levels/): a path into where the program is installed would break when the file is shared.
+    if (schemaPath.empty())
+        return {};
+    const std::string relative = schemaReferenceFor(path, schemaPath);
+    const bool absolute = !relative.empty() && relative.front() == '/';
+    const bool farUp = relative.rfind("../../", 0) == 0;
+    return absolute || farUp ? std::string() : relative;
+}
+
 LevelDef emptyScene()
 {
     LevelDef level;
     level.id = "sandbox";
     level.title = "Sandbox";
     level.sandbox = true;
-    level.slingshot = SlingshotDef{0.0, 1.5, 1200.0};
+    level.slingshot.x = 0.0; // the default band (1800 N at 2 m)
+    level.slingshot.y = 1.5;
     level.birds = {"red", "red", "red"};
     return level;
 }
@@ -421,6 +446,53 @@ std::string SceneEditor::resizeObject(const ObjectRef& ref, double widthM, doubl
     return changeObject(ref, def, "Resize " + describe(m_level, ref), mergeKey);
 }
 
+void SceneEditor::mirrorSelection()
+{
+    const std::vector<ObjectRef> refs = m_selection;
+    if (refs.empty())
+        return;
+    double left = 1e300;
+    double right = -1e300;
+    for (const ObjectRef& ref : refs)
+    {
+        const auto bounds = shapeBounds(objectShape(objectDef(m_level, ref), m_catalog));
+        left = std::min(left, bounds[0][0]);
+        right = std::max(right, bounds[1][0]);
+    }
+    const double axis = 0.5 * (left + right);
+    std::vector<ObjectDef> before;
+    std::vector<ObjectDef> after;
+    for (const ObjectRef& ref : refs)
+    {
+        before.push_back(objectDef(m_level, ref));
+        ObjectDef mirrored = before.back();
+        const auto centre = centreOf(mirrored);
+        mirrored = withCentre(mirrored, clampCoordinate(cleanMetres(2.0 * axis - centre[0])), centre[1]);
+        if (auto* block = std::get_if<BlockDef>(&mirrored))
+        {
+            if (block->shape == BlockShape::Triangle)
+            {
+                // The right angle at the bottom left, mirrored, is at the bottom right: the same triangle with its
+                // legs swapped, turned a quarter.
+                std::swap(block->widthM, block->heightM);
+                block->angleDeg = normaliseAngle(90.0 - block->angleDeg);
+            }
+            else
+                block->angleDeg = normaliseAngle(-block->angleDeg);
+        }
+        else if (auto* terrain = std::get_if<TerrainDef>(&mirrored))
+        {
+            if (terrain->isPolygon())
+                for (auto& point : terrain->points)
+                    point[0] = cleanMetres(2.0 * terrain->x - point[0]);
+            else
+                terrain->angleDeg = normaliseAngle(-terrain->angleDeg);
+        }
+        after.push_back(std::move(mirrored));
+    }
+    push(makeChangeObjects(labelFor("Mirror", refs.size()), refs, std::move(before), std::move(after), "mirror"));
+}
+
 void SceneEditor::duplicateSelection()
 {
     std::vector<ObjectDef> copies;
@@ -588,7 +660,7 @@ std::vector<LevelIssue> SceneEditor::save(const std::filesystem::path& path, con
             issue.file = path.string();
         throw LevelLoadError(std::move(problems));
     }
-    const std::string text = writeLevelJson(m_level, schemaReferenceFor(path, schemaPath));
+    const std::string text = writeLevelJson(m_level, schemaReferenceToWrite(path, schemaPath));
     // Read it back before writing: a file the editor writes always opens again.
     EditableLevel reread = parseLevelForEditing(text, path.string(), m_catalog);
     writeFileAtomically(path, text);
