@@ -4,7 +4,9 @@
 #include "cli/UsageError.hpp"
 
 #include <abalike/level/LevelIO.hpp>
+#include <abalike/save/AtomicWrite.hpp>
 #include <abalike/teach/ShotFeedback.hpp>
+#include <abalike/teach/ShotTable.hpp>
 
 #include <iostream>
 #include <memory>
@@ -20,6 +22,7 @@ struct SimulateArgs
     std::string level;
     std::vector<std::string> shots;
     bool json = false;
+    std::string csv;
 };
 
 int runSimulate(const SimulateArgs& a)
@@ -36,6 +39,17 @@ int runSimulate(const SimulateArgs& a)
     catch (const LaunchError& e)
     {
         throw UsageError(a.level + ": " + e.what());
+    }
+    if (!a.csv.empty())
+    {
+        try
+        {
+            writeFileAtomically(a.csv, shotTableCsv(*session));
+        }
+        catch (const std::exception& e)
+        {
+            throw UsageError("--csv " + a.csv + ": cannot write the file (" + e.what() + ")");
+        }
     }
     if (a.json)
     {
@@ -83,6 +97,9 @@ CommandRunner addSimulateCommand(CLI::App& app)
         ->required()
         ->allow_extra_args(false);
     cmd->add_flag("--json", args->json, "print one JSON object");
+    cmd->add_option("--csv", args->csv,
+                    "also write every shot's flight to FILE: one row per 1/60 s (shot, t, x, y, v, a, speed, kinetic "
+                    "and potential energy, work against drag), for a spreadsheet");
     return [args]
     {
         return runSimulate(*args);
