@@ -62,12 +62,15 @@ TEST(SceneSave, ASceneBuiltThroughTheModelSavesAsALevelThatPassesTheChecks)
     EXPECT_EQ(loaded.pigs, editor.level().pigs);
     const RestReport rest = checkRest(loaded);
     EXPECT_TRUE(rest.passed()) << rest.summary();
-    // Saving again changes nothing. The schema is far from the temporary folder: a path there would break when
-    // the file is shared, so the new file names none.
+    // Saving again changes nothing. The schema is in the source tree, not beside the temporary folder: a path
+    // there would break when the file is shared, so the new file names none.
     const std::string first = readText(path);
     editor.save(path, kSchema);
     EXPECT_EQ(readText(path), first);
     EXPECT_EQ(first.find("$schema"), std::string::npos) << first;
+    EXPECT_EQ(schemaReferenceToWrite(dir / "other.json", "/opt/abalike/share/abalike/schema/level.schema.json"), "");
+    EXPECT_EQ(schemaReferenceToWrite(dir / "levels" / "x.json", dir / "schema" / "level.schema.json"),
+              "../schema/level.schema.json");
 }
 
 TEST(SceneSave, AFilesOwnSchemaReferenceIsKeptAndANewFileNextToTheSchemaGetsAShortOne)

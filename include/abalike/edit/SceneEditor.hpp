@@ -30,7 +30,8 @@ enum class SelectMode
 LevelDef emptyScene();
 
 /// The "$schema" a save writes: an existing file's own value as written (none if it has none); for a new file the
-/// schema's path relative to it when that is short (no more than one folder up), else none.
+/// schema's path relative to it when the schema sits beside it (level.schema.json, schema/level.schema.json, or the
+/// same one folder up), else none.
 std::string schemaReferenceToWrite(const std::filesystem::path& path, const std::filesystem::path& schemaPath);
 
 /// The level editor's model, headless: a level being edited, the selection, snapping, and the history that makes

@@ -131,14 +131,19 @@ std::string schemaReferenceToWrite(const std::filesystem::path& path, const std:
             return root.contains("$schema") && root["$schema"].is_string() ? root["$schema"].get<std::string>()
                                                                            : std::string();
     }
-    // A new file gets the schema's path only when it is short and relative (next to it or one folder up, as in
-    // levels/): a path into where the program is installed would break when the file is shared.
+    // A new file gets the schema's path only when the schema sits beside it: "level.schema.json",
+    // "schema/level.schema.json" or the same one folder up ("../schema/level.schema.json", as in levels/). A path
+    // into another tree (where the program is installed, "../abalike-play/share/...") breaks when the file is shared.
     if (schemaPath.empty())
         return {};
     const std::string relative = schemaReferenceFor(path, schemaPath);
-    const bool absolute = !relative.empty() && relative.front() == '/';
-    const bool farUp = relative.rfind("../../", 0) == 0;
-    return absolute || farUp ? std::string() : relative;
+    std::vector<std::string> parts;
+    for (const auto& part : std::filesystem::path(relative).lexically_normal())
+        parts.push_back(part.string());
+    const std::size_t up = !parts.empty() && parts.front() == ".." ? 1 : 0;
+    const bool beside = !relative.empty() && relative.front() != '/' && parts.size() >= up + 1 &&
+                        parts.size() <= up + 2 && std::count(parts.begin(), parts.end(), "..") == static_cast<long>(up);
+    return beside ? relative : std::string();
 }
 
 LevelDef emptyScene()
