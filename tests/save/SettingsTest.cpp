@@ -56,7 +56,9 @@ TEST(Settings, AccessibilityAndDisplayKeysRoundTrip)
     settings.highContrast = true;
     settings.reducedMotion = true;
     settings.teachingOverlay = true;
+    settings.openAllLevels = true;
     const std::string text = settingsToJson(settings);
+    EXPECT_NE(text.find("\"open_all_levels\": true"), std::string::npos) << text;
     EXPECT_NE(text.find("\"palette\": \"colour_blind_safe\""), std::string::npos) << text;
     EXPECT_EQ(parseSettings(text), settings);
 }
@@ -74,6 +76,7 @@ TEST(Settings, AFileFromTheFirstReleaseStillReads)
     EXPECT_FALSE(old.highContrast);
     EXPECT_FALSE(old.reducedMotion);
     EXPECT_FALSE(old.teachingOverlay);
+    EXPECT_FALSE(old.openAllLevels);
 }
 
 TEST(Settings, NewKeysAreCheckedToo)

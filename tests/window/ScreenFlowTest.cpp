@@ -256,5 +256,13 @@ TEST_F(ScreenFlow, PlayPackOpensThePacksFirstUnfinishedLevelAndInstalledPacksFol
     EXPECT_EQ(installed.err.find("does not load"), std::string::npos) << installed.err;
 }
 
+TEST_F(ScreenFlow, PlayLevelOpensACampaignLevelByItsIdEvenLocked)
+{
+    const GameRun run = play("--level 3-2 --frames 3");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"3-2"}));
+    EXPECT_EQ(run.values("level", "campaign_index"), (std::vector<std::string>{"12"}));
+}
+
 } // namespace
 } // namespace abalike::test

@@ -33,6 +33,7 @@ struct Settings
     bool highContrast = false;    ///< solid panels, stronger outlines, text contrast of at least 7:1
     bool reducedMotion = false;   ///< no camera shake, fewer particles, no parallax drift
     bool teachingOverlay = false; ///< force arrows, energy bars and the other teaching aids on the play screen
+    bool openAllLevels = false;   ///< every campaign level playable (a class); progress and stars are still kept
 
     bool operator==(const Settings&) const = default;
 };

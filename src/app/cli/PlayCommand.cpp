@@ -29,6 +29,7 @@ struct PlayArgs
 {
     std::string level;
     std::string pack;
+    std::string levelId;
     std::vector<std::string> shots;
     WindowArgs window;
 };
@@ -77,6 +78,23 @@ int runPlayCommand(const PlayArgs& a)
             std::cerr << "abalike: the level pack " << escapeForTerminal(folder) << " does not load, so it is skipped ("
                       << (error.issues().empty() ? error.what() : error.issues().front().format()) << ")\n";
         }
+    }
+    if (!a.levelId.empty())
+    {
+        // A campaign level by its id (as level select shows it; a pack's as PACK/ID), for a class told "open 3-2".
+        if (!a.level.empty() || !a.pack.empty())
+            throw UsageError("--level: give a level id, a level file or a pack, one of them");
+        const std::optional<std::size_t> index = campaign.indexOf(a.levelId);
+        if (!index)
+        {
+            std::string ids;
+            for (const std::string& id : campaign.levelIds())
+                ids += (ids.empty() ? "" : ", ") + id;
+            throw UsageError("--level: no campaign level has the id \"" + a.levelId + "\" (expected one of: " + ids +
+                             ")");
+        }
+        options.levelPath = campaign.levels[*index].path;
+        options.level = campaign.levels[*index].level;
     }
     if (!a.pack.empty())
     {
@@ -129,6 +147,9 @@ CommandRunner addPlayCommand(CLI::App& app)
     CLI::App* cmd = app.add_subcommand(
         "play", "Open the game window: the title screen, or straight into a level when one is given");
     cmd->add_option("level", args->level, "level JSON file to play directly (live reload while it runs)");
+    cmd->add_option("--level", args->levelId,
+                    "a campaign level by its id (e.g. 3-2; a pack's as PACK/ID), opened directly even if it is "
+                    "still locked");
     cmd->add_option("--pack", args->pack,
                     "a level pack (a folder with a campaign.json): its episodes follow the campaign's, and play opens "
                     "its first unfinished level");

@@ -72,6 +72,8 @@ const char* labelOf(const std::string& id)
         return "Reduced motion";
     if (id == "teaching")
         return "Teaching overlay";
+    if (id == "open")
+        return "Open every level";
     return "Back";
 }
 } // namespace
@@ -79,7 +81,7 @@ const char* labelOf(const std::string& id)
 const std::vector<std::string>& SettingsScreen::rowIds()
 {
     static const std::vector<std::string> ids{"music",   "effects",  "mute",   "size",     "fullscreen", "text",
-                                              "palette", "contrast", "motion", "teaching", "back"};
+                                              "palette", "contrast", "motion", "teaching", "open",       "back"};
     return ids;
 }
 
@@ -110,6 +112,8 @@ std::string SettingsScreen::valueText(const std::string& id) const
         return onOff(s.reducedMotion);
     if (id == "teaching")
         return onOff(s.teachingOverlay);
+    if (id == "open")
+        return onOff(s.openAllLevels);
     return "";
 }
 
@@ -161,6 +165,8 @@ void SettingsScreen::change(const std::string& id, int direction)
         s.reducedMotion = !s.reducedMotion;
     else if (id == "teaching")
         s.teachingOverlay = !s.teachingOverlay;
+    else if (id == "open")
+        s.openAllLevels = !s.openAllLevels;
     else
         return;
     m_app.updateSettings(s);

@@ -69,6 +69,8 @@ Settings parseSettings(std::string_view text)
         settings.reducedMotion = readBool(*it, "/reduced_motion");
     if (const auto it = root.find("teaching_overlay"); it != root.end())
         settings.teachingOverlay = readBool(*it, "/teaching_overlay");
+    if (const auto it = root.find("open_all_levels"); it != root.end())
+        settings.openAllLevels = readBool(*it, "/open_all_levels");
     return settings;
 }
 
@@ -96,6 +98,7 @@ std::string settingsToJson(const Settings& settings)
     root["high_contrast"] = settings.highContrast;
     root["reduced_motion"] = settings.reducedMotion;
     root["teaching_overlay"] = settings.teachingOverlay;
+    root["open_all_levels"] = settings.openAllLevels;
     return dumpSaveJson(root);
 }
 
