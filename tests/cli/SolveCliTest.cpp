@@ -31,7 +31,8 @@ std::string simulateArgs(const std::string& level, const nlohmann::json& shots)
 TEST(SolveCli, SolutionReplaysToTheSameScoreWhateverTheThreadCount)
 {
     const std::string level = sourcePath("levels/1-4-high-and-low.json");
-    const RunResult two = runAbalike("solve " + level + " --json --threads 2");
+    // A short model player (3 runs; the default 40 is for measuring, not for tests).
+    const RunResult two = runAbalike("solve " + level + " --json --threads 2 --player-runs 3");
     ASSERT_EQ(two.exitCode, 0) << two.err;
     EXPECT_TRUE(two.err.empty()) << "no progress bar when stderr is not a terminal: " << two.err;
     const auto solution = nlohmann::json::parse(two.out);
@@ -39,6 +40,11 @@ TEST(SolveCli, SolutionReplaysToTheSameScoreWhateverTheThreadCount)
         EXPECT_TRUE(solution.contains(key)) << key;
     EXPECT_TRUE(solution["won"].get<bool>());
     EXPECT_GE(solution["stars"].get<int>(), 1);
+    ASSERT_TRUE(solution.contains("player"));
+    for (const char* key : {"runs", "wins", "win_share", "low90", "high90", "simulations", "seconds"})
+        EXPECT_TRUE(solution["player"].contains(key)) << key;
+    EXPECT_EQ(solution["player"]["runs"], 3);
+    EXPECT_LE(solution["player"]["low90"].get<double>(), solution["player"]["win_share"].get<double>());
 
     const RunResult replay = runAbalike(simulateArgs(level, solution["shots"]));
     ASSERT_EQ(replay.exitCode, 0) << replay.err;
@@ -47,9 +53,10 @@ TEST(SolveCli, SolutionReplaysToTheSameScoreWhateverTheThreadCount)
     EXPECT_EQ(played["won"], solution["won"]);
     EXPECT_EQ(played["stars"], solution["stars"]);
 
-    const RunResult one = runAbalike("solve " + level + " --json --threads 1");
+    const RunResult one = runAbalike("solve " + level + " --json --threads 1 --player-runs 0");
     ASSERT_EQ(one.exitCode, 0) << one.err;
     EXPECT_EQ(nlohmann::json::parse(one.out)["shots"], solution["shots"]);
+    EXPECT_FALSE(nlohmann::json::parse(one.out).contains("player")) << "--player-runs 0 skips the model player";
 }
 
 TEST(SolveCli, BadLevelExitsTwo)
