@@ -290,7 +290,9 @@ void EditorScreen::handleKey(const sf::Event::KeyEvent& key)
                 std::tie(w, h) = std::pair(b->widthM, b->heightM);
             else if (const auto* t = std::get_if<TerrainDef>(&def))
                 std::tie(w, h) = std::pair(t->widthM, t->heightM);
-            const double change = (key.code == K::RBracket ? 1.0 : -1.0) * std::max(step, 0.05);
+            // One rule for both: the grid step (0.05 m with the grid off); Shift chooses the height, not the step.
+            const double resizeStep = m_editor->snapSettings().grid ? m_editor->snapSettings().gridM : 0.05;
+            const double change = (key.code == K::RBracket ? 1.0 : -1.0) * resizeStep;
             if (w > 0.0)
             {
                 const std::string why =
