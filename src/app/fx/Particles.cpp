@@ -68,38 +68,34 @@ void Particles::burstBlock(std::string_view material, sf::Vector2f centreM, floa
     }
 }
 
-void Particles::burstPig(sf::Vector2f centreM, float radiusM, int count)
+void Particles::burstPuffs(sf::Vector2f centreM, float radiusM, int count, const PuffStyle& style)
 {
     for (int i = 0; i < count && m_pieces.size() < kMaxPieces; ++i)
     {
         Piece piece;
         piece.shape = Shape::Puff;
         const float angle = uniform(0.0f, 2.0f * std::numbers::pi_v<float>);
-        const float speed = uniform(0.4f, 1.6f);
-        piece.positionM = centreM + sf::Vector2f(std::cos(angle), std::sin(angle)) * (radiusM * 0.5f);
-        piece.velocityMps = {speed * std::cos(angle), speed * std::sin(angle) + 0.6f};
-        piece.sizeM = radiusM * uniform(0.35f, 0.6f);
-        piece.lifeS = uniform(0.6f, 1.0f);
-        piece.colour = i % 2 == 0 ? palette::kPig : sf::Color(245, 248, 240);
+        const float speed = uniform(style.minSpeed, style.maxSpeed);
+        piece.positionM = centreM + sf::Vector2f(std::cos(angle), std::sin(angle)) * (radiusM * style.startShare);
+        piece.velocityMps = {speed * std::cos(angle), speed * std::sin(angle) + style.rise};
+        piece.sizeM = radiusM * uniform(style.minSize, style.maxSize);
+        piece.lifeS = uniform(style.minLife, style.maxLife);
+        piece.colour = i % 2 == 0 ? style.even : style.odd;
         m_pieces.push_back(piece);
     }
 }
 
+void Particles::burstPig(sf::Vector2f centreM, float radiusM, int count)
+{
+    burstPuffs(centreM, radiusM, count,
+               {0.4f, 1.6f, 0.5f, 0.6f, 0.35f, 0.6f, 0.6f, 1.0f, palette::kPig, sf::Color(245, 248, 240)});
+}
+
 void Particles::burstBird(sf::Vector2f centreM, float radiusM, int count)
 {
-    for (int i = 0; i < count && m_pieces.size() < kMaxPieces; ++i)
-    {
-        Piece piece;
-        piece.shape = Shape::Puff;
-        const float angle = uniform(0.0f, 2.0f * std::numbers::pi_v<float>);
-        const float speed = uniform(0.3f, 1.0f);
-        piece.positionM = centreM + sf::Vector2f(std::cos(angle), std::sin(angle)) * (radiusM * 0.4f);
-        piece.velocityMps = {speed * std::cos(angle), speed * std::sin(angle) + 0.4f};
-        piece.sizeM = radiusM * uniform(0.4f, 0.7f);
-        piece.lifeS = uniform(0.5f, 0.8f);
-        piece.colour = i % 2 == 0 ? sf::Color(236, 236, 232, 220) : sf::Color(200, 200, 196, 200);
-        m_pieces.push_back(piece);
-    }
+    burstPuffs(
+        centreM, radiusM, count,
+        {0.3f, 1.0f, 0.4f, 0.4f, 0.4f, 0.7f, 0.5f, 0.8f, sf::Color(236, 236, 232, 220), sf::Color(200, 200, 196, 200)});
 }
 
 void Particles::burstBlast(sf::Vector2f centreM, float radiusM, int count)

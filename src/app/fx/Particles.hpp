@@ -59,6 +59,15 @@ private:
         sf::Color colour;
     };
 
+    /// A cloud of puffs: speeds, start (share of the radius), upward drift, sizes (share of the radius), lives,
+    /// and the two colours they alternate.
+    struct PuffStyle
+    {
+        float minSpeed, maxSpeed, startShare, rise, minSize, maxSize, minLife, maxLife;
+        sf::Color even, odd;
+    };
+    void burstPuffs(sf::Vector2f centreM, float radiusM, int count, const PuffStyle& style);
+
     /// Uniform in [lo, hi).
     float uniform(float lo, float hi);
 

@@ -33,6 +33,7 @@ PlayScreen::PlayScreen(App& app, PlaySource source)
     // On top of the shared layers: the toolbar sees clicks first, so a click on a button neither aims nor fires an
     // ability. (The editor's play mode has its own panels instead.)
     m_layers.push_back(std::make_unique<PlayToolbar>());
+    findRestProblems();
     startSession();
     if (!m_source.path.empty())
         m_watcher.emplace(m_source.path, Catalog::builtin());
@@ -49,13 +50,6 @@ void PlayScreen::startSession()
     m_frozen = false;
     resetAim();
     m_reloadErrors.clear();
-    m_restFindings.clear();
-    // A level file that does not stand plays, with what is wrong in the banner (cheap: 10 s of an untouched level
-    // simulate in milliseconds).
-    if (!m_source.path.empty())
-        for (const LevelIssue& issue :
-             restIssues(m_source.level, Catalog::builtin(), checkRest(m_source.level), m_source.path))
-            m_restFindings.push_back(issue.format());
     nlohmann::json event{{"id", m_source.level.id}, {"title", m_source.level.title}};
     if (m_source.campaignIndex)
         event["campaign_index"] = *m_source.campaignIndex;
@@ -105,6 +99,17 @@ void PlayScreen::resetAim()
     m_preview.reset();
 }
 
+void PlayScreen::findRestProblems()
+{
+    // A level file that does not stand plays, with what is wrong in the banner. Once per version of the file, not
+    // per restart: a large scene's 10 s rest check is not free.
+    m_restFindings.clear();
+    if (!m_source.path.empty())
+        for (const LevelIssue& issue :
+             restIssues(m_source.level, Catalog::builtin(), checkRest(m_source.level), m_source.path))
+            m_restFindings.push_back(issue.format());
+}
+
 void PlayScreen::pollLevelFile()
 {
     std::optional<LevelWatcher::Reload> reload = m_watcher ? m_watcher->poll() : std::nullopt;
@@ -121,6 +126,7 @@ void PlayScreen::pollLevelFile()
         return;
     }
     m_source.level = std::move(*reload->level);
+    findRestProblems();
     startSession();
 }
 

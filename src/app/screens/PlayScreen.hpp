@@ -99,6 +99,8 @@ private:
     void fireScriptedShot();
     /// Writes each block broken and pig defeated since the last step to the trace as a "defeat" event.
     void traceDefeats();
+    /// Runs the rest check on the level file as loaded (m_restFindings), for the banner.
+    void findRestProblems();
     void syncScriptedAim();
     double aimSpeedMps() const;
     void refreshPreview();
