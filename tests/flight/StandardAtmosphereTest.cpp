@@ -42,7 +42,7 @@ TEST(StandardAtmosphere, RefusesAltitudesItDoesNotCover)
     EXPECT_THROW(standardAtmosphereDensity(std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
 }
 
-TEST(GravityPresets, NameTheFiveBodiesOfTheSandbox)
+TEST(GravityPresets, NameTheFiveWorldsOfTheSandboxWithTheirAir)
 {
     const auto presets = gravityPresets();
     ASSERT_EQ(presets.size(), 5u);
@@ -53,6 +53,26 @@ TEST(GravityPresets, NameTheFiveBodiesOfTheSandbox)
         if (p.name == "Jupiter")
             jupiter = p.gravity;
     EXPECT_EQ(jupiter, 24.79);
+    // Each world brings its own air: Mars's is thin, the Moon has none, Titan's is thicker than Earth's.
+    for (const GravityPreset& p : presets)
+    {
+        if (p.name == "Earth")
+        {
+            EXPECT_EQ(p.airDensity, 1.2);
+        }
+        else if (p.name == "Moon")
+        {
+            EXPECT_EQ(p.airDensity, 0.0);
+        }
+        else if (p.name == "Mars")
+        {
+            EXPECT_EQ(p.airDensity, 0.020);
+        }
+        else if (p.name == "Titan")
+        {
+            EXPECT_GT(p.airDensity, 1.2);
+        }
+    }
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <regex>
 
 namespace abalike
 {
@@ -128,6 +129,66 @@ TEST(ShotFeedback, SentencesCarryTheShotsNumbers)
     const std::vector<std::string> moonLines = shotFeedback(vacuum, Catalog::builtin(), moon->shots().at(0));
     ASSERT_FALSE(moonLines.empty());
     EXPECT_NE(moonLines.back().find("g = 1.62"), std::string::npos) << moonLines.back();
+}
+
+/// Every number of a sentence, in order.
+std::vector<double> numbersIn(const std::string& text)
+{
+    static const std::regex number(R"(-?\d+(\.\d+)?)");
+    std::vector<double> out;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it)
+        out.push_back(std::stod(it->str()));
+    return out;
+}
+
+TEST(ShotFeedback, EveryNumberOfTheVacuumSentenceIsTheClosedForm)
+{
+    // From height h at speed v and angle a in vacuum: range v cos a (v sin a + sqrt(v^2 sin^2 a + 2 g h)) / g; the
+    // best angle atan(v / sqrt(v^2 + 2 g h)) with range v sqrt(v^2 + 2 g h) / g; from the ground, 45 degrees and
+    // v^2 / g. The sentence must state the height, since the lessons' v^2 sin 2a / g holds only from the ground.
+    const LevelDef moonLevel = campaignLevel("5-4-the-moon.json");
+    const double v = 9.0;
+    const double a = 40.0 * M_PI / 180.0;
+    const double g = 1.62;
+    const double h = moonLevel.slingshot.y - moonLevel.groundY;
+    const auto moon = simulateShots(moonLevel, {{40.0, v}});
+    const std::string sentence = shotFeedback(moonLevel, Catalog::builtin(), moon->shots().at(0)).back();
+    const std::vector<double> n = numbersIn(sentence);
+    const double range = v * std::cos(a) * (v * std::sin(a) + std::sqrt(std::pow(v * std::sin(a), 2) + 2 * g * h)) / g;
+    const double root = std::sqrt(v * v + 2 * g * h);
+    // "launched H m above flat ground, A° at V m/s lands R m away (g = G m/s²); B° would reach the furthest, F m
+    // (from the ground: 45°, v²/g = D m)."
+    ASSERT_EQ(n.size(), 9u) << sentence;
+    EXPECT_NEAR(n[0], h, 0.05) << sentence;
+    EXPECT_NEAR(n[1], 40.0, 0.05);
+    EXPECT_NEAR(n[2], v, 0.05);
+    EXPECT_NEAR(n[3], range, 0.06) << sentence;
+    EXPECT_NEAR(n[4], g, 0.005);
+    EXPECT_NEAR(n[5], std::atan(v / root) * 180.0 / M_PI, 0.06) << sentence;
+    EXPECT_NEAR(n[6], v * root / g, 0.06) << sentence;
+    EXPECT_EQ(n[7], 45.0);
+    EXPECT_NEAR(n[8], v * v / g, 0.06) << sentence;
+}
+
+TEST(ShotFeedback, TheDragSentenceCountsTheKineticEnergyTheBirdLaunchedWith)
+{
+    // "Air drag took L J of the K J kinetic energy the bird launched with (P %)": K = 1/2 m v^2, P = 100 L / K, and L
+    // is the energy balance's drag loss at the first contact.
+    const LevelDef air = campaignLevel("3-2-thick-air.json");
+    const auto session = simulateShots(air, {{air.referenceShot->angleDeg, air.referenceShot->speedMps}});
+    const ShotRecord& shot = session->shots().at(0);
+    ASSERT_TRUE(shot.energy.has_value());
+    std::string sentence;
+    for (const std::string& line : shotFeedback(air, Catalog::builtin(), shot))
+        if (line.find("Air drag took") != std::string::npos)
+            sentence = line;
+    ASSERT_FALSE(sentence.empty());
+    const std::vector<double> n = numbersIn(sentence);
+    ASSERT_GE(n.size(), 3u) << sentence;
+    const double kinetic = 0.5 * 4.0 * shot.speedMps * shot.speedMps;
+    EXPECT_NEAR(n[0], shot.energy->dragLossJ, 0.5) << sentence;
+    EXPECT_NEAR(n[1], kinetic, 0.5) << sentence;
+    EXPECT_NEAR(n[2], 100.0 * shot.energy->dragLossJ / kinetic, 0.5) << sentence;
 }
 
 } // namespace

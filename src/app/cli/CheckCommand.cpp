@@ -10,6 +10,7 @@
 #include <abalike/level/LevelText.hpp>
 #include <abalike/level/SafeText.hpp>
 #include <abalike/save/AtomicWrite.hpp>
+#include <abalike/teach/TextValues.hpp>
 #include <abalike/world/RestCheck.hpp>
 #include <abalike/world/RestFindings.hpp>
 
@@ -38,6 +39,7 @@ struct CheckArgs
     bool json = false;
     bool solve = false;
     bool fix = false;
+    bool texts = false;
     int threads = 0;
     std::size_t playerRuns = 40;
 };
@@ -356,6 +358,19 @@ nlohmann::ordered_json reportJson(const FileReport& r)
     return out;
 }
 
+/// The concept and the hints as the player reads them, their {...} values filled.
+void printTexts(const LevelDef& level)
+{
+    const auto show = [&](const std::string& label, const std::string& text)
+    {
+        if (!text.empty())
+            std::cout << "  " << label << ": " << escapeForTerminal(levelText(text, level, Catalog::builtin())) << '\n';
+    };
+    show("concept", level.lesson);
+    for (std::size_t i = 0; i < level.hints.size(); ++i)
+        show("hint " + std::to_string(i + 1), level.hints[i]);
+}
+
 int runCheck(const CheckArgs& a)
 {
     if (a.threads < 0 || a.threads > 256)
@@ -384,6 +399,8 @@ int runCheck(const CheckArgs& a)
             for (const std::string& change : r.fixes)
                 std::cout << escapeForTerminal("fixed " + r.file + ": " + change) << '\n';
             std::cout << escapeForTerminal(summaryLine(r)) << '\n';
+            if (a.texts && r.level)
+                printTexts(*r.level);
             // Every problem in the FILE:LINE:COL form editors jump to, on stderr like a compiler's.
             for (const LevelIssue& issue : r.issues)
                 std::cerr << issue.format() << '\n';
@@ -406,6 +423,8 @@ CommandRunner addCheckCommand(CLI::App& app)
     cmd->add_option("--player-runs", args->playerRuns,
                     "with --solve: plays of the model player, whose win rate is the level's difficulty (default 40; "
                     "0: none)");
+    cmd->add_flag("--texts", args->texts,
+                  "also print each level's concept and hints as the player reads them, their {...} values filled");
     cmd->add_flag("--fix", args->fix,
                   "snap bodies that float or overlap by up to 2 cm onto what is under them, rewriting just those "
                   "numbers in the file, and print each change");

@@ -270,9 +270,18 @@ void EditorScreen::environmentTab()
         const std::string label(preset.name);
         if (ImGui::Button(label.c_str()))
         {
+            // A world brings its air: Mars with Earth's air would teach the wrong drag.
             env.gravity = preset.gravity;
-            setProperties(next, "Gravity preset", "");
+            env.airDensity = preset.airDensity;
+            if (preset.airDensity <= 0.0)
+            {
+                env.windX = env.windY = 0.0; // wind acts only through drag
+                env.gusts.reset();
+            }
+            setProperties(next, "World preset", "");
         }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("g %.2f m/s\u00B2, air %.3g kg/m\u00B3", preset.gravity, preset.airDensity);
         ImGui::SameLine();
     }
     ImGui::NewLine();
@@ -487,7 +496,8 @@ void EditorScreen::birdTab()
             const std::string text =
                 describeBirdBody(m_scene->world().birdBody(customBirdType(*m_editor->level().customBird)));
             if (!text.empty())
-                ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.3f, 1.0f), "%s", "Box2D:");
+                ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.3f, 1.0f), "%s",
+                                   m_app.universityWording() ? "Box2D:" : "Physics engine:");
             if (!text.empty())
                 ImGui::TextWrapped("%s", text.c_str());
         }

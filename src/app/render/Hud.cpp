@@ -1,5 +1,7 @@
 #include "render/Hud.hpp"
 
+#include <abalike/teach/TextValues.hpp>
+
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
 #include "render/TextFormat.hpp"
@@ -210,7 +212,21 @@ void Hud::drawHint(sf::RenderTarget& target, sf::Vector2u size, float scale, con
           "R restart   \u00B7   Esc pause   \u00B7   F1 help",
           keysSize, palette::kTextDim);
     if (!level.hints.empty())
-        block(level.hints.front(), hintSize, palette::kText);
+        block(filledHint(level), hintSize, palette::kText);
+}
+
+const std::string& Hud::filledHint(const LevelDef& level) const
+{
+    const std::string& raw = level.hints.front();
+    if (raw != m_hintSource || !(level.environment == m_hintAir) || !(level.slingshot == m_hintSlingshot) ||
+        m_hintShown.empty())
+    {
+        m_hintSource = raw;
+        m_hintAir = level.environment;
+        m_hintSlingshot = level.slingshot;
+        m_hintShown = levelText(raw, level, Catalog::builtin());
+    }
+    return m_hintShown;
 }
 
 } // namespace abalike::app

@@ -36,7 +36,15 @@ private:
                            float left, float right, float below) const;
     void drawHint(sf::RenderTarget& target, sf::Vector2u size, float scale, const LevelDef& level) const;
 
+    /// The first hint with its {...} values filled, kept until the text, the air or the slingshot changes (a range
+    /// in a hint costs a range chart, not something to pay every frame).
+    const std::string& filledHint(const LevelDef& level) const;
+
     const sf::Font* m_font;
+    mutable std::string m_hintSource;
+    mutable std::string m_hintShown;
+    mutable EnvironmentDef m_hintAir;
+    mutable SlingshotDef m_hintSlingshot;
 };
 
 /// Text scale for a window: 1 at 1280x720.

@@ -1,5 +1,7 @@
 #include "screens/LevelSelectScreen.hpp"
 
+#include <abalike/teach/TextValues.hpp>
+
 #include "editor/EditorSource.hpp"
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
@@ -9,9 +11,24 @@
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <algorithm>
+#include <map>
 
 namespace abalike::app
 {
+
+namespace
+{
+/// A level's concept with its {...} values filled, computed once per level and text (a range costs a chart).
+const std::string& filledConcept(const LevelDef& level)
+{
+    static std::map<std::pair<std::string, std::string>, std::string> filled;
+    const auto key = std::make_pair(level.sourcePath + "\n" + level.id, level.lesson);
+    auto it = filled.find(key);
+    if (it == filled.end())
+        it = filled.emplace(key, levelText(level.lesson, level, Catalog::builtin())).first;
+    return it->second;
+}
+} // namespace
 
 LevelSelectScreen::LevelSelectScreen(App& app) : m_app(app), m_selected(continueLevel(app)) {}
 
@@ -248,7 +265,8 @@ void LevelSelectScreen::draw(sf::RenderTarget& target)
     drawLabel(target, *font, utf8("E: open in the editor"), {window.x - margin, detailY}, smallSize, palette::kTextDim,
               Align::Right);
     detailY += font->getLineSpacing(detailSize);
-    const std::vector<std::string> lesson = wrapText(*font, chosen.level.lesson, smallSize, window.x - 2.0f * margin);
+    const std::vector<std::string> lesson =
+        wrapText(*font, filledConcept(chosen.level), smallSize, window.x - 2.0f * margin);
     for (std::size_t l = 0; l < lesson.size() && l < 3; ++l, detailY += font->getLineSpacing(smallSize))
         drawLabel(target, *font, utf8(lesson[l]), {margin, detailY}, smallSize, palette::kText);
 }

@@ -2,7 +2,9 @@
 
 #include "render/TextFormat.hpp"
 
+#include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelFlight.hpp>
+#include <abalike/teach/TextValues.hpp>
 
 #include <cmath>
 
@@ -99,6 +101,47 @@ Guide massLesson(const LevelDef& level, const Catalog& catalog)
         "more momentum into what they hit."};
 }
 
+/// Materials: the strengths are the lesson level's own (its overrides applied), never typed.
+Guide materialsLesson(const LevelDef& level, const Catalog& base)
+{
+    const Catalog catalog = levelCatalog(level, base);
+    const auto strength = [&](const char* name)
+    {
+        const Material* material = catalog.findMaterial(name);
+        return formatFixed(material != nullptr ? material->strengthNs : 0.0, 0) + " N\u00B7s";
+    };
+    return {"Lesson: materials",
+            {overlayStep("the impact panel shows how much of a block's strength a hit used."),
+             {"Break the ice column: ice gives way at " + strength("ice") + " of impulse.",
+              [](const GuideContext& c)
+              {
+                  return brokenMaterial(c, "ice");
+              }},
+             {"Now the wood (" + strength("wood") + ") and the stone (" + strength("stone") +
+                  "): stone needs a heavy, fast hit, or a way around it.",
+              won}},
+            "Strength and density decide what breaks: hit ice anywhere, wood hard, stone only when you must."};
+}
+
+/// Gravity: the lesson level's g against Earth's.
+Guide gravityLesson(const LevelDef& level)
+{
+    const double g = level.environment.gravity;
+    const std::string ratio = formatFixed(g > 0.0 ? kEarthGravity / g : 0.0, 1);
+    return {
+        "Lesson: gravity",
+        {{"Press G: here g = " + formatFixed(g, 2) + " m/s\u00B2, so the chart's scale is " + ratio + " times Earth's.",
+          [](const GuideContext& c)
+          {
+              return c.chartOn;
+          }},
+         {"Launch at about 45\u00B0 with a gentle pull: the bird stays in the sky " + ratio +
+              " times as long as on Earth.",
+          launched},
+         {"Take out the pig.", won}},
+        "Range and flight time both grow as 1/g: the same launch crosses " + ratio + " times the field here."};
+}
+
 Guide lesson(const std::string& id, const LevelDef& level, const Catalog& catalog)
 {
     if (id == "lesson-angle")
@@ -135,17 +178,18 @@ Guide lesson(const std::string& id, const LevelDef& level, const Catalog& catalo
               won}},
             "Drag grows with the square of the speed: the faster the shot, the bigger the share the air takes."};
     if (id == "lesson-wind")
-        return {
-            "Lesson: wind",
-            {overlayStep("the green arrow is the wind's push."),
-             {"Launch into the headwind. The wind pushes through drag, on the velocity relative to the air.", launched},
-             {"Press G: the range chart includes the wind. Find an angle that still reaches the tower.",
-              [](const GuideContext& c)
-              {
-                  return c.chartOn;
-              }},
-             {"Take out the pig: higher and harder than in still air.", won}},
-            "A headwind shortens every shot and favours flatter ones; a tailwind carries high, slow shots."};
+        return {"Lesson: wind",
+                {overlayStep("the green arrow is the bird's velocity through the air, v \u2212 w."),
+                 {"Launch into the headwind. The wind has no force of its own: drag points against v \u2212 w, and "
+                  "against the wind that is a bigger push.",
+                  launched},
+                 {"Press G: the range chart includes the wind. Find an angle that still reaches the tower.",
+                  [](const GuideContext& c)
+                  {
+                      return c.chartOn;
+                  }},
+                 {"Take out the pig: higher and harder than in still air.", won}},
+                "A headwind shortens every shot and favours flatter ones; a tailwind carries high, slow shots."};
     if (id == "lesson-momentum")
         return {"Lesson: momentum and energy",
                 {overlayStep("after the first impact a panel shows momentum and energy."),
@@ -155,27 +199,9 @@ Guide lesson(const std::string& id, const LevelDef& level, const Catalog& catalo
                   won}},
                 "Momentum is shared in a collision; kinetic energy is not kept: it goes into breaking and heat."};
     if (id == "lesson-materials")
-        return {"Lesson: materials",
-                {overlayStep("the impact panel shows how much of a block's strength a hit used."),
-                 {"Break the ice column: ice gives way at 25 N\u00B7s of impulse.",
-                  [](const GuideContext& c)
-                  {
-                      return brokenMaterial(c, "ice");
-                  }},
-                 {"Now the wood (60 N\u00B7s) and the stone (300 N\u00B7s): stone needs a heavy, fast hit, or a way "
-                  "around it.",
-                  won}},
-                "Strength and density decide what breaks: hit ice anywhere, wood hard, stone only when you must."};
+        return materialsLesson(level, catalog);
     if (id == "lesson-gravity")
-        return {"Lesson: gravity",
-                {{"Press G: on the Moon (g = 1.62 m/s\u00B2) the chart's scale is six times Earth's.",
-                  [](const GuideContext& c)
-                  {
-                      return c.chartOn;
-                  }},
-                 {"Launch at about 45\u00B0 with a gentle pull: the bird hangs in the sky six times longer.", launched},
-                 {"Take out the pig.", won}},
-                "Range and flight time both grow as 1/g: the same pull crosses six times the field on the Moon."};
+        return gravityLesson(level);
     return {};
 }
 
@@ -190,7 +216,7 @@ Guide tutorialGuide()
              {"Power: pull further back, or press \u2192 and \u2190. The top panel shows how far the band is "
               "pulled, its force, the energy it stores and the launch speed that energy gives the bird.",
               powerChanged},
-             {"The white dots are the RK4 preview: where the bird will fly. Let go of the mouse, or press Space, to "
+             {"The white dots are the preview: where the bird will fly. Let go of the mouse, or press Space, to "
               "launch.",
               launched},
              {"Press T (now or while it flies): arrows show the forces on the bird, bars its energy.",

@@ -9,6 +9,7 @@
 #include <abalike/level/LevelWriter.hpp>
 #include <abalike/level/PolygonPartition.hpp>
 #include <abalike/level/SafeText.hpp>
+#include <abalike/teach/TextValues.hpp>
 #include <abalike/world/Catalog.hpp>
 
 #include <algorithm>
@@ -355,6 +356,19 @@ void readHints(LevelReader& r, const json& root, LevelDef& level)
     }
 }
 
+/// The {...} placeholders of the concept and the hints name values this level has (docs: levels/README.md).
+void checkTextPlaceholders(LevelReader& r, const LevelDef& level, const Catalog& catalog)
+{
+    const auto check = [&](const std::string& text, const std::string& pointer)
+    {
+        for (const TextValueError& e : checkText(text, level, catalog))
+            r.error(pointer, "character " + std::to_string(e.offset() + 1) + " of the text: " + e.what());
+    };
+    check(level.lesson, "/concept");
+    for (std::size_t i = 0; i < level.hints.size(); ++i)
+        check(level.hints[i], "/hints/" + std::to_string(i));
+}
+
 void readReferenceShot(LevelReader& r, const json& root, LevelDef& level, const Catalog& catalog)
 {
     const auto it = root.find("reference_shot");
@@ -457,6 +471,8 @@ LevelDef parseLevelText(std::string_view text, const std::string& fileName, cons
     readCustomBird(r, root, level);
     readStars(r, root, level);
     readReferenceShot(r, root, level, catalog);
+    if (r.ok())
+        checkTextPlaceholders(r, level, catalog);
     if (!r.ok())
         throw LevelLoadError(r.take());
 

@@ -51,7 +51,11 @@ std::string momentumSentence(const FirstImpact& impact)
         text += format(": that broke it (it could take only %.0f N\u00B7s more), so the bird flew on with the rest",
                        impact.strengthBeforeNs);
     else if (impact.damageNs > 0.0)
-        text += format(", a %.0f N\u00B7s blow", impact.damageNs);
+        // Damage counts every push in that step, the bird's and the ground's or a neighbour's pushing back: it can
+        // be more than the momentum the body gained, which is their sum with directions.
+        text += format("; it took %.0f N\u00B7s of impulse as damage in that step, from the bird and from what it "
+                       "rests on (1 N\u00B7s = 1 kg\u00B7m/s), of the %.0f N\u00B7s it could take",
+                       impact.damageNs, impact.strengthBeforeNs);
     return text + ".";
 }
 
@@ -98,11 +102,11 @@ std::vector<std::string> shotFeedback(const LevelDef& level, const Catalog& cata
         if (shot.energy && launchJ > 0.0 && std::abs(shot.energy->dragLossJ) >= kDragShareWorth * launchJ)
         {
             const double loss = shot.energy->dragLossJ;
-            std::string text = loss >= 0.0 ? format("Air drag took %.0f J of the %.0f J launch energy (%.0f %%) "
-                                                    "before the first contact",
+            std::string text = loss >= 0.0 ? format("Air drag took %.0f J of the %.0f J kinetic energy the bird "
+                                                    "launched with (%.0f %%) before the first contact",
                                                     loss, launchJ, 100.0 * loss / launchJ)
                                            : format("The wind pushed %.0f J into the flight on top of the %.0f J "
-                                                    "launch energy before the first contact",
+                                                    "kinetic energy the bird launched with, before the first contact",
                                                     -loss, launchJ);
             if (airless && range)
                 text += format("; in vacuum this launch would land %.1f m away instead of %.1f m", *airless, *range);
@@ -117,10 +121,14 @@ std::vector<std::string> shotFeedback(const LevelDef& level, const Catalog& cata
         // No air: the path is a parabola, and the lesson is the angle.
         const RangeChart chart = rangeChart(launch, 0.0, 90.0, 1.0);
         if (chart.bestAngleDeg && chart.bestRangeM)
-            sentences.push_back(format("With no air, %.1f\u00B0 at %.1f m/s lands %.1f m away on flat ground "
-                                       "(g = %.2f m/s\u00B2); %.1f\u00B0 would reach the furthest, %.1f m.",
-                                       shot.angleDeg, shot.speedMps, *range, launch.model.gravity, *chart.bestAngleDeg,
-                                       *chart.bestRangeM));
+            // Say the height: from a raised slingshot the range is not v^2 sin 2theta / g and the best angle is not
+            // 45 degrees, which is what the lessons teach for a launch from the ground.
+            sentences.push_back(format("With no air, launched %.1f m above flat ground, %.1f\u00B0 at %.1f m/s lands "
+                                       "%.1f m away (g = %.2f m/s\u00B2); %.1f\u00B0 would reach the furthest, %.1f m "
+                                       "(from the ground: 45\u00B0, v\u00B2/g = %.1f m).",
+                                       launch.heightM, shot.angleDeg, shot.speedMps, *range, launch.model.gravity,
+                                       *chart.bestAngleDeg, *chart.bestRangeM,
+                                       shot.speedMps * shot.speedMps / launch.model.gravity));
     }
     if (sentences.size() > kMaxSentences)
         sentences.resize(kMaxSentences);
