@@ -6,7 +6,9 @@
 #include <cstdlib>
 #include <fstream>
 
+#include <filesystem>
 #include <gtest/gtest.h>
+#include <regex>
 
 namespace abalike::test
 {
@@ -57,6 +59,118 @@ TEST_F(TeachFlow, TTogglesTheTeachingOverlaySetting)
     EXPECT_FALSE(std::filesystem::exists(data() / "settings.json"));
 }
 
+namespace
+{
+/// Every text the run's last frame showed, joined by newlines.
+std::string shownTexts(const GameRun& run)
+{
+    std::string all;
+    for (const nlohmann::json& line : run.trace)
+        if (line.value("event", "") == "texts")
+            for (const nlohmann::json& text : line["shown"])
+                all += text.get<std::string>() + "\n";
+    return all;
+}
+} // namespace
+
+TEST_F(TeachFlow, SchoolWordingNamesNoMachineryAndUniversityDoes)
+{
+    // In flight with the teaching overlay: forces, energy, the why panel, the toolbar and its tooltip, the hint.
+    const std::string args = sourceFile("levels/3-4-headwind.json") + " --shot 40,28 --frames 60" +
+                             script(R"([{"frame": 2, "key": "T"}, {"frame": 3, "key": "V"},
+        {"frame": 50, "mouse": "move", "x": 1000, "y": 25}])");
+    const std::regex machinery(R"(RK4|Box2D|TOI|chord)");
+    for (const char* wording : {"", " --wording school"})
+    {
+        const GameRun run = play(args + wording);
+        ASSERT_EQ(run.exitCode, 0) << run.err;
+        const std::string texts = shownTexts(run);
+        EXPECT_NE(texts.find("Why preview and world can differ"), std::string::npos) << texts;
+        EXPECT_FALSE(std::regex_search(texts, machinery)) << texts;
+    }
+    const GameRun university = play(args + " --wording university");
+    ASSERT_EQ(university.exitCode, 0) << university.err;
+    EXPECT_TRUE(std::regex_search(shownTexts(university), machinery)) << shownTexts(university);
+
+    // The help screen lists the integrator tools only at university wording.
+    const std::string help =
+        sourceFile("levels/3-4-headwind.json") + " --frames 10" + script(R"([{"frame": 2, "key": "F1"}])");
+    const GameRun schoolHelp = play(help);
+    ASSERT_EQ(schoolHelp.exitCode, 0) << schoolHelp.err;
+    EXPECT_NE(shownTexts(schoolHelp).find("Controls"), std::string::npos) << shownTexts(schoolHelp);
+    EXPECT_FALSE(std::regex_search(shownTexts(schoolHelp), machinery)) << shownTexts(schoolHelp);
+    // Its second page has the teaching rows (PageDown).
+    const std::string helpPage2 = sourceFile("levels/3-4-headwind.json") + " --frames 10" +
+                                  script(R"([{"frame": 2, "key": "F1"}, {"frame": 4, "key": "PageDown"}])");
+    const GameRun schoolPage2 = play(helpPage2);
+    EXPECT_NE(shownTexts(schoolPage2).find("Slow motion"), std::string::npos) << shownTexts(schoolPage2);
+    EXPECT_FALSE(std::regex_search(shownTexts(schoolPage2), machinery)) << shownTexts(schoolPage2);
+    const GameRun universityPage2 = play(helpPage2 + " --wording university");
+    EXPECT_NE(shownTexts(universityPage2).find("RK4 walkthrough"), std::string::npos) << shownTexts(universityPage2);
+
+    // A wrong word is a usage error, not a silent default.
+    const GameRun wrong = play(help + " --wording college");
+    EXPECT_EQ(wrong.exitCode, 2);
+    EXPECT_NE(wrong.err.find("--wording: expected school or university, got \"college\""), std::string::npos)
+        << wrong.err;
+}
+
+TEST_F(TeachFlow, SlowMotionStepsTheSameWorldAtAFractionOfThePace)
+{
+    // The same shot at real time and at half speed (Z): the same defeats at the same game times, each shown about
+    // twice as many frames later. Slow motion shows the physics more slowly; it does not change it.
+    const std::string level = sourceFile("levels/3-1-tailwind.json") + " --shot 30,30";
+    const GameRun real = play(level + " --frames 300");
+    const GameRun half = play(level + " --frames 600" + script(R"([{"frame": 1, "key": "Z"}])"));
+    ASSERT_EQ(real.exitCode, 0) << real.err;
+    ASSERT_EQ(half.exitCode, 0) << half.err;
+    const auto defeats = [](const GameRun& run)
+    {
+        std::vector<nlohmann::json> list;
+        for (nlohmann::json line : run.trace)
+            if (line.value("event", "") == "defeat")
+                list.push_back(line);
+        return list;
+    };
+    const std::vector<nlohmann::json> atReal = defeats(real);
+    const std::vector<nlohmann::json> atHalf = defeats(half);
+    ASSERT_GE(atReal.size(), 5u);
+    ASSERT_EQ(atHalf.size(), atReal.size());
+    for (std::size_t i = 0; i < atReal.size(); ++i)
+    {
+        const int realFrame = atReal[i]["frame"].get<int>();
+        const int halfFrame = atHalf[i]["frame"].get<int>();
+        EXPECT_NEAR(halfFrame, 2 * realFrame, 4) << i;
+        nlohmann::json a = atReal[i], b = atHalf[i];
+        a.erase("frame");
+        b.erase("frame");
+        EXPECT_EQ(a, b) << i;
+    }
+    EXPECT_EQ(half.values("finished", "score"), real.values("finished", "score"));
+}
+
+TEST_F(TeachFlow, TheExportKeyWritesEveryShotAsCsvInTheDataFolder)
+{
+    const GameRun run =
+        play(sourceFile("levels/3-1-tailwind.json") + " --shot 30,30 --frames 200" +
+             script(R"([{"frame": 1, "key": "E"}, {"frame": 150, "key": "E"}, {"frame": 160, "key": "E"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    // Before the first shot there is nothing to export, and it says so; then two exports, never overwritten.
+    EXPECT_NE(run.err.find("No shot to export yet"), std::string::npos) << run.err;
+    const std::filesystem::path first = data() / "exports" / "3-1-shots-1.csv";
+    const std::filesystem::path second = data() / "exports" / "3-1-shots-2.csv";
+    ASSERT_TRUE(std::filesystem::exists(first)) << run.err;
+    ASSERT_TRUE(std::filesystem::exists(second));
+    std::ifstream in(first);
+    std::string header;
+    std::getline(in, header);
+    EXPECT_EQ(header, "shot,t_s,x_m,y_m,vx_mps,vy_mps,ax_mps2,ay_mps2,speed_mps,kinetic_j,potential_j,drag_work_j");
+    int rows = 0;
+    for (std::string line; std::getline(in, line);)
+        rows += line.rfind("1,", 0) == 0 ? 1 : 0;
+    EXPECT_GT(rows, 60); // more than a second of flight at 1/60 s
+}
+
 TEST_F(TeachFlow, TheWalkthroughHoldsTheWorldStill)
 {
     // The reference shot of 3-1 wins the level in about 6 s; with the walkthrough started in flight and never left,
@@ -65,7 +179,7 @@ TEST_F(TeachFlow, TheWalkthroughHoldsTheWorldStill)
     const GameRun free = play(level + " --frames 600");
     ASSERT_EQ(free.exitCode, 0) << free.err;
     EXPECT_EQ(free.values("finished", "won"), (std::vector<std::string>{"true"}));
-    const GameRun held = play(level + " --frames 600" + script(R"([{"frame": 100, "key": "K"},
+    const GameRun held = play(level + " --frames 600 --wording university" + script(R"([{"frame": 100, "key": "K"},
         {"frame": 110, "key": "Space"}, {"frame": 120, "key": "RBracket"}])"));
     ASSERT_EQ(held.exitCode, 0) << held.err;
     EXPECT_TRUE(held.values("finished", "won").empty());
@@ -113,9 +227,9 @@ TEST_F(TeachFlow, TheTraceRecordsEveryDefeatAsSimulateDoes)
 TEST_F(TeachFlow, EveryTeachingKeyInFlightAndWhileAiming)
 {
     const std::string shot = m_dir.file("teach.png");
-    const GameRun run =
-        play(sourceFile("levels/3-5-gusts.json") + " --shot 23.8,25.5 --frames 520 --screenshot '" + shot + "'" +
-             script(R"([{"frame": 2, "key": "T"}, {"frame": 3, "key": "G"}, {"frame": 4, "key": "I"},
+    const GameRun run = play(sourceFile("levels/3-5-gusts.json") +
+                             " --shot 23.8,25.5 --frames 520 --wording university --screenshot '" + shot + "'" +
+                             script(R"([{"frame": 2, "key": "T"}, {"frame": 3, "key": "G"}, {"frame": 4, "key": "I"},
         {"frame": 5, "key": "LBracket"}, {"frame": 6, "key": "I"}, {"frame": 7, "key": "I"}, {"frame": 8, "key": "RBracket"},
         {"frame": 90, "mouse": "move", "x": 400, "y": 400},
         {"frame": 95, "mouse": "press", "button": "right", "x": 100, "y": 600},

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -16,6 +17,20 @@ enum class Palette
 
 /// The name of a palette in settings.json ("standard", "colour_blind_safe").
 const char* paletteName(Palette palette);
+
+/// How the game words its physics. School (ages 14-16, the default) names the ideas without the numerical
+/// machinery: no "RK4", "Box2D", "TOI" or "chord cast" in any text, and the integrator tools (the RK4 walkthrough,
+/// the integrator comparison) are left out. University shows everything at full depth.
+enum class Wording
+{
+    School,
+    University,
+};
+
+/// "school" or "university", as in settings.json and --wording.
+const char* wordingName(Wording wording);
+/// The wording of that name; nullopt for any other text.
+std::optional<Wording> parseWording(std::string_view name);
 
 /// The player's preferences. Every field has a default, and a settings file may leave any of them out.
 struct Settings
@@ -34,6 +49,7 @@ struct Settings
     bool reducedMotion = false;   ///< no camera shake, fewer particles, no parallax drift
     bool teachingOverlay = false; ///< force arrows, energy bars and the other teaching aids on the play screen
     bool openAllLevels = false;   ///< every campaign level playable (a class); progress and stars are still kept
+    Wording wording = Wording::School;
 
     bool operator==(const Settings&) const = default;
 };

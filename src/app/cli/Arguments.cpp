@@ -1,5 +1,7 @@
 #include "cli/Arguments.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include "cli/UsageError.hpp"
 
 #include <algorithm>
@@ -154,6 +156,22 @@ FlightModel parseFlightModel(const FlightModelArgs& a)
     if (const std::string problem = validateFlightModel(model); !problem.empty())
         throw UsageError(problem);
     return model;
+}
+
+void addWordingOption(CLI::App& command, std::string& wording)
+{
+    command.add_option("--wording", wording,
+                       "school (ages 14-16: no RK4, Box2D or other machinery in any text) or university (full depth); "
+                       "default: the saved setting, school at first");
+}
+
+std::optional<Wording> parseWordingOption(const std::string& text)
+{
+    if (text.empty())
+        return std::nullopt;
+    if (const std::optional<Wording> wording = parseWording(text))
+        return wording;
+    throw UsageError("--wording: expected school or university, got \"" + text + "\"");
 }
 
 } // namespace abalike::app

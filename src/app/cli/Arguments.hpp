@@ -1,6 +1,7 @@
 #pragma once
 
 #include <abalike/game/GameSession.hpp>
+#include <abalike/save/Settings.hpp>
 
 #include <CLI/CLI.hpp>
 #include <array>
@@ -43,5 +44,10 @@ void addFlightModelOptions(CLI::App& command, FlightModelArgs& args, bool gusts 
 
 /// The flight model the options describe; throws UsageError naming the option for anything invalid.
 FlightModel parseFlightModel(const FlightModelArgs& args);
+
+/// Registers --wording (school or university) on a subcommand (play, edit, simulate).
+void addWordingOption(CLI::App& command, std::string& wording);
+/// The wording --wording asks for; nullopt when it was not given. Throws UsageError for any other word.
+std::optional<Wording> parseWordingOption(const std::string& text);
 
 } // namespace abalike::app

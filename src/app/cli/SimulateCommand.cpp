@@ -23,6 +23,7 @@ struct SimulateArgs
     std::vector<std::string> shots;
     bool json = false;
     std::string csv;
+    std::string wording;
 };
 
 int runSimulate(const SimulateArgs& a)
@@ -30,6 +31,7 @@ int runSimulate(const SimulateArgs& a)
     std::vector<ScriptedShot> shots;
     for (const std::string& text : a.shots)
         shots.push_back(parseShot(text));
+    const bool university = parseWordingOption(a.wording).value_or(Wording::School) == Wording::University;
     const LevelDef level = loadLevel(a.level, Catalog::builtin());
     std::unique_ptr<GameSession> session;
     try
@@ -80,6 +82,10 @@ int runSimulate(const SimulateArgs& a)
             std::cout << "no contact\n";
         for (const std::string& sentence : shotFeedback(level, Catalog::builtin(), shot))
             std::cout << "    " << sentence << '\n';
+        if (university && shot.actualContact)
+            std::cout << "    Method: the preview and the world integrate the flight with the same RK4 steps of "
+                      << session->world().dt() << " s; the preview casts each step's chord against the level (Box2D "
+                      << "TOI), and the world hands the bird to Box2D at the first contact.\n";
     }
     return 0;
 }
@@ -97,6 +103,7 @@ CommandRunner addSimulateCommand(CLI::App& app)
         ->required()
         ->allow_extra_args(false);
     cmd->add_flag("--json", args->json, "print one JSON object");
+    addWordingOption(*cmd, args->wording);
     cmd->add_option("--csv", args->csv,
                     "also write every shot's flight to FILE: one row per 1/60 s (shot, t, x, y, v, a, speed, kinetic "
                     "and potential energy, work against drag), for a spreadsheet");

@@ -30,6 +30,7 @@ void addWindowOptions(CLI::App& command, WindowArgs& args)
                        "JSON array of timed input events (keys, mouse, wheel, text) injected like real input");
     command.add_option("--trace", args.trace, "write what happens (screens, levels, shots, results) as JSON lines");
     command.add_option("--size", args.size, "window size WIDTHxHEIGHT (default: the saved size, 1280x720 at first)");
+    addWordingOption(command, args.wording);
 }
 
 void applyWindowOptions(const WindowArgs& args, AppOptions& options)
@@ -56,6 +57,7 @@ void applyWindowOptions(const WindowArgs& args, AppOptions& options)
         options.width = width;
         options.height = height;
     }
+    options.wording = parseWordingOption(args.wording);
 }
 
 void loadWindowScript(const WindowArgs& args, const SaveStore& store, AppOptions& options)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "cli/Arguments.hpp"
 #include "screens/AppOptions.hpp"
 
 #include <CLI/CLI.hpp>
@@ -19,12 +20,13 @@ struct WindowArgs
     std::string script;
     std::string trace;
     std::string size;
+    std::string wording;
 };
 
-/// Registers --frames, --screenshot, --script, --trace and --size on a subcommand.
+/// Registers --frames, --screenshot, --script, --trace, --size and --wording on a subcommand.
 void addWindowOptions(CLI::App& command, WindowArgs& args);
 
-/// Checks --frames, --screenshot, --trace and --size and fills them into options. Throws UsageError.
+/// Checks --frames, --screenshot, --trace, --size and --wording and fills them into options. Throws UsageError.
 void applyWindowOptions(const WindowArgs& args, AppOptions& options);
 
 /// Loads --script, if given: its coordinates are window pixels of the window the run opens (--size, else the saved

@@ -94,7 +94,7 @@ void ScenePlay::handleEvent(const sf::Event& event)
 
 void ScenePlay::fixedUpdate()
 {
-    if (!m_frozen)
+    if (!m_frozen && m_slowMotion.takeStep())
         physicsStep();
 }
 

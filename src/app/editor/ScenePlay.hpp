@@ -61,6 +61,7 @@ public:
     bool frozen() const override { return m_frozen; }
     void setFrozen(bool frozen) override { m_frozen = frozen; }
     void stepOnce() override;
+    SlowMotion& slowMotion() override { return m_slowMotion; }
 
 private:
     void physicsStep();
@@ -75,6 +76,7 @@ private:
     std::optional<ScriptedShot> m_requestedLaunch;
     bool m_abilityRequested = false;
     bool m_frozen = false;
+    SlowMotion m_slowMotion;
     std::optional<PredictedFlight> m_preview;
     bool m_previewStale = true;
     WorldRenderer m_world;

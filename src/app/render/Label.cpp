@@ -43,9 +43,24 @@ std::vector<std::string> wrapText(const sf::Font& font, std::string_view text, u
     return lines;
 }
 
+namespace
+{
+std::vector<std::string>* g_drawnTextSink = nullptr;
+} // namespace
+
+void setDrawnTextSink(std::vector<std::string>* sink)
+{
+    g_drawnTextSink = sink;
+}
+
 sf::FloatRect drawLabel(sf::RenderTarget& target, const sf::Font& font, const sf::String& text, sf::Vector2f position,
                         unsigned size, sf::Color colour, Align align)
 {
+    if (g_drawnTextSink != nullptr)
+    {
+        const std::basic_string<sf::Uint8> utf8Text = text.toUtf8();
+        g_drawnTextSink->emplace_back(utf8Text.begin(), utf8Text.end());
+    }
     sf::Text label(text, font, size);
     const float width = measureText(font, text, size).x;
     if (align == Align::Centre)

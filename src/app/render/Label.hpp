@@ -30,6 +30,9 @@ std::vector<std::string> wrapText(const sf::Font& font, std::string_view text, u
 
 /// Draws one line of text with a soft shadow; `position` is the top of the line at the aligned point.
 /// Returns the bounds it covers.
+/// While set, every text drawLabel draws is also appended here (the trace's record of what one frame shows).
+void setDrawnTextSink(std::vector<std::string>* sink);
+
 sf::FloatRect drawLabel(sf::RenderTarget& target, const sf::Font& font, const sf::String& text, sf::Vector2f position,
                         unsigned size, sf::Color colour, Align align = Align::Left);
 

@@ -165,11 +165,16 @@ int App::run()
     }
 
     int exitCode = m_exitCode.value_or(0);
-    if (!m_options.screenshotPath.empty())
+    if (!m_options.screenshotPath.empty() || !m_options.tracePath.empty())
     {
-        // The last frame as the screens are after its changes: what the player would see next.
+        // The last frame as the screens are after its changes: what the player would see next. The trace lists
+        // its texts, so a scripted run can check what a screen says.
+        std::vector<std::string> texts;
+        setDrawnTextSink(&texts);
         drawFrame();
-        if (!saveScreenshot(m_window, m_options.screenshotPath))
+        setDrawnTextSink(nullptr);
+        m_trace.write("texts", {{"shown", texts}});
+        if (!m_options.screenshotPath.empty() && !saveScreenshot(m_window, m_options.screenshotPath))
             exitCode = exitCode == 0 ? 2 : exitCode;
     }
     m_trace.write("exit", {{"code", exitCode}, {"screens", m_screens.names()}});

@@ -55,6 +55,9 @@ public:
     bool scripted() const { return m_options.scripted(); }
 
     const Settings& settings() const { return m_settings; }
+    /// School or university: --wording for this run, else the setting.
+    Wording wording() const { return m_options.wording.value_or(m_settings.wording); }
+    bool universityWording() const { return wording() == Wording::University; }
     /// True when --size set the window on the command line: the saved size and full screen do not apply.
     bool sizeFromCommandLine() const { return m_options.width.has_value(); }
     /// Applies new settings (the look, the window's size and full screen) and saves them (not in scripted runs).

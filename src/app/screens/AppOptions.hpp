@@ -2,6 +2,7 @@
 
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/LevelDef.hpp>
+#include <abalike/save/Settings.hpp>
 #include <abalike/script/InputScript.hpp>
 
 #include <functional>
@@ -30,6 +31,7 @@ struct AppOptions
     std::string tracePath;         ///< write what happens (screens, levels, shots) as JSON lines here
     std::optional<unsigned> width; ///< `--size` wins over the saved window size
     std::optional<unsigned> height;
+    std::optional<Wording> wording; ///< `--wording` wins over the saved setting for this run
 
     /// Called after every frame with the wall time it took (events, physics, drawing, display): `bench frames`.
     std::function<void(double frameWallS)> onFrameTimed;

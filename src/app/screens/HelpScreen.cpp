@@ -80,7 +80,12 @@ std::vector<std::vector<HelpScreen::Line>> HelpScreen::paginate(const sf::Font& 
                                                                 const std::vector<float>& rowHeights) const
 {
     const float headHeight = font.getLineSpacing(m_app.textSize(kHeadNominal)) * 1.3f;
-    const std::vector<ControlBinding>& table = controlTable();
+    // School wording leaves out the integrator tools, as the toolbar does.
+    std::vector<ControlBinding> table;
+    for (const ControlBinding& row : controlTable())
+        if (m_app.universityWording() ||
+            (row.action.find("RK4") == std::string::npos && row.action.find("Integrator") == std::string::npos))
+            table.push_back(row);
     std::vector<std::vector<Line>> pages(1);
     float used = 0.0f;
     for (std::size_t i = 0; i < table.size(); ++i)
@@ -117,7 +122,12 @@ void HelpScreen::draw(sf::RenderTarget& target)
     const unsigned headSize = m_app.textSize(kHeadNominal);
     const unsigned rowSize = m_app.textSize(kRowNominal);
     const float rowHeight = font->getLineSpacing(rowSize);
-    const std::vector<ControlBinding>& table = controlTable();
+    // School wording leaves out the integrator tools, as the toolbar does.
+    std::vector<ControlBinding> table;
+    for (const ControlBinding& row : controlTable())
+        if (m_app.universityWording() ||
+            (row.action.find("RK4") == std::string::npos && row.action.find("Integrator") == std::string::npos))
+            table.push_back(row);
 
     // Four columns sized to their widest entry, if they fit; otherwise each control takes two lines.
     float actionWidth = 0.0f;

@@ -2,6 +2,7 @@
 
 #include "render/Camera.hpp"
 #include "render/Hud.hpp"
+#include "screens/SlowMotion.hpp"
 
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <SFML/Window/Event.hpp>
@@ -43,6 +44,8 @@ public:
     virtual void setFrozen(bool frozen) = 0;
     /// Takes one physics step now, frozen or not.
     virtual void stepOnce() = 0;
+    /// How fast the world is shown (key Z): fewer physics steps per frame, never a different step.
+    virtual SlowMotion& slowMotion() = 0;
 };
 
 /// Something drawn over the play screen and given its input first: the teaching overlay, path history, tools.

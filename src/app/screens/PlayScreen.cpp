@@ -190,7 +190,7 @@ bool PlayScreen::playerMayAim() const
 void PlayScreen::fixedUpdate(double dtS)
 {
     (void)dtS; // the session steps at its own fixed rate, which is the app's
-    if (!m_frozen)
+    if (!m_frozen && m_slowMotion.takeStep())
         physicsStep();
 }
 

@@ -73,6 +73,7 @@ public:
     bool frozen() const override { return m_frozen; }
     void setFrozen(bool frozen) override { m_frozen = frozen; }
     void stepOnce() override;
+    SlowMotion& slowMotion() override { return m_slowMotion; }
 
 private:
     /// What the preview was computed for; a new key means the aim or the bird changed.
@@ -116,6 +117,7 @@ private:
     bool m_finishHandled = false;
     std::size_t m_destroyedTraced = 0; ///< events of session.destroyed() already written to the trace
     bool m_frozen = false;
+    SlowMotion m_slowMotion;
     CameraRig m_rig; ///< fitted at start, follows the shot, returns when the world settles; the player pans and zooms
     CameraControls m_cameraControls;
     ShotTrails m_trails;

@@ -44,17 +44,30 @@ const std::vector<PlayToolbar::Button>& PlayToolbar::buttons()
         {"I", "Integrator comparison (I)", sf::Keyboard::I},
         {"K", "RK4 walkthrough (K)", sf::Keyboard::K},
         {"C", "Clear the kept paths (C)", sf::Keyboard::C},
+        {"V", "Velocity components vx, vy (V)", sf::Keyboard::V},
+        {"Z", "Slow motion: 1, \u00BD, \u00BC of real time (Z)", sf::Keyboard::Z},
+        {"\u21A7", "Export the shots as CSV (E)", sf::Keyboard::E},
         {"?", "Help: every control (F1)", sf::Keyboard::F1},
         {"", "Pause (Esc or P)", sf::Keyboard::P},
     };
     return list;
 }
 
-std::vector<sf::FloatRect> PlayToolbar::layout(sf::Vector2u windowSize, float scale)
+std::vector<const PlayToolbar::Button*> PlayToolbar::shown(const App& app)
+{
+    // School wording leaves out the integrator tools (I and K), whose very names are the machinery.
+    std::vector<const Button*> list;
+    for (const Button& button : buttons())
+        if (app.universityWording() || (button.key != sf::Keyboard::I && button.key != sf::Keyboard::K))
+            list.push_back(&button);
+    return list;
+}
+
+std::vector<sf::FloatRect> PlayToolbar::layout(const App& app, sf::Vector2u windowSize, float scale)
 {
     const float size = kSizePx * scale;
     const float gap = kGapPx * scale;
-    const std::size_t count = buttons().size();
+    const std::size_t count = shown(app).size();
     float x = static_cast<float>(windowSize.x) - kMarginPx * scale - static_cast<float>(count) * (size + gap) + gap;
     std::vector<sf::FloatRect> rects;
     for (std::size_t i = 0; i < count; ++i, x += size + gap)
@@ -76,13 +89,13 @@ float PlayToolbar::buttonScale(const App& app)
 
 float PlayToolbar::reservedWidthPx(const App& app, sf::Vector2u windowSize)
 {
-    const std::vector<sf::FloatRect> rects = layout(windowSize, buttonScale(app));
+    const std::vector<sf::FloatRect> rects = layout(app, windowSize, buttonScale(app));
     return rects.empty() ? 0.0f : static_cast<float>(windowSize.x) - rects.front().left;
 }
 
 std::optional<std::size_t> PlayToolbar::buttonAt(sf::Vector2f pixel, PlayView& view) const
 {
-    const std::vector<sf::FloatRect> rects = layout(view.app().windowSize(), buttonScale(view.app()));
+    const std::vector<sf::FloatRect> rects = layout(view.app(), view.app().windowSize(), buttonScale(view.app()));
     for (std::size_t i = 0; i < rects.size(); ++i)
         if (rects[i].contains(pixel))
             return i;
@@ -109,7 +122,7 @@ bool PlayToolbar::handleEvent(const sf::Event& event, PlayView& view)
             buttonAt({static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y)}, view);
         if (over == m_pressed)
         {
-            const sf::Keyboard::Key key = buttons()[*over].key;
+            const sf::Keyboard::Key key = shown(view.app())[*over]->key;
             view.app().post(keyEvent(key, true));
             view.app().post(keyEvent(key, false));
         }
@@ -125,7 +138,8 @@ void PlayToolbar::drawScreen(sf::RenderTarget& target, PlayView& view)
 {
     App& app = view.app();
     const float scale = buttonScale(app);
-    const std::vector<sf::FloatRect> rects = layout(target.getSize(), scale);
+    const std::vector<sf::FloatRect> rects = layout(app, target.getSize(), scale);
+    const std::vector<const Button*> visible = shown(app);
     const sf::Font* font = app.font();
     const auto textSize = static_cast<unsigned>(std::round(17.0f * scale));
     for (std::size_t i = 0; i < rects.size(); ++i)
@@ -138,7 +152,7 @@ void PlayToolbar::drawScreen(sf::RenderTarget& target, PlayView& view)
         box.setOutlineColor(palette::kButtonOutline);
         box.setOutlineThickness(1.5f * scale);
         target.draw(box);
-        const Button& button = buttons()[i];
+        const Button& button = *visible[i];
         if (*button.label == '\0')
         {
             // The pause symbol: two bars.
@@ -149,7 +163,8 @@ void PlayToolbar::drawScreen(sf::RenderTarget& target, PlayView& view)
             drawRect(target, {rect.left + 0.56f * rect.width, top, barW, barH}, palette::kText);
         }
         else if (font != nullptr)
-            drawLabel(target, *font, utf8(button.label),
+            // The slow-motion button shows the pace the world runs at now.
+            drawLabel(target, *font, utf8(button.key == sf::Keyboard::Z ? view.slowMotion().label() : button.label),
                       {rect.left + 0.5f * rect.width, rect.top + 0.5f * (rect.height - font->getLineSpacing(textSize))},
                       textSize, palette::kText, Align::Centre);
     }
@@ -158,7 +173,7 @@ void PlayToolbar::drawScreen(sf::RenderTarget& target, PlayView& view)
         // The action under the pointer, right-aligned under the row, on a panel so it reads over any sky.
         const unsigned tipSize = app.textSize(15.0f);
         const float tipScale = app.uiScale();
-        const sf::String tip = utf8(buttons()[*m_hover].action);
+        const sf::String tip = utf8(visible[std::min(*m_hover, visible.size() - 1)]->action);
         const sf::Vector2f extent = measureText(*font, tip, tipSize);
         const float pad = 6.0f * tipScale;
         const float right = rects.back().left + rects.back().width;

@@ -32,7 +32,9 @@ public:
     /// The buttons, left to right.
     static const std::vector<Button>& buttons();
     /// Where each button sits in a window of this size at this button scale.
-    static std::vector<sf::FloatRect> layout(sf::Vector2u windowSize, float buttonScale);
+    /// The buttons this run shows (the wording decides on the integrator tools).
+    static std::vector<const Button*> shown(const App& app);
+    static std::vector<sf::FloatRect> layout(const App& app, sf::Vector2u windowSize, float buttonScale);
     /// The toolbar's bottom edge in window pixels: panels in the top right start below it.
     static float bottomPx(float buttonScale);
     /// How large the buttons are drawn: with the window and the text scale, but at most 125 % of the window's own

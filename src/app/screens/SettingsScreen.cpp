@@ -74,14 +74,17 @@ const char* labelOf(const std::string& id)
         return "Teaching overlay";
     if (id == "open")
         return "Open every level";
+    if (id == "wording")
+        return "Wording";
     return "Back";
 }
 } // namespace
 
 const std::vector<std::string>& SettingsScreen::rowIds()
 {
-    static const std::vector<std::string> ids{"music",   "effects",  "mute",   "size",     "fullscreen", "text",
-                                              "palette", "contrast", "motion", "teaching", "open",       "back"};
+    static const std::vector<std::string> ids{"music", "effects", "mute",     "size",   "fullscreen",
+                                              "text",  "palette", "contrast", "motion", "teaching",
+                                              "open",  "wording", "back"};
     return ids;
 }
 
@@ -114,6 +117,8 @@ std::string SettingsScreen::valueText(const std::string& id) const
         return onOff(s.teachingOverlay);
     if (id == "open")
         return onOff(s.openAllLevels);
+    if (id == "wording")
+        return s.wording == Wording::University ? "university (full depth)" : "school (ages 14\u201316)";
     return "";
 }
 
@@ -167,6 +172,8 @@ void SettingsScreen::change(const std::string& id, int direction)
         s.teachingOverlay = !s.teachingOverlay;
     else if (id == "open")
         s.openAllLevels = !s.openAllLevels;
+    else if (id == "wording")
+        s.wording = s.wording == Wording::School ? Wording::University : Wording::School;
     else
         return;
     m_app.updateSettings(s);

@@ -22,9 +22,6 @@ bool ShotFollower::follow(const GameSession& session)
     m_angleDeg = shot.angleDeg;
     m_speedMps = shot.speedMps;
     m_model = session.flightModelFor(*bird);
-    m_stillAir = m_model;
-    m_stillAir->windX = m_stillAir->windY = 0.0;
-    m_stillAir->gusts.reset();
     const auto p = session.launchPoint();
     m_launch = launchState(p[0], p[1], shot.speedMps, shot.angleDeg);
     IntegratorSettings settings;
@@ -53,17 +50,24 @@ std::optional<BirdReadout> ShotFollower::at(const GameSession& session, double t
     r.energy = m_tracker->at(tS);
     r.state = r.energy.state;
     r.massKg = m_model->massKg;
-    // One right-hand side for the whole force, one without the wind: their difference is the wind's share.
+    // The right-hand side less gravity is the air's force: one drag, on the velocity relative to the air. (Splitting
+    // it into "still-air drag" and "wind" by difference would invent a wind force, with a vertical part for a
+    // horizontal wind, because quadratic drag does not add.)
     const FlightIntegrator full(*m_model, {});
-    const FlightIntegrator still(*m_stillAir, {});
     const FlightState f = full.rightHandSide(tS, r.state);
-    const FlightState fs = still.rightHandSide(tS, r.state);
     const double m = m_model->massKg;
     const double g = m_model->gravity;
     r.accelerationMps2 = {f[2], f[3]};
     r.gravityN = {0.0, -m * g};
-    r.dragN = {m * fs[2], m * (fs[3] + g)};
-    r.windN = {m * (f[2] - fs[2]), m * (f[3] - fs[3])};
+    r.dragN = {m * f[2], m * (f[3] + g)};
+    std::array<double, 2> wind{m_model->windX, m_model->windY};
+    if (m_model->gusts)
+    {
+        const std::array<double, 2> gust = m_model->gusts->windAt(tS);
+        wind = {wind[0] + gust[0], wind[1] + gust[1]};
+    }
+    r.airVelocityMps = {r.state[2] - wind[0], r.state[3] - wind[1]};
+    r.windy = wind[0] != 0.0 || wind[1] != 0.0;
     return r;
 }
 

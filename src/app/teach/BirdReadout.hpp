@@ -17,8 +17,11 @@ struct BirdReadout
     double massKg = 0.0;
     std::array<double, 2> accelerationMps2{};
     std::array<double, 2> gravityN{};
-    std::array<double, 2> dragN{}; ///< the drag it would feel in still air
-    std::array<double, 2> windN{}; ///< what the wind adds to that (drag on the velocity relative to the air)
+    /// The air's whole force: drag on the velocity relative to the air, v - w. Wind has no force of its own; it
+    /// acts only by moving the air the drag is measured against.
+    std::array<double, 2> dragN{};
+    std::array<double, 2> airVelocityMps{}; ///< v - w: the bird's velocity relative to the air
+    bool windy = false;                     ///< the air moves (w is not zero at this moment)
     FlightEnergy energy;
 };
 
@@ -46,7 +49,6 @@ private:
     double m_angleDeg = 0.0;
     double m_speedMps = 0.0;
     std::optional<FlightModel> m_model;
-    std::optional<FlightModel> m_stillAir;
     FlightState m_launch{};
     std::unique_ptr<FlightEnergyTracker> m_tracker;
 };

@@ -41,31 +41,39 @@ std::string scientific(double value)
 } // namespace
 
 void drawForceArrows(sf::RenderTarget& target, const sf::Font& font, const Camera& camera, const BirdReadout& bird,
-                     unsigned labelSize, float scale)
+                     bool components, unsigned labelSize, float scale)
 {
     const sf::Vector2f centre = camera.toScreen({static_cast<float>(bird.state[0]), static_cast<float>(bird.state[1])});
     // Forces in newtons, scaled so that the bird's weight is kGravityArrowPx long (in vacuum at 9.81 if g is 0).
     const double weight = std::max(length(bird.gravityN), bird.massKg * 9.81);
     const float pxPerN = kGravityArrowPx * scale / static_cast<float>(weight);
+    const float pxPerMps = kVelocityPxPerMps * scale;
     const float width = 3.0f * scale;
     struct Arrow
     {
         sf::Vector2f tip;
         float width;
         sf::Color colour;
-        const char* name;
+        std::string name;
     };
     const std::array<double, 2> v{bird.state[2], bird.state[3]};
     // a = sum of the forces / m, on the same scale: the thin arrow is the sum of the thick force arrows.
     const std::array<double, 2> ma{bird.massKg * bird.accelerationMps2[0], bird.massKg * bird.accelerationMps2[1]};
     // Velocity first, so that a force pointing along it (a tailwind's push) is drawn over it.
-    const Arrow arrows[] = {
-        {centre + kVelocityPxPerMps * scale * screenDirection(v), width, teach::kVelocity, "v"},
-        {centre + pxPerN * screenDirection(bird.gravityN), width, teach::kGravity, "mg"},
-        {centre + pxPerN * screenDirection(bird.dragN), width, teach::kDrag, "drag"},
-        {centre + pxPerN * screenDirection(bird.windN), width, teach::kWind, "wind"},
-        {centre + pxPerN * screenDirection(ma), 1.8f * scale, teach::kAcceleration, "ma"},
-    };
+    std::vector<Arrow> arrows{{centre + pxPerMps * screenDirection(v), width, teach::kVelocity, "v"}};
+    if (components)
+    {
+        // vx and vy on the same scale as v: the parallelogram's sides.
+        arrows.push_back({centre + pxPerMps * screenDirection({v[0], 0.0}), 1.8f * scale, teach::kVelocity, "vx"});
+        arrows.push_back({centre + pxPerMps * screenDirection({0.0, v[1]}), 1.8f * scale, teach::kVelocity, "vy"});
+    }
+    if (bird.windy)
+        // Drag acts on this, not on v: it points exactly against it.
+        arrows.push_back(
+            {centre + pxPerMps * screenDirection(bird.airVelocityMps), 1.8f * scale, teach::kWind, "v \u2212 w"});
+    arrows.push_back({centre + pxPerN * screenDirection(bird.gravityN), width, teach::kGravity, "mg"});
+    arrows.push_back({centre + pxPerN * screenDirection(bird.dragN), width, teach::kDrag, "drag"});
+    arrows.push_back({centre + pxPerN * screenDirection(ma), 1.8f * scale, teach::kAcceleration, "ma"});
     Mesh mesh;
     for (const Arrow& arrow : arrows)
         addArrow(mesh, centre, arrow.tip, arrow.width, arrow.colour, 1.0f * scale);
@@ -84,21 +92,26 @@ void drawForceArrows(sf::RenderTarget& target, const sf::Font& font, const Camer
 }
 
 sf::FloatRect drawForceLegend(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topRight,
-                              const BirdReadout& bird, bool hasDrag, bool hasWind, unsigned titleSize, unsigned rowSize,
-                              float scale)
+                              const BirdReadout& bird, bool hasDrag, bool hasWind, bool components, unsigned titleSize,
+                              unsigned rowSize, float scale)
 {
     std::vector<PanelRow> rows;
     rows.push_back({"t " + withUnit(bird.tS, 2, "s") + "   x " + withUnit(bird.state[0], 1, "m") + "   y " +
                         withUnit(bird.state[1], 1, "m"),
                     "", sf::Color::Transparent, false});
     rows.push_back({"velocity v", withUnit(std::hypot(bird.state[2], bird.state[3]), 1, "m/s"), teach::kVelocity});
+    if (components)
+        rows.push_back({"  vx, vy", withUnit(bird.state[2], 1, "m/s") + ", " + withUnit(bird.state[3], 1, "m/s"),
+                        teach::kVelocity});
+    if (hasWind && bird.windy)
+        rows.push_back({"velocity in the air v \u2212 w",
+                        withUnit(std::hypot(bird.airVelocityMps[0], bird.airVelocityMps[1]), 1, "m/s"), teach::kWind});
     rows.push_back({"acceleration a = \u03A3F / m", withUnit(length(bird.accelerationMps2), 2, "m/s\u00B2"),
                     teach::kAcceleration});
     rows.push_back({"gravity m g", withUnit(length(bird.gravityN), 1, "N"), teach::kGravity});
     if (hasDrag)
-        rows.push_back({"air drag (still air)", withUnit(length(bird.dragN), 1, "N"), teach::kDrag});
-    if (hasWind)
-        rows.push_back({"wind's push (through drag)", withUnit(length(bird.windN), 1, "N"), teach::kWind});
+        rows.push_back({hasWind ? "air drag, against v \u2212 w" : "air drag, against v",
+                        withUnit(length(bird.dragN), 1, "N"), teach::kDrag});
     if (!hasDrag)
         rows.push_back({"no air: gravity is the only force", "", sf::Color::Transparent, false});
     const TextPanel panel("Forces on the bird (" + formatFixed(bird.massKg, 1) + " kg)", std::move(rows));
@@ -136,7 +149,7 @@ sf::FloatRect drawEnergyBars(sf::RenderTarget& target, const sf::Font& font, sf:
     const sf::FloatRect rect(topRight.x - width, topRight.y, width, height);
     drawTeachPanel(target, rect, scale);
     drawLabel(target, font,
-              utf8(atContact ? "Energy at the first contact" : "Energy: launch = kinetic + potential + drag"),
+              utf8(atContact ? "Energy at the first contact" : "Energy: at launch = kinetic + potential + drag"),
               {rect.left + pad, rect.top + pad}, titleSize, palette::kStar);
 
     // Bars share one scale: the launch energy spans barWidth; a negative amount (a tailwind's "loss", a bird
@@ -167,8 +180,8 @@ sf::FloatRect drawEnergyBars(sf::RenderTarget& target, const sf::Font& font, sf:
     mesh.addLine({zero, barsTop}, {zero, y}, 1.0f * scale, palette::kTextDim);
     mesh.draw(target);
     drawLabel(target, font,
-              utf8("launch " + formatFixed(launch, 0) + " J   balance off by " + scientific(energy.balanceResidualJ()) +
-                   " J"),
+              utf8("at launch (kinetic + potential) " + formatFixed(launch, 0) + " J   balance off by " +
+                   scientific(energy.balanceResidualJ()) + " J"),
               {rect.left + pad, y + 0.1f * rowHeight}, rowSize, palette::kStar);
     return rect;
 }

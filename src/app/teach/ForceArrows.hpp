@@ -9,15 +9,15 @@
 namespace abalike::app
 {
 
-/// Arrows on the flying bird -- velocity, acceleration and each force on its own, each named at its tip -- drawn in
-/// the world.
+/// Arrows on the flying bird -- velocity (with components vx and vy if asked), the velocity relative to the air when
+/// there is wind, acceleration and each force on its own, each named at its tip -- drawn in the world.
 void drawForceArrows(sf::RenderTarget& target, const sf::Font& font, const Camera& camera, const BirdReadout& bird,
-                     unsigned labelSize, float scale);
+                     bool components, unsigned labelSize, float scale);
 
 /// The legend of those arrows with their values in SI units; returns its bounds.
 sf::FloatRect drawForceLegend(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topRight,
-                              const BirdReadout& bird, bool hasDrag, bool hasWind, unsigned titleSize, unsigned rowSize,
-                              float scale);
+                              const BirdReadout& bird, bool hasDrag, bool hasWind, bool components, unsigned titleSize,
+                              unsigned rowSize, float scale);
 
 /// Bars of kinetic, potential and total energy and of the energy drag has taken, against the launch energy;
 /// `at` is the panel's top-right corner. Returns its bounds.

@@ -8,7 +8,12 @@
 #include "teach/ImpactPanel.hpp"
 #include "teach/WhyPanel.hpp"
 
+#include <abalike/save/AtomicWrite.hpp>
+#include <abalike/save/DataDirectory.hpp>
+#include <abalike/teach/ShotTable.hpp>
 #include <abalike/world/Catalog.hpp>
+#include <filesystem>
+#include <system_error>
 
 namespace abalike::app
 {
@@ -26,8 +31,55 @@ void TeachLayer::toggleOverlay()
     m_app.notify(settings.teachingOverlay ? "Teaching overlay on (T to hide)" : "Teaching overlay off (T to show)");
 }
 
+void TeachLayer::exportShots(const PlayView& view)
+{
+    const GameSession& session = view.session();
+    if (session.shots().empty())
+    {
+        m_app.notify("No shot to export yet: launch a bird first (E exports every shot of this level)");
+        return;
+    }
+    const std::filesystem::path dataDir = defaultDataDirectory();
+    if (dataDir.empty())
+    {
+        m_app.notify("Cannot export: no data folder (set HOME or ABALIKE_DATA_DIR)");
+        return;
+    }
+    // exports/LEVEL-shots-N.csv with the first free N: an export never overwrites an earlier one.
+    const std::filesystem::path folder = dataDir / "exports";
+    std::string stem = session.level().id.empty() ? std::string("level") : session.level().id;
+    for (char& c : stem)
+        if (c == '/' || c == '\\')
+            c = '_';
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    std::filesystem::path path;
+    for (int n = 1; n < 100000; ++n)
+    {
+        path = folder / (stem + "-shots-" + std::to_string(n) + ".csv");
+        if (!std::filesystem::exists(path, error))
+            break;
+    }
+    try
+    {
+        writeFileAtomically(path, shotTableCsv(session));
+        m_app.notify("Exported " + std::to_string(session.shots().size()) + " shot(s) to " + path.string());
+    }
+    catch (const std::exception& e)
+    {
+        m_app.notify(std::string("Cannot export the shots: ") + e.what());
+    }
+}
+
 bool TeachLayer::handleEvent(const sf::Event& event, PlayView& view)
 {
+    // The integrator tools show the numerical machinery itself: university wording only.
+    if (!m_app.universityWording() && event.type == sf::Event::KeyPressed && !event.key.control && !event.key.alt &&
+        (event.key.code == sf::Keyboard::K || event.key.code == sf::Keyboard::I) && !m_walkthrough.active())
+    {
+        m_app.notify("The step-by-step method tools come with the university wording (Settings \u2192 Wording)");
+        return true;
+    }
     if (m_walkthrough.handleEvent(event, view, m_follower))
         return true;
     if (event.type == sf::Event::KeyPressed && !event.key.control && !event.key.alt)
@@ -43,6 +95,20 @@ bool TeachLayer::handleEvent(const sf::Event& event, PlayView& view)
         case sf::Keyboard::C:
             m_paths.clear();
             view.clearTrails();
+            return true;
+        case sf::Keyboard::V:
+            m_components = !m_components;
+            m_app.notify(m_components ? "Velocity components vx and vy shown (V to hide)"
+                                      : "Velocity components hidden (V to show)");
+            return true;
+        case sf::Keyboard::Z:
+            view.slowMotion().cycle();
+            m_app.notify(
+                std::string("Speed ") + view.slowMotion().label() +
+                (view.slowMotion().divisor() == 1 ? " (real time)" : " (slow motion; the physics is unchanged)"));
+            return true;
+        case sf::Keyboard::E:
+            exportShots(view);
             return true;
         default:
             if (m_comparison.handleKey(event.key))
@@ -111,7 +177,7 @@ void TeachLayer::drawWorld(sf::RenderTarget& target, PlayView& view)
         m_walkthrough.drawWorld(target, view.camera(), scale);
     else if (overlayOn() && font != nullptr)
         if (const std::optional<BirdReadout> bird = m_follower.current(view.session()))
-            drawForceArrows(target, *font, view.camera(), *bird, m_app.textSize(13.0f), scale);
+            drawForceArrows(target, *font, view.camera(), *bird, m_components, m_app.textSize(13.0f), scale);
 }
 
 void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
@@ -143,7 +209,7 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
         const bool wind = (terms & (kWindTerm | kGustTerm)) != 0;
         if (const std::optional<BirdReadout> bird = m_follower.current(session))
         {
-            below(drawForceLegend(target, *font, right, *bird, drag, wind, titleSize, rowSize, scale));
+            below(drawForceLegend(target, *font, right, *bird, drag, wind, m_components, titleSize, rowSize, scale));
             below(drawEnergyBars(target, *font, right, bird->energy, false, titleSize, rowSize, scale));
         }
         else if (!aiming && !session.shots().empty())
@@ -186,7 +252,8 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
         left = card.top + card.height + gap;
     }
     if (overlayOn() && !m_walkthrough.active())
-        drawWhyPanel(target, *font, {margin, left}, session, view.preview(), titleSize, rowSize, scale);
+        drawWhyPanel(target, *font, {margin, left}, session, view.preview(), m_app.universityWording(), titleSize,
+                     rowSize, scale);
 
     if (m_walkthrough.active())
         m_walkthrough.drawPanel(target, *font, 152.0f * scale, titleSize, rowSize, scale);

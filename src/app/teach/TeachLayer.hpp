@@ -32,6 +32,8 @@ public:
 private:
     bool overlayOn() const;
     void toggleOverlay();
+    /// Writes every shot of this level so far as CSV (key E) into the data folder's exports/ and says where.
+    void exportShots(const PlayView& view);
 
     App& m_app;
     ShotFollower m_follower;
@@ -43,6 +45,7 @@ private:
     GuideRunner m_guide;
     std::string m_guideLevel; ///< the level the guide was started for: a restart keeps its progress
     bool m_showChart = false;
+    bool m_components = false; ///< vx and vy arrows beside v (key V)
 };
 
 } // namespace abalike::app

@@ -7,23 +7,38 @@ namespace abalike::app
 {
 
 sf::FloatRect drawWhyPanel(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topLeft,
-                           const GameSession& session, const PredictedFlight* preview, unsigned titleSize,
-                           unsigned rowSize, float scale)
+                           const GameSession& session, const PredictedFlight* preview, bool university,
+                           unsigned titleSize, unsigned rowSize, float scale)
 {
     const GameWorld& world = session.world();
     std::vector<PanelRow> rows;
-    rows.push_back({"Preview: RK4 steps of 1/60 s from the slingshot,", ""});
-    rows.push_back({"each step's chord cast against the level (Box2D TOI)", ""});
+    if (university)
+    {
+        rows.push_back({"Preview: RK4 steps of 1/60 s from the slingshot,", ""});
+        rows.push_back({"each step's chord cast against the level (Box2D TOI)", ""});
+    }
+    else
+    {
+        // School wording: the same facts without the machinery's names.
+        rows.push_back({"Preview: the computer steps the flight forward", ""});
+        rows.push_back({"1/60 s at a time and checks each step for a hit", ""});
+    }
     if (preview != nullptr)
         rows.push_back({"  this aim", std::to_string(preview->steps) + " steps, " +
                                           std::to_string(preview->rhsEvaluations) + " force evaluations"});
-    rows.push_back({"World: the bird rides the same RK4 states until it", ""});
-    rows.push_back({"touches something; then Box2D takes over", ""});
+    rows.push_back({university ? "World: the bird rides the same RK4 states until it"
+                               : "World: the bird flies the very same steps until it",
+                    ""});
+    rows.push_back(
+        {university ? "touches something; then Box2D takes over" : "touches something; then collisions take over", ""});
     if (session.phase() == Phase::Flying)
+    {
+        const std::string substeps =
+            std::to_string(world.lastSubsteps()) + " sub-step" + (world.lastSubsteps() > 1 ? "s" : "");
         rows.push_back({"  now", world.birdInFreeFlight()
-                                     ? "t " + withUnit(session.timeSinceLaunch(), 2, "s") + ", on the RK4 path"
-                                     : "Box2D owns the bird (" + std::to_string(world.lastSubsteps()) + " sub-step" +
-                                           (world.lastSubsteps() > 1 ? "s)" : ")")});
+                                     ? "t " + withUnit(session.timeSinceLaunch(), 2, "s") + ", on the predicted path"
+                                     : (university ? "Box2D owns the bird (" : "colliding (") + substeps + ")"});
+    }
     if (!session.shots().empty())
     {
         const ShotRecord& shot = session.shots().back();
@@ -39,7 +54,9 @@ sf::FloatRect drawWhyPanel(sf::RenderTarget& target, const sf::Font& font, sf::V
         }
     }
     rows.push_back({"They part only if an ability changes the flight, above", ""});
-    rows.push_back({"108 m/s (Box2D sub-steps), or by float rounding (\u00B5m)", ""});
+    rows.push_back({university ? "108 m/s (Box2D sub-steps), or by float rounding (\u00B5m)"
+                               : "108 m/s (smaller steps), or by rounding (\u00B5m)",
+                    ""});
     const TextPanel panel("Why preview and world can differ", std::move(rows));
     return panel.draw(target, font, topLeft, titleSize, rowSize, scale);
 }

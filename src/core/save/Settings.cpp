@@ -22,6 +22,20 @@ constexpr double kMaxTextScale = 2.0;
 
 } // namespace
 
+const char* wordingName(Wording wording)
+{
+    return wording == Wording::University ? "university" : "school";
+}
+
+std::optional<Wording> parseWording(std::string_view name)
+{
+    if (name == "school")
+        return Wording::School;
+    if (name == "university")
+        return Wording::University;
+    return std::nullopt;
+}
+
 const char* paletteName(Palette palette)
 {
     return palette == Palette::ColourBlindSafe ? "colour_blind_safe" : "standard";
@@ -71,6 +85,13 @@ Settings parseSettings(std::string_view text)
         settings.teachingOverlay = readBool(*it, "/teaching_overlay");
     if (const auto it = root.find("open_all_levels"); it != root.end())
         settings.openAllLevels = readBool(*it, "/open_all_levels");
+    if (const auto it = root.find("wording"); it != root.end())
+    {
+        const std::optional<Wording> wording = parseWording(readString(*it, "/wording"));
+        if (!wording)
+            throw SaveFormatError("/wording: expected \"school\" or \"university\"");
+        settings.wording = *wording;
+    }
     return settings;
 }
 
@@ -99,6 +120,7 @@ std::string settingsToJson(const Settings& settings)
     root["reduced_motion"] = settings.reducedMotion;
     root["teaching_overlay"] = settings.teachingOverlay;
     root["open_all_levels"] = settings.openAllLevels;
+    root["wording"] = wordingName(settings.wording);
     return dumpSaveJson(root);
 }
 
