@@ -18,7 +18,7 @@ LevelDef sourceLevel(const std::string& relative)
 
 TEST(TeachGuides, EveryLessonHasALevelThatLoadsAndAGuide)
 {
-    ASSERT_EQ(lessonList().size(), 7u); // one per concept the campaign teaches
+    ASSERT_EQ(lessonList().size(), 8u); // one per concept the campaign teaches, and predict-then-launch
     for (const LessonEntry& lesson : lessonList())
     {
         const LevelDef level = sourceLevel("levels/lessons/" + lesson.file);

@@ -4,8 +4,12 @@
 #include "cli/UsageError.hpp"
 #include "plot/PlotError.hpp"
 #include "plot/PlotPng.hpp"
+#include "plot/TablePng.hpp"
 
 #include <abalike/teach/RangeChart.hpp>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include <cmath>
 #include <cstdio>
@@ -188,6 +192,81 @@ int runRange(const RangeArgs& a)
     return 0;
 }
 
+struct TableArgs
+{
+    std::string csv, out;
+    int rows = 20;
+    int every = 1;
+};
+
+/// `chart table`: a CSV (from `simulate --csv` or the game's export) as a spreadsheet shows it, as a PNG.
+int runTable(const TableArgs& a)
+{
+    if (a.rows < 1 || a.rows > 500)
+        throw UsageError("--rows: expected 1 to 500 data rows, got " + std::to_string(a.rows));
+    if (a.every < 1)
+        throw UsageError("--every: expected 1 or more, got " + std::to_string(a.every));
+    std::ifstream in(a.csv);
+    if (!in)
+        throw UsageError(a.csv + ": cannot read the file");
+    const auto split = [](const std::string& line)
+    {
+        std::vector<std::string> cells;
+        std::string cell;
+        std::istringstream stream(line);
+        while (std::getline(stream, cell, ','))
+            cells.push_back(cell);
+        if (!line.empty() && line.back() == ',')
+            cells.emplace_back();
+        return cells;
+    };
+    Table table;
+    std::string line;
+    std::size_t lineNumber = 0;
+    std::size_t dataRows = 0;
+    while (std::getline(in, line))
+    {
+        ++lineNumber;
+        if (!line.empty() && line.back() == '\r')
+            line.pop_back();
+        std::vector<std::string> cells = split(line);
+        if (lineNumber == 1)
+        {
+            if (cells.empty())
+                throw UsageError(a.csv + ":1: expected a header row of column names");
+            table.cells.push_back(std::move(cells));
+            table.rowNumbers.push_back(1);
+            continue;
+        }
+        if (cells.size() != table.cells.front().size())
+            throw UsageError(a.csv + ":" + std::to_string(lineNumber) + ": expected " +
+                             std::to_string(table.cells.front().size()) + " cells like the header, got " +
+                             std::to_string(cells.size()));
+        ++dataRows;
+        if ((dataRows - 1) % static_cast<std::size_t>(a.every) == 0 &&
+            table.cells.size() <= static_cast<std::size_t>(a.rows))
+        {
+            table.cells.push_back(std::move(cells));
+            table.rowNumbers.push_back(lineNumber);
+        }
+    }
+    if (table.cells.empty())
+        throw UsageError(a.csv + ": the file is empty");
+    table.title = std::filesystem::path(a.csv).filename().string() + ": " + std::to_string(dataRows) + " rows, " +
+                  std::to_string(table.cells.size() - 1) + " shown" +
+                  (a.every > 1 ? " (every " + std::to_string(a.every) + ")" : "");
+    try
+    {
+        saveTablePng(table, a.out);
+    }
+    catch (const PlotError& e)
+    {
+        throw UsageError(std::string("--out: ") + e.what());
+    }
+    std::cout << "wrote " << a.out << " (" << table.cells.size() - 1 << " of " << dataRows << " rows)\n";
+    return 0;
+}
+
 } // namespace
 
 CommandRunner addChartCommand(CLI::App& app)
@@ -197,7 +276,9 @@ CommandRunner addChartCommand(CLI::App& app)
     auto args = std::make_shared<RangeArgs>();
     CLI::App* cmd = chart->add_subcommand("range", "Range on flat ground against launch angle, and the best angle");
     cmd->add_option("--speed", args->speed, "launch speed in m/s")->required();
-    cmd->add_option("--y0", args->y0, "launch height above the ground in m (default 0)");
+    cmd->add_option("--y0", args->y0,
+                    "launch height above the ground in m (default 0); ranges are to the ground (y = 0), not back to "
+                    "the launch height as in predict --y0");
     addFlightModelOptions(*cmd, args->model);
     cmd->add_option("--from", args->from, "first angle in degrees (default -90)");
     cmd->add_option("--to", args->to, "last angle in degrees (default 90)");
@@ -206,9 +287,17 @@ CommandRunner addChartCommand(CLI::App& app)
     cmd->add_option("--dt", args->dt, "RK4 step in s (default 1/60)");
     cmd->add_option("--out", args->out, "also draw the chart into this PNG file");
     cmd->add_flag("--json", args->json, "print one JSON object");
-    return [args]
+
+    auto tableArgs = std::make_shared<TableArgs>();
+    CLI::App* table = chart->add_subcommand("table", "A CSV file (simulate --csv, the game's export) drawn as a "
+                                                     "spreadsheet shows it, into a PNG");
+    table->add_option("csv", tableArgs->csv, "the CSV file")->required();
+    table->add_option("--out", tableArgs->out, "the PNG file to write")->required();
+    table->add_option("--rows", tableArgs->rows, "data rows to show (default 20)");
+    table->add_option("--every", tableArgs->every, "show every Nth data row (default 1)");
+    return [args, tableArgs, table]
     {
-        return runRange(*args);
+        return table->parsed() ? runTable(*tableArgs) : runRange(*args);
     };
 }
 

@@ -1,5 +1,7 @@
 #include "plot/PlotPng.hpp"
+
 #include "plot/AxisLayout.hpp"
+#include "plot/CairoPng.hpp"
 #include "plot/Obstacles.hpp"
 #include "plot/PlotError.hpp"
 #include "plot/PlotFont.hpp"
@@ -470,22 +472,9 @@ void Painter::draw()
     drawTitles(m_frame);
 }
 
-cairo_status_t writeToFile(void* closure, const unsigned char* data, unsigned int length)
-{
-    return std::fwrite(data, 1, length, static_cast<std::FILE*>(closure)) == length ? CAIRO_STATUS_SUCCESS
-                                                                                    : CAIRO_STATUS_WRITE_ERROR;
-}
-
 void Painter::write(const std::string& path)
 {
-    cairo_surface_flush(m_surface.get());
-    std::unique_ptr<std::FILE, decltype(&std::fclose)> file(std::fopen(path.c_str(), "wb"), std::fclose);
-    if (!file)
-        throw PlotError("cannot write the plot " + path + " (" + std::strerror(errno) + ")");
-    const cairo_status_t status = cairo_surface_write_to_png_stream(m_surface.get(), writeToFile, file.get());
-    const int closed = std::fclose(file.release());
-    if (status != CAIRO_STATUS_SUCCESS || closed != 0)
-        throw PlotError("cannot write the plot " + path + " (" + std::strerror(errno) + ")");
+    writeSurfacePng(m_surface.get(), path, "plot");
 }
 
 } // namespace

@@ -202,6 +202,21 @@ Guide lesson(const std::string& id, const LevelDef& level, const Catalog& catalo
         return materialsLesson(level, catalog);
     if (id == "lesson-gravity")
         return gravityLesson(level);
+    if (id == "lesson-predict")
+        return {"Lesson: predict, then launch",
+                {{"Read the aim in the card (angle and speed). Work out where the bird lands with the formula above, "
+                  "type the range in metres and press Enter.",
+                  [](const GuideContext& c)
+                  {
+                      return c.predictionLocked || c.predictionsAnswered > 0;
+                  }},
+                 {"Launch at that aim (Space) and compare: your prediction, the flight, the formula.",
+                  [](const GuideContext& c)
+                  {
+                      return c.predictionsAnswered > 0;
+                  }},
+                 {"Press Tab to predict the maximum height or the flight time instead, then take out the pig.", won}},
+                "The world flies the physics the formula describes: a good prediction lands within centimetres."};
     return {};
 }
 
@@ -258,6 +273,7 @@ const std::vector<LessonEntry>& lessonList()
         {"lesson-momentum", "Momentum and energy", "lesson-momentum.json"},
         {"lesson-materials", "Materials", "lesson-materials.json"},
         {"lesson-gravity", "Gravity", "lesson-gravity.json"},
+        {"lesson-predict", "Predict, then launch", "lesson-predict.json"},
     };
     return lessons;
 }

@@ -21,9 +21,15 @@ std::string momentum(double massKg, const BodyVelocity& v)
     return withUnit(massKg * speed(v), 1, "kg\u00B7m/s");
 }
 
+/// Kinetic energy, translation and rotation; the rotation's share is named when there is any, so that the total
+/// never holds energy the panel does not show.
 std::string kinetic(double massKg, double inertia, const BodyVelocity& v)
 {
-    return withUnit(0.5 * massKg * speed(v) * speed(v) + 0.5 * inertia * v.omegaRadPerS * v.omegaRadPerS, 1, "J");
+    const double spin = 0.5 * inertia * v.omegaRadPerS * v.omegaRadPerS;
+    std::string text = withUnit(0.5 * massKg * speed(v) * speed(v) + spin, 1, "J");
+    if (spin >= 0.05)
+        text += " (spin " + withUnit(spin, 1, "J") + ")";
+    return text;
 }
 
 } // namespace
@@ -40,7 +46,8 @@ sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf
         {"  before: " + withUnit(speed(impact.birdBefore), 1, "m/s"),
          momentum(impact.birdMassKg, impact.birdBefore) + "   " +
              kinetic(impact.birdMassKg, impact.birdInertiaKgM2, impact.birdBefore)},
-        {"  after: " + withUnit(speed(impact.birdAfter), 1, "m/s"),
+        {"  after: " + withUnit(speed(impact.birdAfter), 1, "m/s") + ", " +
+             withUnit(impact.birdAfter.omegaRadPerS, 1, "rad/s"),
          momentum(impact.birdMassKg, impact.birdAfter) + "   " +
              kinetic(impact.birdMassKg, impact.birdInertiaKgM2, impact.birdAfter)},
         {body + ", " + formatFixed(impact.bodyMassKg, 1) + " kg", "", sf::Color::Transparent, true},
@@ -54,7 +61,7 @@ sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf
         {"together", "", sf::Color::Transparent, true},
         {"  momentum before \u2192 after", withUnit(std::hypot(pBefore[0], pBefore[1]), 1, "") + "\u2192 " +
                                                withUnit(std::hypot(pAfter[0], pAfter[1]), 1, "kg\u00B7m/s")},
-        {"  kinetic energy before \u2192 after",
+        {"  kinetic energy (with spin) before \u2192 after",
          withUnit(impact.kineticBeforeJ(), 0, "") + "\u2192 " + withUnit(impact.kineticAfterJ(), 0, "J")},
     };
     std::string damage = withUnit(impact.damageNs, 1, "N\u00B7s");

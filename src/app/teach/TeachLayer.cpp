@@ -80,6 +80,8 @@ bool TeachLayer::handleEvent(const sf::Event& event, PlayView& view)
         m_app.notify("The step-by-step method tools come with the university wording (Settings \u2192 Wording)");
         return true;
     }
+    if (m_quiz.handleEvent(event, view))
+        return true;
     if (m_walkthrough.handleEvent(event, view, m_follower))
         return true;
     if (event.type == sf::Event::KeyPressed && !event.key.control && !event.key.alt)
@@ -145,6 +147,7 @@ void TeachLayer::onLevelStart(PlayView& view)
     m_follower.reset();
     m_paths.onLevelStart();
     m_feedback.reset();
+    m_quiz.reset();
 }
 
 void TeachLayer::frameUpdate(PlayView& view, double frameS)
@@ -152,6 +155,7 @@ void TeachLayer::frameUpdate(PlayView& view, double frameS)
     (void)frameS;
     const GameSession& session = view.session();
     m_feedback.update(session, view.aim());
+    m_quiz.update(session, view.aim());
     m_comparison.update(session, view.preview());
     GuideContext context;
     context.session = &session;
@@ -161,6 +165,8 @@ void TeachLayer::frameUpdate(PlayView& view, double frameS)
     context.comparisonOn = m_comparison.active();
     context.walkthroughOn = m_walkthrough.active();
     context.measured = m_paths.used();
+    context.predictionLocked = m_quiz.locked();
+    context.predictionsAnswered = m_quiz.answered();
     m_guide.update(context);
     if (m_showChart)
         m_chart.update(session, view.aim());
@@ -249,6 +255,11 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
         const sf::FloatRect card =
             m_guide.draw(target, *font, {margin, left}, std::min(440.0f * scale, window.x - 2.0f * margin),
                          m_app.textSize(17.0f), m_app.textSize(15.0f), scale);
+        left = card.top + card.height + gap;
+    }
+    if (PredictQuizView::wanted(session.level()) && !m_walkthrough.active())
+    {
+        const sf::FloatRect card = m_quiz.draw(target, *font, {margin, left}, titleSize, rowSize, scale);
         left = card.top + card.height + gap;
     }
     if (overlayOn() && !m_walkthrough.active())

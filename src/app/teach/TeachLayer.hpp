@@ -6,6 +6,7 @@
 #include "teach/FeedbackView.hpp"
 #include "teach/Guide.hpp"
 #include "teach/PathHistory.hpp"
+#include "teach/PredictQuizView.hpp"
 #include "teach/RangeChartView.hpp"
 #include "teach/WalkthroughView.hpp"
 
@@ -42,6 +43,7 @@ private:
     RangeChartView m_chart;
     WalkthroughView m_walkthrough;
     FeedbackView m_feedback;
+    PredictQuizView m_quiz;
     GuideRunner m_guide;
     std::string m_guideLevel; ///< the level the guide was started for: a restart keeps its progress
     bool m_showChart = false;

@@ -1,8 +1,11 @@
 #include <abalike/flight/FlightIntegrator.hpp>
 #include <abalike/level/LevelFlight.hpp>
+#include <abalike/teach/FlightEnergy.hpp>
 #include <abalike/teach/ShotTable.hpp>
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 namespace abalike
@@ -28,7 +31,31 @@ std::string shotTableCsv(const GameSession& session)
                 path.push_back(point);
         IntegratorSettings settings;
         settings.dtS = dt;
-        const FlightIntegrator model(levelFlightModel(session.level().environment, *bird), settings);
+        const FlightModel flightModel = levelFlightModel(session.level().environment, *bird);
+        const FlightIntegrator model(flightModel, settings);
+        // Until its first contact the bird rides the RK4 states (the world flies exactly those steps), so the rows
+        // up to then come from the replayed flight in double precision: exact velocity, acceleration and drag work,
+        // free of the float rounding that central differences of the world's positions amplify (a few mm/s^2).
+        // An ability that changed the flight ends the replay's validity where it fired.
+        double replayUntil = -1.0;
+        for (const auto& point : shot.actualPath)
+            if (std::abs(point[0] / dt - std::round(point[0] / dt)) >= 1e-6)
+            {
+                replayUntil = point[0];
+                break;
+            }
+        if (replayUntil < 0.0 && !shot.actualPath.empty())
+            replayUntil = shot.actualPath.back()[0];
+        if (shot.ability && shot.ability->changedFlight)
+            replayUntil = std::min(replayUntil, shot.ability->tS);
+        std::optional<FlightEnergyTracker> replay;
+        if (!shot.actualPath.empty() && replayUntil > 0.0)
+        {
+            const double angle = shot.angleDeg * 3.14159265358979323846 / 180.0;
+            replay.emplace(flightModel, settings,
+                           FlightState{shot.actualPath.front()[1], shot.actualPath.front()[2],
+                                       shot.speedMps * std::cos(angle), shot.speedMps * std::sin(angle)});
+        }
         const double m = bird->massKg;
         double dragWork = 0.0;
         double lastDragPower = 0.0;
@@ -53,17 +80,31 @@ std::string shotTableCsv(const GameSession& session)
                 ax = (path[i + 1][1] - 2.0 * path[i][1] + path[i - 1][1]) / (dt * dt);
                 ay = (path[i + 1][2] - 2.0 * path[i][2] + path[i - 1][2]) / (dt * dt);
             }
+            double x = path[i][1];
+            double y = path[i][2];
+            const bool exact = replay && path[i][0] <= replayUntil + 1e-9;
+            if (exact)
+            {
+                const FlightEnergy e = replay->at(path[i][0]);
+                x = e.state[0];
+                y = e.state[1];
+                vx = e.state[2];
+                vy = e.state[3];
+                const FlightState rate = model.rightHandSide(path[i][0], e.state);
+                ax = rate[2];
+                ay = rate[3];
+                dragWork = e.dragLossJ;
+            }
             // The air's force on the bird: the model's acceleration less gravity; its power against the motion.
-            const FlightState s{path[i][1], path[i][2], vx, vy};
+            const FlightState s{x, y, vx, vy};
             const FlightState rate = model.rightHandSide(path[i][0], s);
             const double dragPower = -m * (rate[2] * vx + (rate[3] + g) * vy);
-            if (i > 0)
+            if (i > 0 && !exact)
                 dragWork += 0.5 * (dragPower + lastDragPower) * (path[i][0] - path[i - 1][0]);
             lastDragPower = dragPower;
             const double speed = std::hypot(vx, vy);
-            csv << k + 1 << ',' << path[i][0] << ',' << path[i][1] << ',' << path[i][2] << ',' << vx << ',' << vy << ','
-                << ax << ',' << ay << ',' << speed << ',' << 0.5 * m * speed * speed << ',' << m * g * path[i][2] << ','
-                << dragWork << '\n';
+            csv << k + 1 << ',' << path[i][0] << ',' << x << ',' << y << ',' << vx << ',' << vy << ',' << ax << ','
+                << ay << ',' << speed << ',' << 0.5 * m * speed * speed << ',' << m * g * y << ',' << dragWork << '\n';
         }
     }
     return csv.str();

@@ -15,6 +15,7 @@ const std::vector<TextValueName>& textValueNames()
         {"v_max", "BIRD", "launch speed at full pull, v0 = sqrt(2E/m) (at most the catalog's speed cap)", "m/s", 1},
         {"p_max", "BIRD", "momentum at full pull, m v0", "N s", 0},
         {"mass", "BIRD", "the bird's mass", "kg", -1},
+        {"radius", "BIRD", "the bird's radius", "m", -1},
         {"energy", "", "energy the band stores at full pull, E = 1/2 F x", "J", 0},
         {"force", "", "the band's force at full pull (max_force_n)", "N", 0},
         {"pull", "", "the full pull (max_pull_m)", "m", -1},
@@ -179,6 +180,8 @@ double evaluate(const LevelDef& level, const Catalog& catalog, std::string_view 
             return bird.massKg * speed;
         if (name == "mass")
             return bird.massKg;
+        if (name == "radius")
+            return bird.radiusM;
         if (name == "range_flat")
         {
             if (air.gravity <= 0.0)

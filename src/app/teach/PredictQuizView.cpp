@@ -1,0 +1,179 @@
+#include "teach/PredictQuizView.hpp"
+
+#include "render/TextFormat.hpp"
+#include "teach/TeachDraw.hpp"
+
+#include <abalike/level/LevelCatalog.hpp>
+#include <cmath>
+#include <cstdlib>
+
+namespace abalike::app
+{
+
+namespace
+{
+constexpr std::size_t kMaxTyped = 8;
+
+QuizQuantity next(QuizQuantity quantity)
+{
+    switch (quantity)
+    {
+    case QuizQuantity::Range:
+        return QuizQuantity::MaxHeight;
+    case QuizQuantity::MaxHeight:
+        return QuizQuantity::FlightTime;
+    case QuizQuantity::FlightTime:
+        break;
+    }
+    return QuizQuantity::Range;
+}
+
+bool isDigitKey(sf::Keyboard::Key key)
+{
+    return (key >= sf::Keyboard::Num0 && key <= sf::Keyboard::Num9) ||
+           (key >= sf::Keyboard::Numpad0 && key <= sf::Keyboard::Numpad9) || key == sf::Keyboard::Period;
+}
+
+std::string withQuantityUnit(double value, QuizQuantity quantity)
+{
+    return withUnit(value, 2, quizQuantityUnit(quantity));
+}
+} // namespace
+
+void PredictQuizView::reset()
+{
+    m_answered = 0;
+    m_typed.clear();
+    m_locked.reset();
+    m_result.reset();
+    m_note.clear();
+}
+
+bool PredictQuizView::handleEvent(const sf::Event& event, const PlayView& view)
+{
+    if (!wanted(view.session().level()) || view.session().phase() != Phase::Aiming)
+        return false;
+    if (event.type == sf::Event::TextEntered)
+    {
+        const sf::Uint32 c = event.text.unicode;
+        if ((c >= '0' && c <= '9') || c == '.')
+        {
+            if (!m_locked && m_typed.size() < kMaxTyped && !(c == '.' && m_typed.find('.') != std::string::npos))
+                m_typed += static_cast<char>(c);
+            return true;
+        }
+        return false;
+    }
+    if (event.type != sf::Event::KeyPressed || event.key.control || event.key.alt)
+        return false;
+    const sf::Keyboard::Key key = event.key.code;
+    if (isDigitKey(key))
+        return true; // the text event types it; the key must not also move the camera (0 is Home)
+    if (key == sf::Keyboard::BackSpace)
+    {
+        if (m_locked)
+            m_locked.reset();
+        else if (!m_typed.empty())
+            m_typed.pop_back();
+        return true;
+    }
+    if (key == sf::Keyboard::Tab)
+    {
+        m_quantity = next(m_quantity);
+        m_locked.reset();
+        m_typed.clear();
+        return true;
+    }
+    // Enter locks a typed prediction; once locked, Enter and Space launch as always.
+    if ((key == sf::Keyboard::Enter) && !m_locked && !m_typed.empty() && m_aim)
+    {
+        m_locked = Locked{m_quantity, std::strtod(m_typed.c_str(), nullptr), m_aim->angleDeg, m_aim->speedMps,
+                          view.session().shots().size()};
+        m_result.reset();
+        m_note.clear();
+        return true;
+    }
+    return false;
+}
+
+void PredictQuizView::update(const GameSession& session, const std::optional<AimReadout>& aim)
+{
+    if (!wanted(session.level()))
+        return;
+    m_aim = aim;
+    // A prediction is for the aim shown: changing the aim after locking asks for a new one.
+    if (m_locked && aim && session.shots().size() == m_locked->shotsBefore &&
+        (std::abs(aim->angleDeg - m_locked->angleDeg) > 1e-9 || std::abs(aim->speedMps - m_locked->speedMps) > 1e-9))
+    {
+        m_locked.reset();
+        m_note = "The aim changed: predict again for the new aim.";
+    }
+    if (!m_locked || session.shots().size() <= m_locked->shotsBefore)
+        return;
+    const ShotRecord& shot = session.shots()[m_locked->shotsBefore];
+    const Catalog catalog = levelCatalog(session.level(), session.catalog());
+    const BirdType* bird = catalog.findBird(shot.bird);
+    if (bird == nullptr)
+        return;
+    const LevelDef& level = session.level();
+    const std::optional<double> measured =
+        measuredAnswer(m_locked->quantity, shot, level.slingshot.x, level.groundY, bird->radiusM);
+    const QuizLaunch launch{shot.speedMps, shot.angleDeg, level.environment.gravity,
+                            session.launchPoint()[1] - level.groundY, bird->radiusM};
+    const std::optional<double> closed = closedFormAnswer(m_locked->quantity, launch);
+    if (measured && closed)
+    {
+        m_result = Result{m_locked->quantity, m_locked->value, *measured, *closed};
+        ++m_answered;
+        m_locked.reset();
+        m_typed.clear();
+    }
+    else if (session.phase() == Phase::Aiming || session.finished())
+    {
+        // The bird hit something before it came down to the ground: nothing to compare.
+        m_note = "That bird did not come down to the ground: no measurement. Predict again.";
+        m_locked.reset();
+    }
+}
+
+sf::FloatRect PredictQuizView::draw(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f at, unsigned titleSize,
+                                    unsigned rowSize, float scale) const
+{
+    std::vector<PanelRow> rows;
+    const std::string what = quizQuantityName(m_quantity);
+    if (m_aim)
+        rows.push_back(
+            {"aim shown", formatFixed(m_aim->angleDeg, 1) + "\u00B0 at " + withUnit(m_aim->speedMps, 1, "m/s")});
+    if (m_locked)
+    {
+        rows.push_back({"your " + std::string(quizQuantityName(m_locked->quantity)),
+                        withQuantityUnit(m_locked->value, m_locked->quantity) + "  (locked)"});
+        rows.push_back({"Launch at this aim: Space, or let go of the bird.", ""});
+    }
+    else
+    {
+        rows.push_back({"your " + what + " (type it)",
+                        (m_typed.empty() ? std::string("_") : m_typed + "_") + " " + quizQuantityUnit(m_quantity)});
+        rows.push_back({"Enter locks it; Tab: range, height or time.", ""});
+    }
+    if (!m_note.empty())
+        rows.push_back({m_note, ""});
+    if (m_result)
+    {
+        const Result& r = *m_result;
+        const double error = r.predicted - r.measured;
+        rows.push_back({"last shot: " + std::string(quizQuantityName(r.quantity)), "", sf::Color::Transparent, true});
+        rows.push_back({"  you predicted", withQuantityUnit(r.predicted, r.quantity)});
+        rows.push_back({"  measured on the flight", withQuantityUnit(r.measured, r.quantity)});
+        rows.push_back({"  the formula gives", withQuantityUnit(r.closedForm, r.quantity)});
+        if (r.quantity != QuizQuantity::MaxHeight)
+            rows.push_back({"  (to where the bird touches the ground: its centre r above it)", ""});
+        rows.push_back({"  your error", (error >= 0.0 ? "+" : "") + withQuantityUnit(error, r.quantity) + " (" +
+                                            formatFixed(r.measured != 0.0 ? 100.0 * error / r.measured : 0.0, 1) +
+                                            " %)"});
+    }
+    const TextPanel panel("Predict, then launch", std::move(rows));
+    return panel.draw(target, font, at, titleSize, rowSize, scale);
+}
+
+} // namespace abalike::app
