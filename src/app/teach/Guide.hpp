@@ -22,7 +22,7 @@ struct GuideContext
     bool chartOn = false;
     bool comparisonOn = false;
     bool walkthroughOn = false;
-    bool measured = false; ///< a path point was read or the tape used since the guide started
+    bool measured = false;         ///< a path point was read or the tape used since the guide started
     bool predictionLocked = false; ///< predict-then-launch: a prediction is locked for the aim shown
     int predictionsAnswered = 0;   ///< predict-then-launch: predictions compared with a flight so far
     int shotsAtStepStart = 0;

@@ -194,10 +194,12 @@ Guide lesson(const std::string& id, const LevelDef& level, const Catalog& catalo
         return {"Lesson: momentum and energy",
                 {overlayStep("after the first impact a panel shows momentum and energy."),
                  {"Hit the big wood block.", hitABody},
-                 {"Read the impact panel: momentum before and after, the kinetic energy lost to damage and heat, the "
-                  "coefficient of restitution. Then take out the pig.",
+                 {"Read the impact panel: momentum before and after, the kinetic energy lost (to heat, sound and "
+                  "deformation), the coefficient of restitution, and the impulse the block took against its "
+                  "strength. Then take out the pig.",
                   won}},
-                "Momentum is shared in a collision; kinetic energy is not kept: it goes into breaking and heat."};
+                "Momentum is shared in a collision; kinetic energy is not kept. Whether a block breaks is decided by "
+                "the impulse it takes (N\u00B7s), not by energy."};
     if (id == "lesson-materials")
         return materialsLesson(level, catalog);
     if (id == "lesson-gravity")

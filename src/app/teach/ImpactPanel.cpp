@@ -68,15 +68,17 @@ sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf
     if (bodyStrengthNs > 0.0)
         damage +=
             " of " + withUnit(bodyStrengthNs, 0, "N\u00B7s") + (impact.damageNs >= bodyStrengthNs ? ": broke it" : "");
-    rows.push_back({"  into damage (impulse)", damage});
     if (const auto e = impact.restitution())
         rows.push_back({"  restitution e = separating / closing speed", formatFixed(*e, 2)});
+    // Strength is an impulse the body can take, not energy: its own heading keeps it apart from the joules above.
+    rows.push_back({"strength (an impulse in N\u00B7s, not energy)", "", sf::Color::Transparent, true});
+    rows.push_back({"  impulse taken as damage", damage});
     // Momentum is conserved only if nothing else pushed during the step: a block standing on others is held.
     const double change = std::hypot(pAfter[0] - pBefore[0], pAfter[1] - pBefore[1]);
     if (change > 0.05 * std::hypot(pBefore[0], pBefore[1]))
         rows.push_back({"Momentum changed: what the body stands on pushed back too.", ""});
     else
-        rows.push_back({"Momentum is kept; the kinetic energy lost went into damage and heat.", ""});
+        rows.push_back({"Momentum is kept; the kinetic energy lost became heat, sound and deformation.", ""});
     const TextPanel panel("First impact: t = " + withUnit(impact.tS, 3, "s"), std::move(rows));
     return panel.draw(target, font, topLeft, titleSize, rowSize, scale);
 }
