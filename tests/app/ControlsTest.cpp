@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -47,26 +48,82 @@ const Camera& testCamera()
     return camera;
 }
 
-bool press(AimController& aim, sf::Keyboard::Key code, bool shift = false)
+bool press(AimController& aim, sf::Keyboard::Key code, bool shift = false, bool alt = false)
 {
-    return aim.handleEvent(key(code, shift), testCamera(), {0.0f, 0.0f});
+    sf::Event event = key(code, shift);
+    event.key.alt = alt;
+    return aim.handleEvent(event, testCamera(), {0.0f, 0.0f});
 }
 } // namespace
 
-TEST(AimKeys, FineStepsLandOnTheOneDegreeAndTwoPercentGrid)
+TEST(AimKeys, StepsLandOnTheHalfDegreeAndOnePercentGrid)
 {
     AimController aim;
-    aim.set(43.2, 0.51);
+    aim.set(43.2, 0.515);
     press(aim, sf::Keyboard::Up);
-    EXPECT_NEAR(aim.angleDeg(), 44.0, 1e-12);
+    EXPECT_NEAR(aim.angleDeg(), 43.5, 1e-12);
     press(aim, sf::Keyboard::Down);
     press(aim, sf::Keyboard::Down);
-    EXPECT_NEAR(aim.angleDeg(), 42.0, 1e-12);
+    EXPECT_NEAR(aim.angleDeg(), 42.5, 1e-12);
     press(aim, sf::Keyboard::Right);
     EXPECT_NEAR(aim.powerFraction(), 0.52, 1e-12);
     press(aim, sf::Keyboard::Left);
     press(aim, sf::Keyboard::Left);
-    EXPECT_NEAR(aim.powerFraction(), 0.48, 1e-12);
+    EXPECT_NEAR(aim.powerFraction(), 0.50, 1e-12);
+}
+
+TEST(AimKeys, AltTakesFineStepsOfATenthOfADegreeAndAFifthOfAPercent)
+{
+    AimController aim;
+    aim.set(43.23, 0.5);
+    press(aim, sf::Keyboard::Up, false, true);
+    EXPECT_NEAR(aim.angleDeg(), 43.3, 1e-9);
+    press(aim, sf::Keyboard::Down, false, true);
+    press(aim, sf::Keyboard::Down, false, true);
+    EXPECT_NEAR(aim.angleDeg(), 43.1, 1e-9);
+    press(aim, sf::Keyboard::Right, false, true);
+    EXPECT_NEAR(aim.powerFraction(), 0.502, 1e-9);
+}
+
+TEST(AimDrag, TheDragsScreenLengthIsThePullAtAnyZoom)
+{
+    // 200 px at 720 px of window height is a full pull; at half the zoom the same drag is the same pull.
+    EXPECT_FLOAT_EQ(AimController::fullPullPx({1280u, 720u}), 200.0f);
+    EXPECT_FLOAT_EQ(AimController::fullPullPx({1920u, 1080u}), 300.0f);
+    for (const float pixelsPerMetre : {50.0f, 25.0f, 8.0f})
+    {
+        const Camera camera = Camera::fromView({-12.8f, 7.2f}, pixelsPerMetre, {1280u, 720u});
+        const sf::Vector2f pouch{0.0f, 0.0f};
+        const sf::Vector2f pouchPx = camera.toScreen(pouch);
+        AimController aim;
+        sf::Event down{};
+        down.type = sf::Event::MouseButtonPressed;
+        down.mouseButton = {sf::Mouse::Left, static_cast<int>(pouchPx.x), static_cast<int>(pouchPx.y)};
+        aim.handleEvent(down, camera, pouch);
+        ASSERT_TRUE(aim.dragging());
+        // 100 px back and 100 px down: a 45 degree launch at 141/200 of a full pull.
+        sf::Event move{};
+        move.type = sf::Event::MouseMoved;
+        move.mouseMove = {static_cast<int>(pouchPx.x) - 100, static_cast<int>(pouchPx.y) + 100};
+        aim.handleEvent(move, camera, pouch);
+        const double dx = pouchPx.x - static_cast<float>(move.mouseMove.x);
+        const double dy = static_cast<float>(move.mouseMove.y) - pouchPx.y;
+        EXPECT_NEAR(aim.angleDeg(), std::atan2(dy, dx) * 180.0 / M_PI, 1e-4) << pixelsPerMetre;
+        EXPECT_NEAR(aim.angleDeg(), 45.0, 0.5) << pixelsPerMetre;
+        EXPECT_NEAR(aim.powerFraction(), std::hypot(dx, dy) / 200.0, 1e-6) << pixelsPerMetre;
+        // One pixel more is at most 0.5 % of the pull.
+        move.mouseMove.x -= 1;
+        const double before = aim.powerFraction();
+        aim.handleEvent(move, camera, pouch);
+        EXPECT_LE(aim.powerFraction() - before, 0.005);
+        // Losing focus cancels the pull: back to the aim before it, nothing launches.
+        sf::Event lost{};
+        lost.type = sf::Event::LostFocus;
+        EXPECT_FALSE(aim.handleEvent(lost, camera, pouch));
+        EXPECT_FALSE(aim.dragging());
+        EXPECT_DOUBLE_EQ(aim.angleDeg(), AimController::kDefaultAngleDeg);
+        EXPECT_DOUBLE_EQ(aim.powerFraction(), AimController::kDefaultPower);
+    }
 }
 
 TEST(AimKeys, ShiftTakesCoarseStepsOfFiveDegreesAndTenPercent)
@@ -97,7 +154,7 @@ TEST(AimKeys, StepsStopAtTheLimits)
     press(aim, sf::Keyboard::Down, true);
     press(aim, sf::Keyboard::Left, true);
     EXPECT_DOUBLE_EQ(aim.angleDeg(), -90.0);
-    EXPECT_NEAR(aim.powerFraction(), 0.02, 1e-12); // never below one fine step: a zero pull launches nothing
+    EXPECT_NEAR(aim.powerFraction(), 0.01, 1e-12); // never below one step: a zero pull launches nothing
 }
 
 TEST(AimKeys, SpaceAndEnterLaunchButOnlyWithEnoughPull)

@@ -264,5 +264,39 @@ TEST_F(ScreenFlow, PlayLevelOpensACampaignLevelByItsIdEvenLocked)
     EXPECT_EQ(run.values("level", "campaign_index"), (std::vector<std::string>{"12"}));
 }
 
+TEST_F(ScreenFlow, ATimedLevelThatRunsOutSaysOutOfTimeAndTheTraceSaysWhy)
+{
+    const std::string level = m_dir.write("timed.json", R"({"format": 1, "id": "timed", "title": "Timed",
+        "slingshot": {"x": 0, "y": 1.5}, "birds": ["red", "red"], "pigs": [{"x": 20, "y": 0.25}], "time_limit_s": 1.5})");
+    const GameRun run = play(level + " --frames 160");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.values("finished", "reason"), (std::vector<std::string>{"out_of_time"}));
+    std::string texts;
+    for (const nlohmann::json& line : run.trace)
+        if (line.value("event", "") == "texts")
+            for (const nlohmann::json& text : line["shown"])
+                texts += text.get<std::string>() + "\n";
+    EXPECT_NE(texts.find("Out of time (2 s)"), std::string::npos) << texts;
+
+    // A level won says so too.
+    const GameRun won = play(sourceFile("levels/3-1-tailwind.json") + " --shot 30,30 --frames 300");
+    EXPECT_EQ(won.values("finished", "reason"), (std::vector<std::string>{"won"}));
+}
+
+TEST_F(ScreenFlow, TheResultsCardIgnoresASpaceHeldFromTheShotAndItsFirstHalfSecond)
+{
+    // 3-1's reference shot wins (the results open near frame 285). Space goes down at frame 250 for the ability and
+    // stays down; R at the card's first frames is ignored too: the level is not restarted.
+    const std::string level = sourceFile("levels/3-1-tailwind.json") + " --shot 30,30 --frames 330";
+    const GameRun run = play(level + script(R"([{"frame": 250, "key": "Space", "action": "press"},
+        {"frame": 288, "key": "R"}, {"frame": 300, "key": "Space", "action": "release"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_TRUE(run.values("restart", "id").empty());
+    EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"play", "results"}));
+    // After half a second, R restarts as always.
+    const GameRun later = play(level + script(R"([{"frame": 322, "key": "R"}])"));
+    EXPECT_EQ(later.values("restart", "id"), (std::vector<std::string>{"3-1"}));
+}
+
 } // namespace
 } // namespace abalike::test

@@ -191,6 +191,21 @@ TEST_F(TeachFlow, PredictThenLaunchSetsThePredictionAgainstTheFlightAndTheFormul
     EXPECT_NE(texts.find(std::string("the formula gives\n") + expected), std::string::npos) << texts;
 }
 
+TEST_F(TeachFlow, TheTutorialCompletesEvenWithTheOverlayHiddenAgain)
+{
+    // A new player: aim, power, launch, the overlay on and off again, a tape with the right button, a second launch.
+    // The measuring step used to wait for the overlay forever; and a single 0.5 degree key step must count as aiming.
+    const GameRun run = play("--frames 640" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"},
+        {"frame": 4, "key": "Enter"}, {"frame": 10, "key": "Up"}, {"frame": 12, "key": "Right"},
+        {"frame": 14, "key": "Space"}, {"frame": 20, "key": "T"}, {"frame": 30, "key": "T"},
+        {"frame": 40, "mouse": "press", "button": "right", "x": 300, "y": 500},
+        {"frame": 45, "mouse": "move", "x": 500, "y": 500},
+        {"frame": 50, "mouse": "release", "button": "right", "x": 500, "y": 500}, {"frame": 600, "key": "Space"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const std::string texts = shownTexts(run);
+    EXPECT_NE(texts.find("Tutorial: the controls\ndone\nThat is every control."), std::string::npos) << texts;
+}
+
 TEST_F(TeachFlow, TheWalkthroughHoldsTheWorldStill)
 {
     // The reference shot of 3-1 wins the level in about 6 s; with the walkthrough started in flight and never left,

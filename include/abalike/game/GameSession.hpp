@@ -88,6 +88,16 @@ public:
 
     Phase phase() const { return m_phase; }
     bool finished() const { return m_phase == Phase::Won || m_phase == Phase::Lost; }
+    /// Why a lost level was lost: its time limit ran out with a pig standing (true), or the birds ran out (false).
+    bool outOfTime() const { return m_outOfTime; }
+    /// "won", "out_of_birds" or "out_of_time" once finished (the trace's reason), else "".
+    const char* endReason() const
+    {
+        return m_phase == Phase::Won    ? "won"
+               : m_phase != Phase::Lost ? ""
+               : m_outOfTime            ? "out_of_time"
+                                        : "out_of_birds";
+    }
     /// No pig is left: the level is won once the grace ends (kWinGraceS); no bird can be launched meanwhile.
     bool winPending() const { return m_winSinceS.has_value() && !finished(); }
 
@@ -157,6 +167,7 @@ private:
     WorldSettings m_settings;
     std::unique_ptr<GameWorld> m_world;
     Phase m_phase = Phase::Aiming;
+    bool m_outOfTime = false;
     int m_nextBird = 0;
     double m_shotStartTime = 0.0;
     std::vector<ShotRecord> m_shots;

@@ -10,10 +10,14 @@ namespace abalike::app
 namespace
 {
 constexpr double kDegToRad = std::numbers::pi / 180.0;
-constexpr double kAngleStepDeg = 1.0;
+constexpr double kAngleStepDeg = 0.5;
 constexpr double kCoarseAngleStepDeg = 5.0;
-constexpr double kPowerStep = 0.02;
+constexpr double kFineAngleStepDeg = 0.1;
+constexpr double kPowerStep = 0.01;
 constexpr double kCoarsePowerStep = 0.10;
+constexpr double kFinePowerStep = 0.002;
+/// A full pull is this far from the pouch on the screen at 720 px of window height: one pixel is 0.5 % of the pull.
+constexpr float kFullPullPxAt720 = 200.0f;
 constexpr float kGrabRadiusM = 1.0f;
 constexpr float kGrabRadiusPx = 36.0f;
 
@@ -44,11 +48,22 @@ sf::Vector2f AimController::pullOffset() const
             static_cast<float>(-pull * std::sin(m_angleDeg * kDegToRad))};
 }
 
+float AimController::fullPullPx(sf::Vector2u windowSize)
+{
+    return kFullPullPxAt720 * static_cast<float>(windowSize.y) / 720.0f;
+}
+
 bool AimController::grabs(sf::Vector2f pixel, const Camera& camera, sf::Vector2f pouch) const
 {
     const sf::Vector2f world = camera.toWorld(pixel);
     const float grab = std::max(kGrabRadiusM, kGrabRadiusPx * camera.metresPerPixel());
-    return distance(world, pouch) <= grab || distance(world, pouch + pullOffset()) <= grab;
+    // The pointer's pull (where it was let go) counts too: it is where the player's hand is.
+    const sf::Vector2f pouchPx = camera.toScreen(pouch);
+    const float pullPx = static_cast<float>(m_power) * fullPullPx(camera.windowSize());
+    const sf::Vector2f handPx = pouchPx - pullPx * sf::Vector2f(static_cast<float>(std::cos(m_angleDeg * kDegToRad)),
+                                                                -static_cast<float>(std::sin(m_angleDeg * kDegToRad)));
+    return distance(world, pouch) <= grab || distance(world, pouch + pullOffset()) <= grab ||
+           distance(pixel, handPx) <= kGrabRadiusPx;
 }
 
 bool AimController::handleEvent(const sf::Event& event, const Camera& camera, sf::Vector2f pouch)
@@ -72,8 +87,8 @@ bool AimController::handleEvent(const sf::Event& event, const Camera& camera, sf
         if (m_dragging)
         {
             m_dragMoved = true;
-            aimFromPointer(
-                camera.toWorld({static_cast<float>(event.mouseMove.x), static_cast<float>(event.mouseMove.y)}), pouch);
+            aimFromPointer({static_cast<float>(event.mouseMove.x), static_cast<float>(event.mouseMove.y)},
+                           camera.toScreen(pouch), fullPullPx(camera.windowSize()));
         }
         return false;
     case sf::Event::MouseButtonReleased:
@@ -89,7 +104,17 @@ bool AimController::handleEvent(const sf::Event& event, const Camera& camera, sf
         return false;
     }
     case sf::Event::KeyPressed:
-        return handleKey(event.key.code, event.key.shift);
+        return handleKey(event.key.code, event.key.shift ? Step::Coarse : event.key.alt ? Step::Fine : Step::Normal);
+    case sf::Event::LostFocus:
+        // A pull whose button was let go outside the window would follow the cursor with nothing held: the bird
+        // goes back to the aim it had, and nothing launches.
+        if (m_dragging)
+        {
+            m_dragging = false;
+            m_angleDeg = m_angleBeforeDrag;
+            m_power = m_powerBeforeDrag;
+        }
+        return false;
     default:
         return false;
     }
@@ -105,12 +130,14 @@ double AimController::stepOnGrid(double value, double step, int direction)
     return next * step;
 }
 
-bool AimController::handleKey(sf::Keyboard::Key key, bool coarse)
+bool AimController::handleKey(sf::Keyboard::Key key, Step size)
 {
     if (m_dragging)
         return false;
-    const double angleStep = coarse ? kCoarseAngleStepDeg : kAngleStepDeg;
-    const double powerStep = coarse ? kCoarsePowerStep : kPowerStep;
+    const double angleStep = size == Step::Coarse ? kCoarseAngleStepDeg
+                             : size == Step::Fine ? kFineAngleStepDeg
+                                                  : kAngleStepDeg;
+    const double powerStep = size == Step::Coarse ? kCoarsePowerStep : size == Step::Fine ? kFinePowerStep : kPowerStep;
     switch (key)
     {
     case sf::Keyboard::Up:
@@ -133,18 +160,19 @@ bool AimController::handleKey(sf::Keyboard::Key key, bool coarse)
     }
 }
 
-void AimController::aimFromPointer(sf::Vector2f world, sf::Vector2f pouch)
+void AimController::aimFromPointer(sf::Vector2f pointerPx, sf::Vector2f pouchPx, float fullPullPx)
 {
-    // The launch goes opposite to the drag: from the pointer through the pouch.
-    const sf::Vector2f pull = pouch - world;
+    // The launch goes opposite to the drag, from the pointer through the pouch; the drag's length on the screen is the
+    // pull fraction, whatever the zoom (y points down on the screen, up in the world).
+    const sf::Vector2f pull = pouchPx - pointerPx;
     const double length = std::hypot(pull.x, pull.y);
     if (length < 1e-3)
     {
         m_power = 0.0;
         return;
     }
-    m_angleDeg = std::atan2(pull.y, pull.x) / kDegToRad;
-    m_power = std::min(length, kMaxPullM) / kMaxPullM;
+    m_angleDeg = std::atan2(-pull.y, pull.x) / kDegToRad;
+    m_power = std::min(length / fullPullPx, 1.0);
 }
 
 } // namespace abalike::app

@@ -27,9 +27,13 @@ public:
     void set(double angleDeg, double powerFraction);
 
     /// Handles mouse and keyboard input while a bird is ready; `pouch` is where the bird leaves the slingshot.
-    /// Arrows step the angle by 1° and the power by 2 % (Shift: 5° and 10 %). Returns true when the player let go of
-    /// a drag or pressed Space or Enter: launch with the current aim.
+    /// Arrows step the angle by 0.5° and the power by 1 % (Shift: 5° and 10 %; Alt: 0.1° and 0.2 %). A drag sets the
+    /// power by its length on the screen: fullPullPx() is a full pull, at any zoom. Losing the window's focus cancels
+    /// a drag. Returns true when the player let go of a drag or pressed Space or Enter: launch with the current aim.
     bool handleEvent(const sf::Event& event, const Camera& camera, sf::Vector2f pouch);
+
+    /// How far from the pouch a drag is a full pull: 200 px at 720 px of window height, scaled with the height.
+    static float fullPullPx(sf::Vector2u windowSize);
 
     /// Whether a left press at this window pixel takes hold of the bird (near the pouch or the bird).
     bool grabs(sf::Vector2f pixel, const Camera& camera, sf::Vector2f pouch) const;
@@ -44,8 +48,14 @@ public:
     static double stepOnGrid(double value, double step, int direction);
 
 private:
-    bool handleKey(sf::Keyboard::Key key, bool coarse);
-    void aimFromPointer(sf::Vector2f world, sf::Vector2f pouch);
+    enum class Step
+    {
+        Normal,
+        Coarse, ///< Shift
+        Fine,   ///< Alt
+    };
+    bool handleKey(sf::Keyboard::Key key, Step size);
+    void aimFromPointer(sf::Vector2f pointerPx, sf::Vector2f pouchPx, float fullPullPx);
 
     double m_angleDeg = kDefaultAngleDeg;
     double m_power = kDefaultPower;

@@ -76,7 +76,11 @@ sf::FloatRect ResultsPanel::draw(sf::RenderTarget& target, sf::Vector2u size, co
     float y = topLeft.y + pad;
     if (m_font != nullptr)
     {
-        drawLabel(target, *m_font, utf8(won ? "Level complete!" : "Out of birds"), {centreX, y}, titleSize,
+        const std::string title = won ? std::string("Level complete!")
+                                  : session.outOfTime() && session.level().timeLimitS
+                                      ? "Out of time (" + formatFixed(*session.level().timeLimitS, 0) + " s)"
+                                      : std::string("Out of birds");
+        drawLabel(target, *m_font, utf8(title), {centreX, y}, titleSize,
                   won ? palette::kStar : sf::Color(255, 150, 130), Align::Centre);
         y += m_font->getLineSpacing(titleSize) + 4.0f * scale;
     }

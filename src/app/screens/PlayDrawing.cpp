@@ -19,13 +19,14 @@ namespace
 {
 constexpr float kLastShotFade = 0.45f;
 
-/// The circle the bird can be pulled back within (a full pull is full power), dashed around the pouch.
+/// The circle the pointer pulls within (its edge is a full pull, the same size on the screen at every zoom), dashed
+/// around the pouch.
 void drawPullLimit(sf::RenderTarget& target, const Camera& camera, const GameSession& session, bool pulling,
                    float uiScale)
 {
     const auto launch = session.launchPoint();
     const sf::Vector2f pouch = camera.toScreen({static_cast<float>(launch[0]), static_cast<float>(launch[1])});
-    const auto radius = static_cast<float>(AimController::kMaxPullM) * camera.pixelsPerMetre();
+    const float radius = AimController::fullPullPx(camera.windowSize());
     const sf::Color colour = faded(palette::kPreviewDot, pulling ? 0.85f : 0.3f);
     const float width = (pulling ? 2.5f : 1.5f) * uiScale;
     constexpr int kDashes = 36;

@@ -281,6 +281,7 @@ void PlayScreen::finishIfDone()
     const GameSession& session = *m_session;
     m_app.trace().write("finished", {{"level", session.level().id},
                                      {"won", session.phase() == Phase::Won},
+                                     {"reason", session.endReason()},
                                      {"score", session.score().total()},
                                      {"stars", session.stars()}});
     // Only campaign levels count towards progress; a scene from a file or the editor is not the player's record.

@@ -17,10 +17,27 @@ ResultsScreen::ResultsScreen(App& app, PlayScreen& play) : m_app(app), m_play(pl
     items.push_back({"retry", "Retry", true});
     items.push_back({"levels", "Level select", !app.campaign().levels.empty()});
     m_menu.setItems(std::move(items));
+    for (int key = 0; key < sf::Keyboard::KeyCount; ++key)
+        m_heldAtOpen[static_cast<std::size_t>(key)] = app.input().keyDown(static_cast<sf::Keyboard::Key>(key));
 }
 
 void ResultsScreen::handleEvent(const sf::Event& event)
 {
+    const bool keyEvent = event.type == sf::Event::KeyPressed || event.type == sf::Event::KeyReleased;
+    const auto key = keyEvent && event.key.code >= 0 && event.key.code < sf::Keyboard::KeyCount
+                         ? static_cast<std::size_t>(event.key.code)
+                         : m_heldAtOpen.size();
+    if (key < m_heldAtOpen.size() && m_heldAtOpen[key])
+    {
+        // A key held since before the card opened: its release ends that, its repeats are not a choice.
+        if (event.type == sf::Event::KeyReleased)
+            m_heldAtOpen[key] = false;
+        return;
+    }
+    const bool input = keyEvent || event.type == sf::Event::MouseButtonPressed ||
+                       event.type == sf::Event::MouseButtonReleased || event.type == sf::Event::JoystickButtonPressed;
+    if (input && m_shownS < kIgnoreInputS)
+        return;
     if (event.type == sf::Event::KeyPressed)
     {
         switch (event.key.code)

@@ -4,6 +4,9 @@
 #include "screens/Screen.hpp"
 #include "ui/MenuList.hpp"
 
+#include <SFML/Window/Keyboard.hpp>
+#include <array>
+
 namespace abalike::app
 {
 
@@ -11,7 +14,8 @@ class App;
 class PlayScreen;
 
 /// The end-of-level card over the finished level: won or lost, the score breakdown and stars, then retry, next
-/// level or level select (R and N work too).
+/// level or level select (R and N work too). For its first kIgnoreInputS it takes no input, nor afterwards a key
+/// held since before it opened: a Space pressed for the bird's ability a moment earlier must not restart the level.
 class ResultsScreen : public Screen
 {
 public:
@@ -22,7 +26,10 @@ public:
     std::string_view name() const override { return kName; }
     bool isOverlay() const override { return true; }
     void handleEvent(const sf::Event& event) override;
+    void frameUpdate(double frameS) override { m_shownS += frameS; }
     void draw(sf::RenderTarget& target) override;
+
+    static constexpr double kIgnoreInputS = 0.5;
 
 private:
     void activate(const std::string& id);
@@ -31,6 +38,8 @@ private:
     PlayScreen& m_play;
     ResultsPanel m_panel;
     MenuList m_menu;
+    double m_shownS = 0.0;
+    std::array<bool, sf::Keyboard::KeyCount> m_heldAtOpen{}; ///< keys down when it opened: ignored until released
 };
 
 } // namespace abalike::app

@@ -16,7 +16,7 @@ namespace
 
 bool angleChanged(const GuideContext& c)
 {
-    return c.aim && c.firstAim && std::abs(c.aim->angleDeg - c.firstAim->angleDeg) > 0.5;
+    return c.aim && c.firstAim && std::abs(c.aim->angleDeg - c.firstAim->angleDeg) > 0.05; // one fine step is 0.1°
 }
 
 bool powerChanged(const GuideContext& c)

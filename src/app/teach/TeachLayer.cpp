@@ -118,7 +118,9 @@ bool TeachLayer::handleEvent(const sf::Event& event, PlayView& view)
             break;
         }
     }
-    if (!overlayOn())
+    // The measuring tools work with the overlay, and always while a guide runs (the tutorial has a measuring step,
+    // and a player who hid the overlay again must not be stuck on it).
+    if (!overlayOn() && !m_guide.active())
         return false;
     if (event.type == sf::Event::KeyPressed && !event.key.control && !event.key.alt &&
         m_paths.handleKey(event.key, view))
@@ -276,7 +278,7 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
                         m_app.textSize(16.0f), scale);
 
     // The measuring tools last: what the player points at reads over everything.
-    if (overlayOn())
+    if (overlayOn() || m_guide.active())
         m_paths.drawTools(target, *font, view.camera(), session, rowSize, scale);
 }
 

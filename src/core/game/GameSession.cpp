@@ -21,6 +21,7 @@ void GameSession::restart()
 {
     m_world = std::make_unique<GameWorld>(m_level, m_catalog, m_settings);
     m_phase = Phase::Aiming;
+    m_outOfTime = false;
     m_nextBird = 0;
     m_shotStartTime = 0.0;
     m_shots.clear();
@@ -258,6 +259,7 @@ void GameSession::updatePhase()
     // A time-limited level is lost the moment its clock runs out with a pig still standing, whatever is flying.
     if (m_level.timeLimitS && !finished() && m_world->time() >= *m_level.timeLimitS && m_world->pigsAlive() > 0)
     {
+        m_outOfTime = true;
         endTurn(Phase::Lost);
         return;
     }
