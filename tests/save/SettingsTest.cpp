@@ -39,7 +39,7 @@ TEST(Settings, JsonRoundTrips)
     Settings settings;
     settings.musicVolume = 0.125;
     settings.effectsVolume = 0.0;
-    settings.showPreview = false;
+    settings.preview = PreviewMode::Short;
     settings.showActualPath = false;
     settings.fullscreen = true;
     settings.windowWidth = 1920;
@@ -77,6 +77,12 @@ TEST(Settings, AFileFromTheFirstReleaseStillReads)
     EXPECT_FALSE(old.reducedMotion);
     EXPECT_FALSE(old.teachingOverlay);
     EXPECT_FALSE(old.openAllLevels);
+    EXPECT_EQ(old.preview, PreviewMode::Full);
+    EXPECT_EQ(old.wording, Wording::School);
+    // A first-release file that turned the preview off keeps it off.
+    EXPECT_EQ(parseSettings(R"({"format": 1, "show_preview": false})").preview, PreviewMode::Off);
+    EXPECT_EQ(parseSettings(R"({"format": 1, "preview": "short"})").preview, PreviewMode::Short);
+    EXPECT_EQ(parseSettings(R"({"format": 1, "wording": "university"})").wording, Wording::University);
 }
 
 TEST(Settings, NewKeysAreCheckedToo)
@@ -89,6 +95,10 @@ TEST(Settings, NewKeysAreCheckedToo)
     EXPECT_NE(errorOf(R"({"format": 1, "palette": 2})").find("/palette"), std::string::npos);
     EXPECT_NE(errorOf(R"({"format": 1, "mute": "yes"})").find("/mute: expected true or false"), std::string::npos);
     EXPECT_NE(errorOf(R"({"format": 1, "teaching_overlay": 0})").find("/teaching_overlay"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": 1, "preview": "half"})").find("/preview: expected \"full\", \"short\" or \"off\""),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": 1, "wording": "college"})").find("/wording: expected \"school\" or \"university\""),
+              std::string::npos);
 }
 
 TEST(Settings, WritesOnlyWhatItCanReadBack)

@@ -298,5 +298,24 @@ TEST_F(ScreenFlow, TheResultsCardIgnoresASpaceHeldFromTheShotAndItsFirstHalfSeco
     EXPECT_EQ(later.values("restart", "id"), (std::vector<std::string>{"3-1"}));
 }
 
+TEST_F(ScreenFlow, QuittingFromARunningLevelAsksFirst)
+{
+    // Pause, then Quit game (the last item: Up from the first wraps to it): the game asks instead of quitting.
+    const std::string level = sourceFile("levels/1-1-first-flight.json") + " --frames 40";
+    const GameRun asked = play(level + script(R"([{"frame": 5, "key": "Escape"}, {"frame": 8, "key": "Up"},
+        {"frame": 10, "key": "Enter"}])"));
+    ASSERT_EQ(asked.exitCode, 0) << asked.err;
+    EXPECT_EQ(asked.finalScreens(), (std::vector<std::string>{"play", "pause"}));
+    EXPECT_EQ(asked.values("exit", "code"), (std::vector<std::string>{"0"}));
+    // Keep playing is the first answer and Escape too; the second answer quits.
+    const GameRun quit = play(level + script(R"([{"frame": 5, "key": "Escape"}, {"frame": 8, "key": "Up"},
+        {"frame": 10, "key": "Enter"}, {"frame": 12, "key": "Down"}, {"frame": 14, "key": "Enter"}])"));
+    ASSERT_EQ(quit.exitCode, 0) << quit.err;
+    EXPECT_LT(quit.trace.back().value("frame", 0), 20);
+    const GameRun kept = play(level + script(R"([{"frame": 5, "key": "Escape"}, {"frame": 8, "key": "Up"},
+        {"frame": 10, "key": "Enter"}, {"frame": 12, "key": "Escape"}, {"frame": 14, "key": "Escape"}])"));
+    EXPECT_EQ(kept.finalScreens(), (std::vector<std::string>{"play"}));
+}
+
 } // namespace
 } // namespace abalike::test

@@ -18,6 +18,17 @@ enum class Palette
 /// The name of a palette in settings.json ("standard", "colour_blind_safe").
 const char* paletteName(Palette palette);
 
+/// How much of the RK4 preview is drawn while aiming.
+enum class PreviewMode
+{
+    Full,  ///< the whole path to the first contact, with the contact ring
+    Short, ///< the first half second of dots, as the original game shows them: the aim, not the answer
+    Off,
+};
+
+/// "full", "short" or "off", as in settings.json.
+const char* previewModeName(PreviewMode mode);
+
 /// How the game words its physics. School (ages 14-16, the default) names the ideas without the numerical
 /// machinery: no "RK4", "Box2D", "TOI" or "chord cast" in any text, and the integrator tools (the RK4 walkthrough,
 /// the integrator comparison) are left out. University shows everything at full depth.
@@ -35,10 +46,10 @@ std::optional<Wording> parseWording(std::string_view name);
 /// The player's preferences. Every field has a default, and a settings file may leave any of them out.
 struct Settings
 {
-    double musicVolume = 0.7;   ///< 0 to 1
-    double effectsVolume = 1.0; ///< 0 to 1
-    bool showPreview = true;    ///< draw the RK4 preview dots while aiming
-    bool showActualPath = true; ///< trace the path the bird really flew
+    double musicVolume = 0.7;                ///< 0 to 1
+    double effectsVolume = 1.0;              ///< 0 to 1
+    PreviewMode preview = PreviewMode::Full; ///< the RK4 preview while aiming ("preview"; older files' show_preview)
+    bool showActualPath = true;              ///< trace the path the bird really flew
     bool fullscreen = false;
     unsigned windowWidth = 1280; ///< 320 to 7680 pixels
     unsigned windowHeight = 720; ///< 240 to 4320 pixels

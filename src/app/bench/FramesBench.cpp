@@ -95,7 +95,7 @@ SceneFrames playScene(const std::string& name, const std::string& path, const Le
     // scripted run reads its data folder and never writes it).
     Settings settings;
     settings.teachingOverlay = true;
-    settings.showPreview = true;
+    settings.preview = PreviewMode::Full;
     settings.showActualPath = true;
     const std::filesystem::path dataDir =
         std::filesystem::temp_directory_path() / ("abalike-bench-frames-" + std::to_string(getpid()));

@@ -107,15 +107,17 @@ void OverlayRenderer::addAbility(const Camera& camera, const AbilityUse& ability
     }
 }
 
-void OverlayRenderer::drawPreview(sf::RenderTarget& target, const Camera& camera, const PredictedFlight& preview)
+void OverlayRenderer::drawPreview(sf::RenderTarget& target, const Camera& camera, const PredictedFlight& preview,
+                                  std::size_t maxDots)
 {
     m_mesh.clear();
+    const std::size_t count = maxDots == 0 ? preview.path.size() : std::min(maxDots, preview.path.size());
     std::vector<sf::Vector2f> points;
-    points.reserve(preview.path.size());
-    for (const PathPoint& point : preview.path)
-        points.emplace_back(static_cast<float>(point.s[0]), static_cast<float>(point.s[1]));
+    points.reserve(count);
+    for (std::size_t i = 0; i < count; ++i)
+        points.emplace_back(static_cast<float>(preview.path[i].s[0]), static_cast<float>(preview.path[i].s[1]));
     addDots(camera, points, kDotRadiusPx, 1.0f);
-    if (preview.contact)
+    if (preview.contact && count == preview.path.size())
         addPredictedContact(camera, *preview.contact, 1.0f);
     m_mesh.draw(target);
 }

@@ -20,8 +20,10 @@ public:
     /// font may be null: then the deviation label is left out.
     explicit OverlayRenderer(const sf::Font* font) : m_font(font) {}
 
-    /// The preview of the current aim: a dot per step and a ring at the predicted contact.
-    void drawPreview(sf::RenderTarget& target, const Camera& camera, const PredictedFlight& preview);
+    /// The preview of the current aim: a dot per step and a ring at the predicted contact; with maxDots, only the
+    /// first dots and no ring.
+    void drawPreview(sf::RenderTarget& target, const Camera& camera, const PredictedFlight& preview,
+                     std::size_t maxDots = 0);
     /// The paths of a fired shot, at the given opacity (older shots fade); drawn behind blocks and birds.
     void drawShotPaths(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot, float opacity);
     /// The contact markers and the deviation label of a fired shot; drawn over everything.

@@ -14,14 +14,26 @@ namespace abalike::app
 
 PauseScreen::PauseScreen(App& app, PlayScreen& play) : m_app(app), m_play(play)
 {
-    m_menu.setItems({
-        {"resume", "Resume", true},
-        {"restart", "Restart level", true},
-        {"settings", "Settings", true},
-        {"help", "Controls", true},
-        {"levels", "Level select", !m_app.campaign().levels.empty()},
-        {"quit", "Quit game", true},
-    });
+    showMenu(false);
+}
+
+void PauseScreen::showMenu(bool confirmQuit)
+{
+    m_confirmingQuit = confirmQuit;
+    if (confirmQuit)
+        m_menu.setItems({
+            {"keep", "Keep playing", true},
+            {"quit-now", "Quit (this try of the level is lost)", true},
+        });
+    else
+        m_menu.setItems({
+            {"resume", "Resume", true},
+            {"restart", "Restart level", true},
+            {"settings", "Settings", true},
+            {"help", "Controls", true},
+            {"levels", "Level select", !m_app.campaign().levels.empty()},
+            {"quit", "Quit game", true},
+        });
 }
 
 void PauseScreen::handleEvent(const sf::Event& event)
@@ -29,7 +41,13 @@ void PauseScreen::handleEvent(const sf::Event& event)
     if (event.type == sf::Event::KeyPressed &&
         (event.key.code == sf::Keyboard::Escape || event.key.code == sf::Keyboard::P))
     {
-        activate("resume");
+        activate(m_confirmingQuit ? "keep" : "resume");
+        return;
+    }
+    if (m_confirmingQuit)
+    {
+        if (const std::optional<std::string> id = m_menu.handleEvent(event))
+            activate(*id);
         return;
     }
     if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::R)
@@ -57,6 +75,10 @@ void PauseScreen::activate(const std::string& id)
     else if (id == "levels")
         openLevelSelect(m_app);
     else if (id == "quit")
+        showMenu(true); // a level is running: ask first
+    else if (id == "keep")
+        showMenu(false);
+    else if (id == "quit-now")
         m_app.quit(0);
 }
 
@@ -75,8 +97,8 @@ void PauseScreen::draw(sf::RenderTarget& target)
     drawCard(target, card, scale, palette::kButtonOutline);
     float y = card.top + 20.0f * scale;
     if (m_app.font() != nullptr)
-        drawLabel(target, *m_app.font(), utf8("Paused"), {card.left + 0.5f * width, y}, titleSize, palette::kText,
-                  Align::Centre);
+        drawLabel(target, *m_app.font(), utf8(m_confirmingQuit ? "Quit the game?" : "Paused"),
+                  {card.left + 0.5f * width, y}, titleSize, palette::kText, Align::Centre);
     y += titleHeight + 12.0f * scale;
     m_menu.draw(target, m_app.font(), card.left + 0.5f * width, y, width - 60.0f * scale, itemSize, scale);
 }

@@ -25,10 +25,13 @@ public:
 
 private:
     void activate(const std::string& id);
+    /// The pause menu, or the question whether to quit the game from a running level.
+    void showMenu(bool confirmQuit);
 
     App& m_app;
     PlayScreen& m_play;
     MenuList m_menu;
+    bool m_confirmingQuit = false;
 };
 
 } // namespace abalike::app

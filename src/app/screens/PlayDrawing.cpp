@@ -75,8 +75,10 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
     if (lastShot != nullptr)
         overlay.drawShotMarkers(target, camera, *lastShot, opacity, structureScreenBoxes(session, camera),
                                 static_cast<float>(view.app().settings().textScale));
-    if (const PredictedFlight* preview = view.preview())
-        overlay.drawPreview(target, camera, *preview);
+    // The preview setting: the whole path, its first half second (30 steps of 1/60 s), or none.
+    const PreviewMode previewMode = view.app().settings().preview;
+    if (const PredictedFlight* preview = view.preview(); preview != nullptr && previewMode != PreviewMode::Off)
+        overlay.drawPreview(target, camera, *preview, previewMode == PreviewMode::Short ? 30 : 0);
     for (const auto& layer : layers)
         layer->drawWorld(target, view);
 

@@ -76,6 +76,8 @@ const char* labelOf(const std::string& id)
         return "Open every level";
     if (id == "wording")
         return "Wording";
+    if (id == "preview")
+        return "Trajectory preview";
     return "Back";
 }
 } // namespace
@@ -119,6 +121,8 @@ std::string SettingsScreen::valueText(const std::string& id) const
         return onOff(s.openAllLevels);
     if (id == "wording")
         return s.wording == Wording::University ? "university (full depth)" : "school (ages 14\u201316)";
+    if (id == "preview")
+        return s.preview == PreviewMode::Full ? "full path" : s.preview == PreviewMode::Short ? "first dots" : "off";
     return "";
 }
 
@@ -174,6 +178,12 @@ void SettingsScreen::change(const std::string& id, int direction)
         s.openAllLevels = !s.openAllLevels;
     else if (id == "wording")
         s.wording = s.wording == Wording::School ? Wording::University : Wording::School;
+    else if (id == "preview")
+    {
+        // full -> first dots -> off, and back the other way.
+        const int mode = (static_cast<int>(s.preview) + (direction < 0 ? 2 : 1)) % 3;
+        s.preview = static_cast<PreviewMode>(mode);
+    }
     else
         return;
     m_app.updateSettings(s);

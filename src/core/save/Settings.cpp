@@ -22,6 +22,11 @@ constexpr double kMaxTextScale = 2.0;
 
 } // namespace
 
+const char* previewModeName(PreviewMode mode)
+{
+    return mode == PreviewMode::Short ? "short" : mode == PreviewMode::Off ? "off" : "full";
+}
+
 const char* wordingName(Wording wording)
 {
     return wording == Wording::University ? "university" : "school";
@@ -50,8 +55,21 @@ Settings parseSettings(std::string_view text)
         settings.musicVolume = readNumber(*it, "/music_volume", 0.0, 1.0);
     if (const auto it = root.find("effects_volume"); it != root.end())
         settings.effectsVolume = readNumber(*it, "/effects_volume", 0.0, 1.0);
+    // "show_preview" (true or false) is what earlier versions wrote; "preview" names the three choices.
     if (const auto it = root.find("show_preview"); it != root.end())
-        settings.showPreview = readBool(*it, "/show_preview");
+        settings.preview = readBool(*it, "/show_preview") ? PreviewMode::Full : PreviewMode::Off;
+    if (const auto it = root.find("preview"); it != root.end())
+    {
+        const std::string& name = readString(*it, "/preview");
+        if (name == "full")
+            settings.preview = PreviewMode::Full;
+        else if (name == "short")
+            settings.preview = PreviewMode::Short;
+        else if (name == "off")
+            settings.preview = PreviewMode::Off;
+        else
+            throw SaveFormatError("/preview: expected \"full\", \"short\" or \"off\"");
+    }
     if (const auto it = root.find("show_actual_path"); it != root.end())
         settings.showActualPath = readBool(*it, "/show_actual_path");
     if (const auto it = root.find("fullscreen"); it != root.end())
@@ -106,7 +124,7 @@ std::string settingsToJson(const Settings& settings)
     root["format"] = kSettingsFormat;
     root["music_volume"] = volume(settings.musicVolume);
     root["effects_volume"] = volume(settings.effectsVolume);
-    root["show_preview"] = settings.showPreview;
+    root["preview"] = previewModeName(settings.preview);
     root["show_actual_path"] = settings.showActualPath;
     root["fullscreen"] = settings.fullscreen;
     root["window"] = {std::clamp<unsigned>(settings.windowWidth, kMinWidth, kMaxWidth),
