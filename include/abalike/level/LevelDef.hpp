@@ -122,6 +122,8 @@ struct CustomBirdDef
 /// The name a level's birds list uses for its custom bird.
 inline constexpr const char* kCustomBirdName = "custom";
 
+enum class WorldTheme; // WorldTheme.hpp
+
 /// A level, as designers write it in JSON (levels/*.json).
 struct LevelDef
 {
@@ -145,7 +147,9 @@ struct LevelDef
     bool sandbox = false;
     std::vector<MaterialOverrideDef> materials; ///< this level's material values, at most one per material
     std::optional<CustomBirdDef> customBird;    ///< the bird the birds list calls "custom"
-    std::string sourcePath;                     ///< file it was loaded from, for messages
+    /// The scenery's world ("theme"); none: the world of the level's gravity (levelTheme).
+    std::optional<WorldTheme> theme;
+    std::string sourcePath; ///< file it was loaded from, for messages
 
     bool operator==(const LevelDef&) const = default;
 };

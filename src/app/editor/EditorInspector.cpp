@@ -6,6 +6,7 @@
 #include <abalike/flight/GravityPresets.hpp>
 #include <abalike/flight/StandardAtmosphere.hpp>
 #include <abalike/level/LevelCatalog.hpp>
+#include <abalike/level/WorldTheme.hpp>
 #include <abalike/world/BirdBody.hpp>
 #include <box2d/b2_body.h>
 #include <cstdio>
@@ -285,6 +286,19 @@ void EditorScreen::environmentTab()
         ImGui::SameLine();
     }
     ImGui::NewLine();
+    // The scenery's world: automatic follows the gravity (levelTheme), or one named in the file.
+    {
+        const char* names[] = {"automatic (from g)", "Earth", "Moon", "Mars", "Titan", "Jupiter"};
+        int current = next.theme ? static_cast<int>(*next.theme) + 1 : 0;
+        if (ImGui::Combo("Scenery", &current, names, IM_ARRAYSIZE(names)))
+        {
+            if (current == 0)
+                next.theme.reset();
+            else
+                next.theme = static_cast<WorldTheme>(current - 1);
+            setProperties(next, "Scenery", "");
+        }
+    }
 
     heading("Air");
     bool air = env.airDensity > 0.0;

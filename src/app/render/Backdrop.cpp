@@ -9,27 +9,50 @@
 namespace abalike::app
 {
 
-void Backdrop::paintSky(Mesh& mesh, const Camera& camera, float groundY)
+void Backdrop::paintSky(Mesh& mesh, const Camera& camera, float groundY, const Scenery& scenery)
 {
     const sf::FloatRect view = camera.visibleWorld();
     const float top = view.top + view.height;
-    mesh.addGradientRect({view.left, groundY}, {view.left + view.width, top}, palette::kSkyBottom, palette::kSkyTop);
+    mesh.addGradientRect({view.left, groundY}, {view.left + view.width, top}, scenery.skyBottom, scenery.skyTop);
 
-    // Clouds at fixed places across the view, each a cluster of puffs.
     DetailRandom random(7);
     const float skyHeight = top - groundY;
+    if (scenery.stars)
+    {
+        // An airless sky: fixed stars across the view, a pixel or two each.
+        const float pixel = camera.metresPerPixel();
+        for (int i = 0; i < 90; ++i)
+        {
+            const sf::Vector2f at(random.range(view.left, view.left + view.width),
+                                  groundY + skyHeight * random.range(0.15f, 1.0f));
+            mesh.addCircle(at, pixel * random.range(0.7f, 1.6f), sf::Color(235, 235, 245, 210), 6);
+        }
+    }
+    if (scenery.bands)
+    {
+        // Cloud belts: darker and lighter stripes across the sky, fixed in the sky like the gradient.
+        const sf::Color belts[] = {sf::Color(150, 96, 64, 90), sf::Color(250, 236, 210, 80),
+                                   sf::Color(170, 110, 72, 80), sf::Color(140, 90, 60, 70)};
+        const float heights[] = {0.82f, 0.68f, 0.55f, 0.36f};
+        for (int i = 0; i < 4; ++i)
+        {
+            const float y = groundY + skyHeight * heights[i];
+            mesh.addGradientRect({view.left, y}, {view.left + view.width, y + skyHeight * 0.06f}, belts[i], belts[i]);
+        }
+    }
+    // Clouds at fixed places across the view, each a cluster of puffs (none without air).
     constexpr int kClouds = 5;
-    for (int i = 0; i < kClouds; ++i)
+    for (int i = 0; i < kClouds && scenery.cloud.a > 0; ++i)
     {
         const float x = view.left + view.width * (static_cast<float>(i) + random.range(0.2f, 0.8f)) / kClouds;
         const float y = groundY + skyHeight * random.range(0.55f, 0.85f);
         const float size = skyHeight * random.range(0.035f, 0.055f);
-        mesh.addEllipse({x, y}, 2.2f * size, 0.9f * size, palette::kCloud, 24);
-        mesh.addCircle({x - 0.8f * size, y + 0.4f * size}, 0.9f * size, palette::kCloud, 20);
-        mesh.addCircle({x + 0.5f * size, y + 0.6f * size}, 1.1f * size, palette::kCloud, 20);
+        mesh.addEllipse({x, y}, 2.2f * size, 0.9f * size, scenery.cloud, 24);
+        mesh.addCircle({x - 0.8f * size, y + 0.4f * size}, 0.9f * size, scenery.cloud, 20);
+        mesh.addCircle({x + 0.5f * size, y + 0.6f * size}, 1.1f * size, scenery.cloud, 20);
     }
-    paintHills(mesh, view, groundY, 0.25f, 26.0f, sf::Color(176, 212, 206), 3);
-    paintHills(mesh, view, groundY, 0.5f, 17.0f, sf::Color(150, 200, 150), 5);
+    paintHills(mesh, view, groundY, 0.25f, 26.0f, scenery.hillFar, 3);
+    paintHills(mesh, view, groundY, 0.5f, 17.0f, scenery.hillNear, 5);
 }
 
 void Backdrop::paintHills(Mesh& mesh, const sf::FloatRect& view, float groundY, float depth, float periodM,
@@ -54,7 +77,7 @@ void Backdrop::paintHills(Mesh& mesh, const sf::FloatRect& view, float groundY, 
     }
 }
 
-void Backdrop::paintGround(Mesh& mesh, const Camera& camera, float groundY)
+void Backdrop::paintGround(Mesh& mesh, const Camera& camera, float groundY, const Scenery& scenery)
 {
     const sf::FloatRect view = camera.visibleWorld();
     const float left = view.left;
@@ -63,21 +86,23 @@ void Backdrop::paintGround(Mesh& mesh, const Camera& camera, float groundY)
     const float pixelM = camera.metresPerPixel();
     const float grass = std::max(0.3f, 7.0f * pixelM);
 
-    mesh.addGradientRect({left, bottom}, {right, groundY}, palette::kEarthDark, palette::kEarth);
+    mesh.addGradientRect({left, bottom}, {right, groundY}, scenery.groundDark, scenery.ground);
     // Pebbles in the earth.
     DetailRandom random(11);
     const int pebbles = std::clamp(static_cast<int>(view.width * 1.5f), 10, 200);
     for (int i = 0; i < pebbles; ++i)
     {
         const sf::Vector2f p(random.range(left, right), random.range(bottom, groundY - grass));
-        mesh.addEllipse(p, std::max(0.08f, 2.0f * pixelM), std::max(0.05f, 1.4f * pixelM), palette::kEarthDark, 8);
+        mesh.addEllipse(p, std::max(0.08f, 2.0f * pixelM), std::max(0.05f, 1.4f * pixelM), scenery.groundDark, 8);
     }
-    mesh.addGradientRect({left, groundY - grass}, {right, groundY}, palette::kGrassDark, palette::kGrass);
+    mesh.addGradientRect({left, groundY - grass}, {right, groundY}, scenery.surfaceDark, scenery.surface);
+    if (!scenery.blades)
+        return;
     // Blades along the top edge.
     const float blade = std::max(0.12f, 4.0f * pixelM);
     for (float x = left; x < right; x += blade * 0.9f)
         mesh.addTriangle({x, groundY - 0.01f}, {x + 0.5f * blade, groundY + 0.6f * blade}, {x + blade, groundY - 0.01f},
-                         palette::kGrass);
+                         scenery.surface);
 }
 
 } // namespace abalike::app

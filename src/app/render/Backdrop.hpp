@@ -1,5 +1,7 @@
 #pragma once
 
+#include "render/Scenery.hpp"
+
 #include "render/Camera.hpp"
 #include "render/Mesh.hpp"
 
@@ -13,8 +15,8 @@ namespace abalike::app
 class Backdrop
 {
 public:
-    static void paintSky(Mesh& mesh, const Camera& camera, float groundY);
-    static void paintGround(Mesh& mesh, const Camera& camera, float groundY);
+    static void paintSky(Mesh& mesh, const Camera& camera, float groundY, const Scenery& scenery);
+    static void paintGround(Mesh& mesh, const Camera& camera, float groundY, const Scenery& scenery);
 
 private:
     /// A row of rounded hills standing on the ground line that scrolls at `depth` (0: fixed to the window, 1: with

@@ -62,8 +62,10 @@ void WorldRenderer::drawBackground(sf::RenderTarget& target, const Camera& camer
 {
     const auto groundY = static_cast<float>(session.level().groundY);
     m_mesh.clear();
-    Backdrop::paintSky(m_mesh, camera, groundY);
-    Backdrop::paintGround(m_mesh, camera, groundY);
+    const Scenery& scenery = sceneryOf(levelTheme(session.level()));
+    m_surface = scenery.surface; // the terrain's top edges wear the world's surface too
+    Backdrop::paintSky(m_mesh, camera, groundY, scenery);
+    Backdrop::paintGround(m_mesh, camera, groundY, scenery);
     for (const Entity& entity : session.world().entities())
     {
         if (entity.alive && entity.body != nullptr && entity.kind == EntityKind::Terrain)
@@ -187,7 +189,7 @@ void WorldRenderer::addTerrainPolygon(const Entity& entity, const TerrainDef& de
         if (normal.y > 0.5f) // a top edge: grass, drawn just inside the surface
         {
             const sf::Vector2f in = -normal * (0.5f * grass);
-            m_mesh.addLine(a + in, b + in, grass, palette::kGrass);
+            m_mesh.addLine(a + in, b + in, grass, m_surface);
         }
     }
 }

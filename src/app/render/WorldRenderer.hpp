@@ -38,6 +38,7 @@ private:
     std::vector<bool> m_dazed; ///< by entity index
     const GameWorld* m_dazedWorld = nullptr;
     double m_dazedTimeS = 0.0;
+    sf::Color m_surface = sf::Color(96, 178, 64); ///< the world's surface colour (grass on Earth), for terrain tops
 };
 
 } // namespace abalike::app

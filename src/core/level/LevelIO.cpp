@@ -9,6 +9,7 @@
 #include <abalike/level/LevelWriter.hpp>
 #include <abalike/level/PolygonPartition.hpp>
 #include <abalike/level/SafeText.hpp>
+#include <abalike/level/WorldTheme.hpp>
 #include <abalike/teach/TextValues.hpp>
 #include <abalike/world/Catalog.hpp>
 
@@ -412,6 +413,17 @@ void readHeader(LevelReader& r, const json& root, LevelDef& level)
     if (root.contains("time_limit_s"))
         level.timeLimitS =
             r.number(root, "", "time_limit_s", 0.0, true, NumberRange{kMinTimeLimitS, kMaxTimeLimitS, "s"});
+    if (const auto theme = root.find("theme"); theme != root.end())
+    {
+        const std::optional<WorldTheme> named =
+            theme->is_string() ? parseWorldTheme(theme->get<std::string>()) : std::nullopt;
+        if (named)
+            level.theme = named;
+        else
+            r.error("/theme", "expected the world the scenery shows: \"earth\", \"moon\", \"mars\", \"titan\" or "
+                              "\"jupiter\", got " +
+                                  theme->dump());
+    }
     if (const auto ground = root.find("ground"); ground != root.end() && r.object(*ground, "/ground", {"y"}))
         level.groundY = r.number(*ground, "/ground", "y", 0.0, false, kCoordinate);
 }
@@ -454,9 +466,10 @@ LevelDef parseLevelText(std::string_view text, const std::string& fileName, cons
     r.safeText(root);
     LevelDef level;
     level.sourcePath = fileName;
-    if (!r.object(root, "", {"$schema", "format",      "id",        "title", "episode",      "concept",       "hints",
-                             "sandbox", "ground",      "slingshot", "birds", "custom_bird",  "blocks",        "pigs",
-                             "terrain", "environment", "materials", "stars", "time_limit_s", "reference_shot"}))
+    if (!r.object(root, "",
+                  {"$schema", "format",      "id",        "title", "episode",      "concept",        "hints",
+                   "sandbox", "ground",      "slingshot", "birds", "custom_bird",  "blocks",         "pigs",
+                   "terrain", "environment", "materials", "stars", "time_limit_s", "reference_shot", "theme"}))
         throw LevelLoadError(r.take());
 
     readHeader(r, root, level);

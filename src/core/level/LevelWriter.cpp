@@ -1,4 +1,5 @@
 #include <abalike/level/LevelWriter.hpp>
+#include <abalike/level/WorldTheme.hpp>
 #include <abalike/save/AtomicWrite.hpp>
 
 #include <charconv>
@@ -275,6 +276,8 @@ std::string writeLevelJson(const LevelDef& level, const std::string& schemaRefer
     }
     if (json environment = environmentJson(level.environment); !environment.empty())
         root["environment"] = std::move(environment);
+    if (level.theme)
+        root["theme"] = worldThemeName(*level.theme);
     if (!level.materials.empty())
         root["materials"] = materialsJson(level.materials);
     if (level.starScores != defaults.starScores)
