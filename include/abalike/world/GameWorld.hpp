@@ -236,6 +236,9 @@ public:
     std::vector<BlastEvent> takeBlastEvents();
 
     const LevelDef& level() const { return m_level; }
+    /// The height of the first static surface (terrain or the ground) straight below (x, fromY): what the slingshot
+    /// stands on and its waiting birds queue on. The ground's height when nothing else is below.
+    double surfaceBelow(double x, double fromY) const;
     /// The catalog as this level sees it (its material overrides and custom bird applied, see levelCatalog).
     const Catalog& catalog() const { return m_catalog; }
     b2World& box2d() { return *m_world; }

@@ -110,6 +110,30 @@ void Particles::burstBlast(sf::Vector2f centreM, float radiusM, int count)
         flash.colour = sf::Color(255, 236, 150, 230);
         m_pieces.push_back(flash);
     }
+    if (m_pieces.size() < kMaxPieces)
+    {
+        Piece ring;
+        ring.shape = Shape::Ring;
+        ring.positionM = centreM;
+        ring.sizeM = 1.3f * radiusM;
+        ring.lifeS = 0.45f;
+        ring.colour = sf::Color(255, 250, 235, 200);
+        m_pieces.push_back(ring);
+    }
+    // Smoke: dark puffs that linger and rise once the fire is gone.
+    for (int i = 0; i < count / 2 && m_pieces.size() < kMaxPieces; ++i)
+    {
+        Piece smoke;
+        smoke.shape = Shape::Smoke;
+        const float angle = uniform(0.0f, 2.0f * std::numbers::pi_v<float>);
+        const float distance = radiusM * uniform(0.0f, 0.5f);
+        smoke.positionM = centreM + distance * sf::Vector2f(std::cos(angle), std::sin(angle));
+        smoke.velocityMps = {uniform(-0.3f, 0.3f), uniform(0.6f, 1.2f)};
+        smoke.sizeM = radiusM * uniform(0.18f, 0.3f);
+        smoke.lifeS = uniform(1.2f, 2.0f);
+        smoke.colour = sf::Color(70, 66, 64, 170);
+        m_pieces.push_back(smoke);
+    }
     for (int i = 0; i < count && m_pieces.size() < kMaxPieces; ++i)
     {
         Piece piece;
@@ -131,7 +155,8 @@ void Particles::update(float dtS)
     {
         piece.ageS += dtS;
         // Puffs and flashes float; debris falls.
-        if (piece.shape != Shape::Puff && piece.shape != Shape::Flash)
+        if (piece.shape != Shape::Puff && piece.shape != Shape::Flash && piece.shape != Shape::Ring &&
+            piece.shape != Shape::Smoke)
             piece.velocityMps.y -= kGravityMps2 * dtS;
         piece.velocityMps *= std::max(0.0f, 1.0f - kDragPerS * dtS);
         piece.positionM += piece.velocityMps * dtS;
@@ -183,6 +208,12 @@ void Particles::paint(Mesh& mesh) const
             break;
         case Shape::Flash:
             mesh.addCircle({0.0f, 0.0f}, s * (0.3f + 0.7f * std::sqrt(piece.ageS / piece.lifeS)), colour, 32);
+            break;
+        case Shape::Ring:
+            mesh.addRing({0.0f, 0.0f}, s * (0.2f + 0.8f * std::sqrt(piece.ageS / piece.lifeS)), 0.06f * s, colour, 48);
+            break;
+        case Shape::Smoke:
+            mesh.addCircle({0.0f, 0.0f}, s * (0.7f + 0.9f * piece.ageS / piece.lifeS), colour, 14);
             break;
         }
     }

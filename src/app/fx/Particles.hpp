@@ -24,6 +24,8 @@ public:
         Chunk,    ///< stone: a rough quad
         Puff,     ///< a pig popping: a growing, fading cloud
         Flash,    ///< a blast: a bright disc that grows to the blast radius and fades fast
+        Ring,     ///< a blast's shock wave: a thin ring that runs out past the blast radius
+        Smoke,    ///< a blast's smoke: a dark cloud that rises and spreads slowly
     };
 
     /// Starts over with no pieces and a fixed seed.
@@ -34,7 +36,9 @@ public:
     void burstPig(sf::Vector2f centreM, float radiusM, int count);
     /// A grey puff where a bird leaves the world after its shot.
     void burstBird(sf::Vector2f centreM, float radiusM, int count);
-    /// A blast of radius radiusM: a flash and orange smoke (TNT, the black bird).
+    /// A blast of radius radiusM (TNT, the black bird): a flash, a shock ring running out to 1.3 radii, orange fire
+    /// and dark smoke that rises for a second or two; count sets how many fire and smoke puffs (fewer with reduced
+    /// motion).
     void burstBlast(sf::Vector2f centreM, float radiusM, int count);
     /// Moves every piece on by dtS (ballistic, with a little air drag) and retires the expired ones.
     void update(float dtS);

@@ -85,21 +85,22 @@ void WorldRenderer::drawForeground(sf::RenderTarget& target, const Camera& camer
 {
     const LevelDef& level = session.level();
     const float pixelM = camera.metresPerPixel();
-    const auto groundY = static_cast<float>(level.groundY);
     const std::vector<Entity>& entities = session.world().entities();
     m_mesh.clear();
 
     // The slingshot and the bird it holds.
     const std::array<double, 2> pouch = session.launchPoint();
     SlingshotPose pose;
-    pose.base = {static_cast<float>(level.slingshot.x), groundY};
+    // The slingshot stands on whatever is under it: a cliff or a hill top, else the ground.
+    const auto standY = static_cast<float>(session.world().surfaceBelow(level.slingshot.x, pouch[1]));
+    pose.base = {static_cast<float>(level.slingshot.x), standY};
     pose.pouch = {static_cast<float>(pouch[0]), static_cast<float>(pouch[1])};
     const BirdType* loaded = session.phase() == Phase::Aiming ? session.currentBird() : nullptr;
     if (loaded != nullptr)
     {
         pose.birdRadius = static_cast<float>(loaded->radiusM);
         sf::Vector2f seat = pose.pouch + pullOffset;
-        seat.y = std::max(seat.y, groundY + pose.birdRadius);
+        seat.y = std::max(seat.y, standY + pose.birdRadius);
         pose.loadedBird = seat;
     }
     addWaitingBirds(session, pixelM);
@@ -263,8 +264,8 @@ void WorldRenderer::addBird(const Entity& entity, std::size_t index, float pixel
 
 void WorldRenderer::addWaitingBirds(const GameSession& session, float pixelM)
 {
-    // Birds not yet launched line up on the ground left of the slingshot; while aiming, the first of them is
-    // the one in the pouch.
+    // Birds not yet launched line up left of the slingshot on whatever is under each (the cliff top it stands on,
+    // else the ground); while aiming, the first of them is the one in the pouch.
     const LevelDef& level = session.level();
     const int first = session.birdsUsed() + (session.phase() == Phase::Aiming ? 1 : 0);
     float x = static_cast<float>(level.slingshot.x) - 1.1f;
@@ -273,7 +274,8 @@ void WorldRenderer::addWaitingBirds(const GameSession& session, float pixelM)
         const std::string& type = level.birds[static_cast<std::size_t>(i)];
         const float radius = birdRadius(session.catalog(), type);
         x -= radius;
-        m_mesh.setLocalTransform(placeAt({x, static_cast<float>(level.groundY) + radius}));
+        const double standY = session.world().surfaceBelow(x, session.launchPoint()[1]);
+        m_mesh.setLocalTransform(placeAt({x, static_cast<float>(standY) + radius}));
         CharacterPainter::paintBird(m_mesh, type, radius, pixelM);
         x -= radius + kWaitingGapM + 0.3f * radius; // room for the tail feathers
     }

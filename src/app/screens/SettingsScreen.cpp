@@ -52,8 +52,6 @@ std::size_t stepIndex(std::size_t index, int direction, std::size_t count)
 
 const char* labelOf(const std::string& id)
 {
-    if (id == "music")
-        return "Music volume";
     if (id == "effects")
         return "Effects volume";
     if (id == "mute")
@@ -84,17 +82,16 @@ const char* labelOf(const std::string& id)
 
 const std::vector<std::string>& SettingsScreen::rowIds()
 {
-    static const std::vector<std::string> ids{"music", "effects", "mute",     "size",   "fullscreen",
-                                              "text",  "palette", "contrast", "motion", "teaching",
-                                              "open",  "wording", "back"};
+    // No music row: the game has no music (settings.json keeps music_volume for the files that have it).
+    static const std::vector<std::string> ids{"effects", "mute",     "size",   "fullscreen", "text",
+                                              "palette", "contrast", "motion", "teaching",   "preview",
+                                              "open",    "wording",  "back"};
     return ids;
 }
 
 std::string SettingsScreen::valueText(const std::string& id) const
 {
     const Settings& s = m_app.settings();
-    if (id == "music")
-        return percent(s.musicVolume);
     if (id == "effects")
         return percent(s.effectsVolume);
     if (id == "mute")
@@ -133,9 +130,7 @@ void SettingsScreen::change(const std::string& id, int direction)
     {
         return std::clamp(std::round(v * 10.0) + direction, 0.0, 10.0) / 10.0;
     };
-    if (id == "music")
-        s.musicVolume = volume(s.musicVolume);
-    else if (id == "effects")
+    if (id == "effects")
         s.effectsVolume = volume(s.effectsVolume);
     else if (id == "mute")
         s.mute = !s.mute;
