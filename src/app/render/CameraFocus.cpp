@@ -13,6 +13,8 @@ namespace
 {
 constexpr float kStructureReachM = 8.0f; ///< targets this far beyond the aimed-at stretch still count
 constexpr float kLookAheadS = 2.0f;      ///< without a predicted contact, the stretch the bird covers in this time
+constexpr float kMovingMps = 0.3f;       ///< faster than this a block or pig is part of the action
+constexpr float kSpinningRadps = 0.5f;
 
 WorldBox entityBox(const Entity& entity)
 {
@@ -33,9 +35,44 @@ CameraFocus cameraFocusOf(const GameSession& session)
         return focus;
 
     const GameWorld& world = session.world();
+    const ShotRecord& latest = session.shots().back();
+    if (latest.actualContact || latest.contactTimeS)
+    {
+        // After the first contact: the action, not the bird that caused it (a rolling bird is no story).
+        focus.afterImpact = true;
+        std::vector<sf::Vector2f> moving;
+        for (const Entity& entity : world.entities())
+        {
+            if (!entity.alive || entity.body == nullptr ||
+                (entity.kind != EntityKind::Block && entity.kind != EntityKind::Pig))
+                continue;
+            const b2Vec2 v = entity.body->GetLinearVelocity();
+            if (std::hypot(v.x, v.y) > kMovingMps || std::abs(entity.body->GetAngularVelocity()) > kSpinningRadps)
+            {
+                focus.action.push_back(entityBox(entity));
+                moving.push_back({entity.body->GetPosition().x, entity.body->GetPosition().y});
+            }
+        }
+        for (const Entity& entity : world.entities())
+        {
+            if (!entity.alive || entity.body == nullptr || entity.kind != EntityKind::Pig)
+                continue;
+            const b2Vec2 p = entity.body->GetPosition();
+            const bool near =
+                std::any_of(moving.begin(), moving.end(),
+                            [&](sf::Vector2f m) { return std::hypot(m.x - p.x, m.y - p.y) <= kActionReachM; });
+            if (near)
+            {
+                focus.actionPigs.push_back(entityBox(entity));
+                focus.action.push_back(focus.actionPigs.back());
+            }
+        }
+        return focus;
+    }
     const Entity* bird = world.bird();
     if (bird != nullptr && bird->body != nullptr)
     {
+        focus.birdDiameterM = static_cast<float>(bird->widthM);
         focus.birds.push_back(entityBox(*bird));
         const b2Vec2 v = bird->body->GetLinearVelocity();
         focus.birdVelocityMps = {v.x, v.y};

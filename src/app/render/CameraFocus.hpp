@@ -21,8 +21,20 @@ struct CameraFocus
     std::vector<WorldBox> birds;       ///< every bird, split bird and egg in the world, launched bird first
     sf::Vector2f birdVelocityMps;      ///< the launched bird's velocity (the camera leads it)
     std::optional<WorldBox> structure; ///< the standing blocks and pigs the shot is flying at
+    float birdDiameterM = 0.0f;        ///< the launched bird's size: in flight it is never drawn under kMinBirdPx
+    /// From the shot's first contact until the next bird is ready the camera frames the action, not the bird: every
+    /// moving block and pig, and every live pig within kActionReachM of one.
+    bool afterImpact = false;
+    std::vector<WorldBox> action;                    ///< the moving bodies and the pigs near them
+    std::vector<WorldBox> actionPigs;                ///< of those, the live pigs: they must stay inside the window
     float topReserved = camera_limits::kTopReserved; ///< the window's top fraction panels cover
 };
+
+/// A pig this near a moving body may be hit by it: the camera keeps it in view after an impact.
+inline constexpr float kActionReachM = 15.0f;
+/// The launched bird is never drawn smaller than this across in flight: the camera follows it rather than keep
+/// everything in view.
+inline constexpr float kMinBirdPx = 12.0f;
 
 /// The focus of a session as it is now: the launched bird, the structure between it and where it was aimed (the
 /// predicted first contact), or, once it has landed, what stands around it.

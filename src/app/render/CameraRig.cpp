@@ -48,7 +48,19 @@ CameraView CameraRig::target(const CameraFocus& focus) const
 {
     if (m_mode == Mode::Manual)
         return m_view;
-    if (m_mode == Mode::Home || (focus.birds.empty() && !focus.structure))
+    if (m_mode == Mode::Home)
+        return fitBox(focus.home, focus.groundY, m_window, focus.topReserved);
+    if (focus.afterImpact)
+    {
+        // Frame the action; when nothing moves any more, the level as designed.
+        if (focus.action.empty())
+            return fitBox(focus.home, focus.groundY, m_window, focus.topReserved);
+        WorldBox action = focus.action.front();
+        for (const WorldBox& box : focus.action)
+            action = action.united(box);
+        return fitBox(action.expanded(kStructureMarginM), focus.groundY, m_window, focus.topReserved);
+    }
+    if (focus.birds.empty() && !focus.structure)
         return fitBox(focus.home, focus.groundY, m_window, focus.topReserved);
 
     std::optional<WorldBox> box = focus.structure;
@@ -65,7 +77,16 @@ CameraView CameraRig::target(const CameraFocus& focus) const
         }
         box = box ? box->united(bird) : bird;
     }
-    return fitBox(*box, focus.groundY, m_window, focus.topReserved);
+    CameraView view = fitBox(*box, focus.groundY, m_window, focus.topReserved);
+    if (focus.birdDiameterM > 0.0f && view.pixelsPerMetre * focus.birdDiameterM < kMinBirdPx && !focus.birds.empty())
+    {
+        // The structure is too far to keep in view with the bird drawn at a visible size: follow the bird.
+        WorldBox lead = focus.birds[0].expanded(kBirdMarginM);
+        lead = lead.united(WorldBox::around(focus.birds[0].centre() + focus.birdVelocityMps * kLeadS, kBirdMarginM));
+        view = fitBox(lead, focus.groundY, m_window, focus.topReserved);
+        view.pixelsPerMetre = std::max(view.pixelsPerMetre, kMinBirdPx / focus.birdDiameterM);
+    }
+    return view;
 }
 
 void CameraRig::update(const CameraFocus& focus, double frameS)
@@ -90,6 +111,9 @@ void CameraRig::update(const CameraFocus& focus, double frameS)
         m_view.pixelsPerMetre = std::exp(logPpm + (std::log(goal.pixelsPerMetre) - logPpm) * k);
     }
     m_snap = false;
+    // Easing out of a wide view must not draw the launched bird as a speck on the way.
+    if (m_mode == Mode::Follow && !focus.afterImpact && focus.birdDiameterM > 0.0f)
+        m_view.pixelsPerMetre = std::max(m_view.pixelsPerMetre, kMinBirdPx / focus.birdDiameterM);
     if (m_mode != Mode::Home)
         keepInView(focus);
     rebuild();
@@ -97,12 +121,14 @@ void CameraRig::update(const CameraFocus& focus, double frameS)
 
 void CameraRig::keepInView(const CameraFocus& focus)
 {
-    if (focus.birds.empty())
+    // In flight the birds must be on screen; after the impact, the pigs the action may reach.
+    const std::vector<WorldBox>& must = focus.afterImpact ? focus.actionPigs : focus.birds;
+    if (must.empty())
         return;
     const float margin = std::max(0.5f, kBirdMarginPx / m_view.pixelsPerMetre);
-    WorldBox needed = focus.birds.front().expanded(margin);
-    for (const WorldBox& bird : focus.birds)
-        needed = needed.united(bird.expanded(margin));
+    WorldBox needed = must.front().expanded(margin);
+    for (const WorldBox& box : must)
+        needed = needed.united(box.expanded(margin));
     const WorldBox visible = visibleBox(m_view, m_window);
     if (visible.contains(needed))
         return;
