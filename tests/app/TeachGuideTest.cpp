@@ -4,7 +4,10 @@
 
 #include <abalike/level/LevelIO.hpp>
 #include <cmath>
+#include <cstdio>
 #include <gtest/gtest.h>
+#include <regex>
+#include <set>
 
 namespace abalike::app
 {
@@ -14,6 +17,54 @@ namespace
 LevelDef sourceLevel(const std::string& relative)
 {
     return loadLevel(std::string(ABALIKE_SOURCE_DIR) + "/" + relative, Catalog::builtin());
+}
+
+TEST(TeachGuides, EveryNumberInALessonsStepsIsRecomputedFromItsLevel)
+{
+    // The lesson guides' texts are built from the lesson level's slingshot, birds, materials and gravity. Every
+    // number in them must be one of those values, recomputed here from first principles and rounded as the guide
+    // rounds them, or the mathematics of a formula or an aim (1, 2, 30, 45, 60, 90).
+    const std::regex number(R"((^|[^A-Za-z0-9_.])(\d+(\.\d+)?))");
+    const auto fixed = [](double value, int decimals)
+    {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.*f", decimals, value);
+        return std::string(text);
+    };
+    int checked = 0;
+    for (const LessonEntry& lesson : lessonList())
+    {
+        SCOPED_TRACE(lesson.id);
+        const LevelDef level = sourceLevel("levels/lessons/" + lesson.file);
+        std::set<std::string> allowed{"1", "2", "30", "45", "60", "90"};
+        const double energy = 0.5 * level.slingshot.maxForceN * level.slingshot.maxPullM;
+        allowed.insert(fixed(energy, 0));
+        for (const char* name : {"red", "black"})
+        {
+            const double m = Catalog::builtin().findBird(name)->massKg;
+            const double v = std::sqrt(2.0 * energy / m);
+            allowed.insert(fixed(m, 0));
+            allowed.insert(fixed(v, 1));
+            allowed.insert(fixed(m * v, 0));
+        }
+        allowed.insert(fixed(100.0 * std::sqrt(4.0 / 8.0), 0)); // sqrt(m_red / m_black) in %
+        for (const char* material : {"ice", "wood", "stone"})
+            allowed.insert(fixed(Catalog::builtin().findMaterial(material)->strengthNs, 0));
+        allowed.insert(fixed(level.environment.gravity, 2));
+        allowed.insert(fixed(9.81 / level.environment.gravity, 1));
+        const std::optional<Guide> guide = guideFor(level, Catalog::builtin());
+        ASSERT_TRUE(guide);
+        std::vector<std::string> texts{guide->closing};
+        for (const GuideStep& step : guide->steps)
+            texts.push_back(step.text);
+        for (const std::string& text : texts)
+            for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it)
+            {
+                ++checked;
+                EXPECT_TRUE(allowed.contains((*it)[2].str())) << (*it)[2].str() << " in \"" << text << "\"";
+            }
+    }
+    EXPECT_GE(checked, 15);
 }
 
 TEST(TeachGuides, EveryLessonHasALevelThatLoadsAndAGuide)
