@@ -92,7 +92,7 @@ void WorldRenderer::drawForeground(sf::RenderTarget& target, const Camera& camer
     const std::array<double, 2> pouch = session.launchPoint();
     SlingshotPose pose;
     // The slingshot stands on whatever is under it: a cliff or a hill top, else the ground.
-    const auto standY = static_cast<float>(session.world().surfaceBelow(level.slingshot.x, pouch[1]));
+    const auto standY = static_cast<float>(standingY(session.world(), level.slingshot.x, pouch[1]));
     pose.base = {static_cast<float>(level.slingshot.x), standY};
     pose.pouch = {static_cast<float>(pouch[0]), static_cast<float>(pouch[1])};
     const BirdType* loaded = session.phase() == Phase::Aiming ? session.currentBird() : nullptr;
@@ -262,6 +262,23 @@ void WorldRenderer::addBird(const Entity& entity, std::size_t index, float pixel
     m_mesh.resetLocalTransform();
 }
 
+double WorldRenderer::standingY(const GameWorld& world, double x, double fromY)
+{
+    const LevelDef& level = world.level();
+    if (level.terrain != m_standTerrain || level.groundY != m_standGroundY)
+    {
+        m_standTerrain = level.terrain;
+        m_standGroundY = level.groundY;
+        m_standCache.clear();
+    }
+    for (const auto& [cachedX, cachedFrom, y] : m_standCache)
+        if (cachedX == x && cachedFrom == fromY)
+            return y;
+    const double y = world.surfaceBelow(x, fromY);
+    m_standCache.push_back({x, fromY, y});
+    return y;
+}
+
 void WorldRenderer::addWaitingBirds(const GameSession& session, float pixelM)
 {
     // Birds not yet launched line up left of the slingshot on whatever is under each (the cliff top it stands on,
@@ -274,7 +291,7 @@ void WorldRenderer::addWaitingBirds(const GameSession& session, float pixelM)
         const std::string& type = level.birds[static_cast<std::size_t>(i)];
         const float radius = birdRadius(session.catalog(), type);
         x -= radius;
-        const double standY = session.world().surfaceBelow(x, session.launchPoint()[1]);
+        const double standY = standingY(session.world(), x, session.launchPoint()[1]);
         m_mesh.setLocalTransform(placeAt({x, static_cast<float>(standY) + radius}));
         CharacterPainter::paintBird(m_mesh, type, radius, pixelM);
         x -= radius + kWaitingGapM + 0.3f * radius; // room for the tail feathers

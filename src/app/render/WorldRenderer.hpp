@@ -1,5 +1,7 @@
 #pragma once
 
+#include <array>
+
 #include "render/Camera.hpp"
 #include "render/Mesh.hpp"
 
@@ -39,6 +41,13 @@ private:
     const GameWorld* m_dazedWorld = nullptr;
     double m_dazedTimeS = 0.0;
     sf::Color m_surface = sf::Color(96, 178, 64); ///< the world's surface colour (grass on Earth), for terrain tops
+
+    /// GameWorld::surfaceBelow, remembered: terrain and ground are static, so the slingshot's and the waiting birds'
+    /// footing is ray cast once per level layout, not every frame.
+    double standingY(const GameWorld& world, double x, double fromY);
+    std::vector<TerrainDef> m_standTerrain;
+    double m_standGroundY = 0.0;
+    std::vector<std::array<double, 3>> m_standCache; ///< (x, fromY, surface y)
 };
 
 } // namespace abalike::app

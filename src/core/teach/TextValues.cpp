@@ -152,8 +152,9 @@ double chartValue(const RangeChart& chart, bool angle, std::string_view name)
     return *value;
 }
 
-/// A value, and whether the name takes an argument at all (checked before any computing).
-double evaluate(const LevelDef& level, const Catalog& catalog, std::string_view name, std::string_view argument,
+/// A value, and whether the name takes an argument at all (checked before any computing). `seen` is the catalog as
+/// the level sees it (levelCatalog), made once per text by the caller.
+double evaluate(const LevelDef& level, const Catalog& seen, std::string_view name, std::string_view argument,
                 bool compute)
 {
     const TextValueName* known = findName(name);
@@ -165,7 +166,6 @@ double evaluate(const LevelDef& level, const Catalog& catalog, std::string_view 
     if (!wantsArgument && !argument.empty())
         fail(braced(name) + " takes no argument, got \":" + std::string(argument) + "\"");
 
-    const Catalog seen = levelCatalog(level, catalog);
     const EnvironmentDef& air = level.environment;
     const std::string_view arg = argument;
     if (std::string_view(known->argument) == "BIRD")
@@ -439,6 +439,7 @@ bool looksLikePlaceholder(std::string_view inside)
 /// Walks the text: literal characters are appended, each placeholder is evaluated (or only checked).
 std::string process(std::string_view text, const LevelDef& level, const Catalog& catalog, bool compute)
 {
+    std::optional<Catalog> seen;
     std::string out;
     std::size_t i = 0;
     while (i < text.size())
@@ -470,7 +471,9 @@ std::string process(std::string_view text, const LevelDef& level, const Catalog&
             decimals = digits[0] - '0';
             inside = inside.substr(0, bar);
         }
-        Expression expression(inside, i + 1, level, catalog, compute);
+        if (!seen)
+            seen = levelCatalog(level, catalog); // once per text, and only for a text with placeholders
+        Expression expression(inside, i + 1, level, *seen, compute);
         int own = 2;
         const double value = expression.parse(own);
         if (compute)
@@ -484,7 +487,7 @@ std::string process(std::string_view text, const LevelDef& level, const Catalog&
 
 double textValue(const LevelDef& level, const Catalog& catalog, std::string_view name, std::string_view argument)
 {
-    return evaluate(level, catalog, name, argument, true);
+    return evaluate(level, levelCatalog(level, catalog), name, argument, true);
 }
 
 std::string fillText(std::string_view text, const LevelDef& level, const Catalog& catalog)
