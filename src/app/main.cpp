@@ -25,6 +25,7 @@ int main(int argc, char** argv)
     commands["walkthrough"] = addWalkthroughCommand(app);
     commands["chart"] = addChartCommand(app);
     commands["fmt"] = addFmtCommand(app);
+    commands["import"] = addImportCommand(app);
 
     // CLI11 would only say "a subcommand is required" for `abalike fly`; name the word it did not know.
     if (argc > 1 && argv[1][0] != '-' && commands.count(argv[1]) == 0)

@@ -7,6 +7,9 @@
 namespace abalike
 {
 
+/// Appends a code point (at most U+10FFFF) as UTF-8.
+void appendUtf8(std::string& out, char32_t codePoint);
+
 /// A character a level or campaign string may not hold, and where it is.
 struct UnsafeCharacter
 {

@@ -20,5 +20,6 @@ CommandRunner addSolveCommand(CLI::App& app);
 CommandRunner addWalkthroughCommand(CLI::App& app);
 CommandRunner addChartCommand(CLI::App& app);
 CommandRunner addFmtCommand(CLI::App& app);
+CommandRunner addImportCommand(CLI::App& app);
 
 } // namespace abalike::app

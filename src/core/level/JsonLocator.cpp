@@ -1,5 +1,7 @@
 #include "level/JsonLocator.hpp"
 
+#include <abalike/level/SafeText.hpp>
+
 #include <cstdlib>
 
 namespace abalike
@@ -10,30 +12,6 @@ namespace
 /// Deeper than any level file needs; the loader rejects deeper nesting before parsing.
 constexpr int kMaxDepth = 256;
 
-/// Appends a code point as UTF-8.
-void appendUtf8(std::string& out, unsigned long c)
-{
-    if (c < 0x80)
-        out += static_cast<char>(c);
-    else if (c < 0x800)
-    {
-        out += static_cast<char>(0xC0 | (c >> 6));
-        out += static_cast<char>(0x80 | (c & 0x3F));
-    }
-    else if (c < 0x10000)
-    {
-        out += static_cast<char>(0xE0 | (c >> 12));
-        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (c & 0x3F));
-    }
-    else
-    {
-        out += static_cast<char>(0xF0 | (c >> 18));
-        out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
-        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (c & 0x3F));
-    }
-}
 } // namespace
 
 std::string jsonPointerToken(const std::string& key)

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <abalike/level/LevelIO.hpp>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace abalike
+{
+
+class Catalog;
+
+/// A Science Birds level converted to ours, and what the conversion changed or guessed.
+struct ScienceBirdsLevel
+{
+    LevelDef level;
+    /// Each located in the XML file (line, column) and naming the body of the new level it concerns (pointer):
+    /// snaps onto supports, a TriangleHole made solid, an unclosed element, a missing optional attribute, ...
+    std::vector<LevelIssue> warnings;
+};
+
+/// Converts a Science Birds level: the XML that the Science Birds game and the AIBIRDS level-generation competitions
+/// use (`<Level>` with `<Birds>` or `<BirdsAmount>`, `<Slingshot>`, `<GameObjects>` of `Block`, `Pig`, `TNT` and
+/// `Platform`), in UTF-8 or UTF-16 with or without a byte-order mark, CRLF or LF. Sizes are Science Birds' own
+/// (1 unit = 1 m); its ground at y = -3.5 becomes ours at 0, x stays; x and y are centres. Bodies that float or sink
+/// by up to kSnapM are set onto what is under them, bottom to top, each reported. What Science Birds itself accepts
+/// (an element left unclosed, a missing rotation or material) is read with a warning; everything else throws
+/// LevelLoadError with the file's line and column. levels/README.md documents the mapping.
+ScienceBirdsLevel importScienceBirds(std::string_view bytes, const std::string& fileName, const Catalog& catalog);
+
+/// Science Birds builds its levels a few centimetres apart and lets them fall into place; the import does it.
+inline constexpr double kScienceBirdsSnapM = 0.1;
+
+/// Science Birds' ground line.
+inline constexpr double kScienceBirdsGroundY = -3.5;
+
+} // namespace abalike

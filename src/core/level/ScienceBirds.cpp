@@ -1,0 +1,564 @@
+#include <abalike/level/ScienceBirds.hpp>
+
+#include <abalike/world/Catalog.hpp>
+#include <abalike/world/RestFindings.hpp>
+
+#include "level/LevelLimits.hpp"
+#include "level/XmlText.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <pugixml.hpp>
+
+namespace abalike
+{
+
+namespace
+{
+
+/// A Science Birds block prefab: its shape and size at rotation 0 (Science Birds' level generators list the same).
+struct Piece
+{
+    const char* name;
+    BlockShape shape;
+    double widthM;
+    double heightM;
+};
+
+constexpr Piece kPieces[] = {
+    {"SquareHole", BlockShape::HollowBox, 0.84, 0.84}, {"RectFat", BlockShape::Box, 0.85, 0.43},
+    {"SquareSmall", BlockShape::Box, 0.43, 0.43},      {"SquareTiny", BlockShape::Box, 0.22, 0.22},
+    {"RectTiny", BlockShape::Box, 0.43, 0.22},         {"RectSmall", BlockShape::Box, 0.85, 0.22},
+    {"RectMedium", BlockShape::Box, 1.68, 0.22},       {"RectBig", BlockShape::Box, 2.06, 0.22},
+    {"Circle", BlockShape::Circle, 0.8, 0.8},          {"CircleSmall", BlockShape::Circle, 0.45, 0.45},
+    {"Triangle", BlockShape::Triangle, 0.82, 0.82},    {"TriangleHole", BlockShape::Triangle, 0.82, 0.82},
+};
+
+/// SquareHole's round hole (about 0.5 m across) becomes a square one of the same width.
+constexpr double kSquareHoleWallM = 0.17;
+constexpr double kTntSizeM = 0.55;
+constexpr double kPlatformTileM = 0.62;
+constexpr double kDefaultSlingshotX = -8.0;
+constexpr double kDefaultSlingshotY = -2.5;
+constexpr int kDefaultBirds = 3;
+
+const std::map<std::string, std::string> kBirds = {
+    {"BirdRed", "red"}, {"BirdBlue", "blue"}, {"BirdYellow", "yellow"}, {"BirdBlack", "black"}, {"BirdWhite", "white"}};
+const std::map<std::string, std::string> kPigs = {
+    {"BasicSmall", "small"}, {"BasicMedium", "medium"}, {"BasicBig", "large"}};
+
+/// The shortest text that reads back as the same double ("1.5", "-2.5", "0").
+std::string shortest(double value)
+{
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
+}
+
+std::string joinedKeys(const std::map<std::string, std::string>& names)
+{
+    std::string text;
+    for (const auto& entry : names)
+        text.append(text.empty() ? "" : ", ").append(entry.first);
+    return text;
+}
+
+/// Reads one XML file into a level, collecting warnings and errors at their places.
+class Importer
+{
+public:
+    Importer(const std::string& fileName, const Catalog& catalog) : m_file(fileName), m_catalog(catalog) {}
+
+    ScienceBirdsLevel run(std::string_view bytes);
+
+private:
+    LevelIssue issueAt(std::size_t offset, const std::string& pointer, std::string message) const
+    {
+        const TextPlace place = placeOf(m_original, offsetBeforeRepair(offset, m_closed));
+        return {m_file, place.line, place.column, pointer, std::move(message)};
+    }
+    std::size_t offsetOf(const pugi::xml_node& node) const
+    {
+        const std::ptrdiff_t offset = node.offset_debug();
+        return offset > 0 ? static_cast<std::size_t>(offset - 1) : 0; // the '<' before the name
+    }
+    void warn(const pugi::xml_node& node, const std::string& pointer, std::string message)
+    {
+        m_warnings.push_back(issueAt(offsetOf(node), pointer, std::move(message)));
+    }
+    void fail(const pugi::xml_node& node, std::string message)
+    {
+        m_errors.push_back(issueAt(offsetOf(node), "", std::move(message)));
+    }
+
+    std::optional<double> number(const pugi::xml_node& node, const char* name, std::optional<double> fallback,
+                                 const std::string& pointer);
+    void readBirds(const pugi::xml_node& level);
+    void readSlingshot(const pugi::xml_node& level);
+    void readObjects(const pugi::xml_node& objects);
+    void readBlock(const pugi::xml_node& node);
+    void readPig(const pugi::xml_node& node);
+    void readTnt(const pugi::xml_node& node);
+    void readPlatform(const pugi::xml_node& node);
+    /// Science Birds' y with its ground at -3.5 to ours at 0, to the micrometre (its files give centimetres).
+    static double ourY(double y) { return tidy(y - kScienceBirdsGroundY); }
+    static double tidy(double metres) { return std::round(metres * 1e6) / 1e6; }
+    void snapOntoSupports();
+    void checkResult();
+
+    std::string m_file;
+    const Catalog& m_catalog;
+    std::string m_original; ///< the decoded text, before closing leaf tags (places refer to it)
+    std::vector<ClosedTag> m_closed;
+    LevelDef m_level;
+    std::map<std::string, std::size_t> m_placeOf; ///< a body's pointer -> its element's offset
+    std::vector<LevelIssue> m_warnings;
+    std::vector<LevelIssue> m_errors;
+};
+
+std::optional<double> Importer::number(const pugi::xml_node& node, const char* name, std::optional<double> fallback,
+                                       const std::string& pointer)
+{
+    const pugi::xml_attribute attribute = node.attribute(name);
+    const std::string element = node.name();
+    if (attribute.empty())
+    {
+        if (!fallback)
+        {
+            fail(node, "<" + element + "> has no " + name + " (expected a number, e.g. " + name + "=\"1.5\")");
+            return std::nullopt;
+        }
+        warn(node, pointer,
+             "<" + element + "> has no " + name + "; read as " + name + "=\"" + shortest(*fallback) + "\"");
+        return fallback;
+    }
+    std::string_view text = attribute.value();
+    while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
+        text.remove_prefix(1);
+    while (!text.empty() && (text.back() == ' ' || text.back() == '\t'))
+        text.remove_suffix(1);
+    if (!text.empty() && text.front() == '+')
+        text.remove_prefix(1);
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+    {
+        fail(node, "<" + element + "> " + name + "=\"" + attribute.value() + "\" is not a number (expected e.g. " +
+                       name + "=\"1.5\")");
+        return std::nullopt;
+    }
+    if (std::abs(value) > limits::kWorldExtentM)
+    {
+        fail(node, "<" + element + "> " + name + "=\"" + attribute.value() + "\" is outside the world (at most " +
+                       std::to_string(static_cast<int>(limits::kWorldExtentM)) + " from the origin)");
+        return std::nullopt;
+    }
+    return value;
+}
+
+void Importer::readBirds(const pugi::xml_node& level)
+{
+    const pugi::xml_node birds = level.child("Birds");
+    if (birds)
+    {
+        for (const pugi::xml_node bird : birds.children("Bird"))
+        {
+            const std::string type = bird.attribute("type").value();
+            const auto known = kBirds.find(type);
+            if (known == kBirds.end())
+                fail(bird, "<Bird type=\"" + type + "\"> is not a Science Birds bird (expected one of " +
+                               joinedKeys(kBirds) + ")");
+            else if (m_level.birds.size() == limits::kMaxBirds)
+                fail(bird, "more than " + std::to_string(limits::kMaxBirds) + " birds (a level has at most that many)");
+            else
+                m_level.birds.push_back(known->second);
+        }
+        if (m_level.birds.empty() && m_errors.empty())
+            fail(birds, "<Birds> holds no <Bird type=\"BirdRed\"/> (a level needs at least one bird)");
+        return;
+    }
+    // Older Science Birds levels give only a count of red birds.
+    const pugi::xml_node amount = level.child("BirdsAmount");
+    if (amount)
+    {
+        std::string_view text = amount.child_value();
+        int count = 0;
+        while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front())))
+            text.remove_prefix(1);
+        while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+            text.remove_suffix(1);
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), count);
+        if (error != std::errc() || end != text.data() + text.size() || count < 1 ||
+            count > static_cast<int>(limits::kMaxBirds))
+        {
+            fail(amount, "<BirdsAmount> is \"" + std::string(amount.child_value()) +
+                             "\" (expected a whole number of birds from 1 to " + std::to_string(limits::kMaxBirds) +
+                             ")");
+            return;
+        }
+        m_level.birds.assign(static_cast<std::size_t>(count), "red");
+        return;
+    }
+    m_level.birds.assign(kDefaultBirds, "red");
+    warn(level, "/birds", "no <Birds>: gave the level " + std::to_string(kDefaultBirds) + " red birds");
+}
+
+void Importer::readSlingshot(const pugi::xml_node& level)
+{
+    const pugi::xml_node slingshot = level.child("Slingshot");
+    if (!slingshot)
+    {
+        warn(level, "/slingshot", "no <Slingshot>: placed it where Science Birds does, at x=\"-8\" y=\"-2.5\"");
+        m_level.slingshot.x = kDefaultSlingshotX;
+        m_level.slingshot.y = ourY(kDefaultSlingshotY);
+        return;
+    }
+    const auto x = number(slingshot, "x", kDefaultSlingshotX, "/slingshot");
+    const auto y = number(slingshot, "y", kDefaultSlingshotY, "/slingshot");
+    if (x && y)
+    {
+        m_level.slingshot.x = *x;
+        m_level.slingshot.y = ourY(*y);
+    }
+    m_placeOf["/slingshot"] = offsetOf(slingshot);
+}
+
+/// Rotations written as 90.00001 mean 90: angles within a thousandth of a degree of a multiple of 90 become it.
+double cleanAngle(double degrees)
+{
+    double angle = std::fmod(degrees, 360.0);
+    if (angle > 180.0)
+        angle -= 360.0;
+    if (angle <= -180.0)
+        angle += 360.0;
+    const double quarter = std::round(angle / 90.0) * 90.0;
+    return std::abs(angle - quarter) < 1e-3 ? (quarter == -0.0 ? 0.0 : quarter) : angle;
+}
+
+void Importer::readBlock(const pugi::xml_node& node)
+{
+    const std::string pointer = "/blocks/" + std::to_string(m_level.blocks.size());
+    const std::string type = node.attribute("type").value();
+    const Piece* piece = nullptr;
+    for (const Piece& candidate : kPieces)
+        if (type == candidate.name)
+            piece = &candidate;
+    if (piece == nullptr)
+    {
+        std::string names;
+        for (const Piece& candidate : kPieces)
+            names.append(names.empty() ? "" : ", ").append(candidate.name);
+        fail(node, "<Block type=\"" + type + "\"> is not a Science Birds block (expected one of " + names + ")");
+        return;
+    }
+    BlockDef block;
+    block.shape = piece->shape;
+    block.widthM = piece->widthM;
+    block.heightM = piece->heightM;
+    if (piece->shape == BlockShape::HollowBox)
+        block.wallM = kSquareHoleWallM;
+    if (type == "TriangleHole")
+        warn(node, pointer, "a TriangleHole becomes a solid triangle (our blocks have no triangular hole)");
+    if (node.attribute("material").empty())
+    {
+        warn(node, pointer, "<Block> has no material; read as material=\"wood\"");
+        block.material = "wood";
+    }
+    else
+    {
+        block.material = node.attribute("material").value();
+        std::transform(block.material.begin(), block.material.end(), block.material.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        if (block.material != "wood" && block.material != "ice" && block.material != "stone")
+        {
+            fail(node, "<Block material=\"" + std::string(node.attribute("material").value()) +
+                           "\"> is not a Science Birds material (expected wood, ice or stone)");
+            return;
+        }
+    }
+    const auto x = number(node, "x", std::nullopt, pointer);
+    const auto y = number(node, "y", std::nullopt, pointer);
+    const auto rotation = number(node, "rotation", 0.0, pointer);
+    if (!x || !y || !rotation)
+        return;
+    block.x = *x;
+    block.y = ourY(*y);
+    block.angleDeg = block.shape == BlockShape::Circle ? 0.0 : cleanAngle(*rotation);
+    m_placeOf[pointer] = offsetOf(node);
+    m_level.blocks.push_back(block);
+}
+
+void Importer::readPig(const pugi::xml_node& node)
+{
+    const std::string pointer = "/pigs/" + std::to_string(m_level.pigs.size());
+    PigDef pig;
+    if (node.attribute("type").empty())
+    {
+        warn(node, pointer, "<Pig> has no type; read as type=\"BasicSmall\"");
+        pig.type = "small";
+    }
+    else
+    {
+        const std::string type = node.attribute("type").value();
+        const auto known = kPigs.find(type);
+        if (known == kPigs.end())
+        {
+            fail(node,
+                 "<Pig type=\"" + type + "\"> is not a Science Birds pig (expected one of " + joinedKeys(kPigs) + ")");
+            return;
+        }
+        pig.type = known->second;
+    }
+    const auto x = number(node, "x", std::nullopt, pointer);
+    const auto y = number(node, "y", std::nullopt, pointer);
+    if (!x || !y)
+        return;
+    pig.x = *x;
+    pig.y = ourY(*y);
+    m_placeOf[pointer] = offsetOf(node);
+    m_level.pigs.push_back(pig);
+}
+
+void Importer::readTnt(const pugi::xml_node& node)
+{
+    const std::string pointer = "/blocks/" + std::to_string(m_level.blocks.size());
+    const auto x = number(node, "x", std::nullopt, pointer);
+    const auto y = number(node, "y", std::nullopt, pointer);
+    const auto rotation = number(node, "rotation", 0.0, pointer);
+    if (!x || !y || !rotation)
+        return;
+    BlockDef crate;
+    crate.material = "tnt";
+    crate.widthM = crate.heightM = kTntSizeM;
+    crate.x = *x;
+    crate.y = ourY(*y);
+    crate.angleDeg = cleanAngle(*rotation);
+    m_placeOf[pointer] = offsetOf(node);
+    m_level.blocks.push_back(crate);
+}
+
+void Importer::readPlatform(const pugi::xml_node& node)
+{
+    const std::string pointer = "/terrain/" + std::to_string(m_level.terrain.size());
+    const auto x = number(node, "x", std::nullopt, pointer);
+    const auto y = number(node, "y", std::nullopt, pointer);
+    const bool scaled = !node.attribute("scaleX").empty() || !node.attribute("scaleY").empty();
+    // A platform without scales is one tile; Science Birds reads it so, without a word.
+    const auto scaleX = scaled ? number(node, "scaleX", 1.0, pointer) : std::optional<double>(1.0);
+    const auto scaleY = scaled ? number(node, "scaleY", 1.0, pointer) : std::optional<double>(1.0);
+    const auto rotation =
+        node.attribute("rotation").empty() ? std::optional<double>(0.0) : number(node, "rotation", 0.0, pointer);
+    if (!x || !y || !scaleX || !scaleY || !rotation)
+        return;
+    if (*scaleX <= 0.0 || *scaleY <= 0.0)
+    {
+        fail(node, "<Platform> scaleX and scaleY must be greater than 0");
+        return;
+    }
+    TerrainDef platform;
+    platform.x = *x;
+    platform.y = ourY(*y);
+    platform.widthM = kPlatformTileM * *scaleX;
+    platform.heightM = kPlatformTileM * *scaleY;
+    platform.angleDeg = cleanAngle(*rotation);
+    m_placeOf[pointer] = offsetOf(node);
+    m_level.terrain.push_back(platform);
+}
+
+void Importer::readObjects(const pugi::xml_node& objects)
+{
+    for (const pugi::xml_node node : objects.children())
+    {
+        if (node.type() != pugi::node_element)
+            continue;
+        const std::string name = node.name();
+        if (name == "Block")
+            readBlock(node);
+        else if (name == "Pig")
+            readPig(node);
+        else if (name == "TNT")
+            readTnt(node);
+        else if (name == "Platform")
+            readPlatform(node);
+        else
+            warn(node, "", "<" + name + "> is not a Science Birds object; left out");
+    }
+}
+
+/// The lowest point of a body as placed: what it stands on is found from the bottom up.
+double bottomOf(const BlockDef& b)
+{
+    if (b.shape == BlockShape::Circle)
+        return b.y - 0.5 * b.widthM;
+    const double a = b.angleDeg * std::numbers::pi / 180.0;
+    return b.y - 0.5 * (std::abs(b.widthM * std::sin(a)) + std::abs(b.heightM * std::cos(a)));
+}
+
+std::string centimetres(double metres)
+{
+    const double cm = std::round(std::abs(metres) * 1000.0) / 10.0;
+    std::string text = std::to_string(cm);
+    return text.substr(0, text.find('.') + 2) + " cm";
+}
+
+void Importer::snapOntoSupports()
+{
+    struct Body
+    {
+        bool pig;
+        int index;
+        double bottom;
+    };
+    std::vector<Body> bodies;
+    for (std::size_t i = 0; i < m_level.blocks.size(); ++i)
+        bodies.push_back({false, static_cast<int>(i), bottomOf(m_level.blocks[i])});
+    for (std::size_t i = 0; i < m_level.pigs.size(); ++i)
+    {
+        const PigType* type = m_catalog.findPig(m_level.pigs[i].type);
+        bodies.push_back({true, static_cast<int>(i), m_level.pigs[i].y - (type ? type->radiusM : 0.25)});
+    }
+    std::stable_sort(bodies.begin(), bodies.end(), [](const Body& a, const Body& b) { return a.bottom < b.bottom; });
+    for (const Body& body : bodies)
+    {
+        const SupportGap gap = supportUnder(m_level, m_catalog, body.pig, body.index);
+        if (gap.support.empty() || std::abs(gap.gapM) < 1e-6)
+            continue;
+        const std::string pointer = (body.pig ? "/pigs/" : "/blocks/") + std::to_string(body.index);
+        const std::size_t offset = m_placeOf.count(pointer) ? m_placeOf[pointer] : 0;
+        if (std::abs(gap.gapM) > kScienceBirdsSnapM)
+        {
+            m_warnings.push_back(issueAt(offset, pointer,
+                                         (gap.gapM > 0 ? "is " + centimetres(gap.gapM) + " above " + gap.support
+                                                       : "sinks " + centimetres(gap.gapM) + " into " + gap.support) +
+                                             ", more than the " + centimetres(kScienceBirdsSnapM) +
+                                             " the import closes: left where it is (abalike check reports it)"));
+            continue;
+        }
+        double& y = body.pig ? m_level.pigs[static_cast<std::size_t>(body.index)].y
+                             : m_level.blocks[static_cast<std::size_t>(body.index)].y;
+        y = tidy(y - gap.gapM);
+        std::string message = (gap.gapM > 0 ? "was " + centimetres(gap.gapM) + " above " + gap.support
+                                            : "sank " + centimetres(gap.gapM) + " into " + gap.support) +
+                              "; set onto it (y = ";
+        message.append(shortest(y)).append(" in our level)");
+        m_warnings.push_back(issueAt(offset, pointer, message));
+    }
+}
+
+void Importer::checkResult()
+{
+    const auto locate = [&](LevelIssue issue)
+    {
+        // The body an issue names: "/blocks/3/material" belongs to "/blocks/3".
+        std::string pointer = issue.pointer;
+        while (!pointer.empty() && m_placeOf.count(pointer) == 0)
+            pointer.erase(pointer.rfind('/') == std::string::npos ? 0 : pointer.rfind('/'));
+        const LevelIssue place =
+            issueAt(pointer.empty() ? 0 : m_placeOf[pointer], issue.pointer, "in the imported level: " + issue.message);
+        return place;
+    };
+    for (const LevelIssue& issue : checkLevelFields(m_level, m_catalog))
+        m_errors.push_back(locate(issue));
+    if (!m_errors.empty())
+        return;
+    for (const LevelIssue& issue : checkLevelGeometry(m_level, m_catalog))
+        m_warnings.push_back(locate(issue));
+}
+
+ScienceBirdsLevel Importer::run(std::string_view bytes)
+{
+    XmlText text = decodeXmlBytes(bytes);
+    if (!text.error.empty())
+        throw LevelLoadError(
+            {{m_file, 0, 0, "",
+              text.error + " at byte " + std::to_string(text.errorOffset) + " (expected UTF-8 or UTF-16 text)"}});
+    m_original = text.utf8;
+    std::string repaired = text.utf8;
+    m_closed = closeOpenLeafTags(repaired, {"Camera", "Slingshot", "Bird", "Block", "Pig", "TNT", "Platform"});
+    for (const ClosedTag& tag : m_closed)
+    {
+        const TextPlace place = placeOf(m_original, tag.offset);
+        m_warnings.push_back(
+            {m_file, place.line, place.column, "",
+             "<" + tag.name + "> is not closed; read as <" + tag.name + " .../> (as Science Birds does)"});
+    }
+
+    pugi::xml_document document;
+    const pugi::xml_parse_result parsed =
+        document.load_buffer(repaired.data(), repaired.size(), pugi::parse_default, pugi::encoding_utf8);
+    if (!parsed)
+    {
+        // A file that ends inside its elements (a lost "</GameObjects></Level>") still holds every object before.
+        const bool endsOpen =
+            repaired.find_first_not_of(" \t\n", static_cast<std::size_t>(parsed.offset)) == std::string::npos &&
+            (parsed.status == pugi::status_end_element_mismatch || parsed.status == pugi::status_bad_end_element);
+        if (!endsOpen || !document.child("Level"))
+        {
+            const LevelIssue issue = issueAt(static_cast<std::size_t>(parsed.offset), "",
+                                             std::string("not well-formed XML: ") + parsed.description());
+            throw LevelLoadError({issue});
+        }
+        m_warnings.push_back(issueAt(repaired.size(), "",
+                                     "the file ends before its elements are closed; read "
+                                     "everything it holds"));
+    }
+    const pugi::xml_node level = document.child("Level");
+    if (!level)
+        throw LevelLoadError({{m_file, 1, 1, "", "not a Science Birds level (expected a <Level> element)"}});
+
+    std::string stem = std::filesystem::path(m_file).stem().string();
+    std::string id;
+    for (const char c : stem)
+    {
+        const char lower = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        const bool keep = (lower >= 'a' && lower <= 'z') || (lower >= '0' && lower <= '9');
+        if (keep)
+            id += lower;
+        else if (!id.empty() && id.back() != '-')
+            id += '-';
+    }
+    while (!id.empty() && id.back() == '-')
+        id.pop_back();
+    m_level.id = id.empty() ? "science-birds-level" : id;
+    m_level.title = "Science Birds: " + (id.empty() ? std::string("level") : id);
+
+    readBirds(level);
+    readSlingshot(level);
+    const pugi::xml_node objects = level.child("GameObjects");
+    if (!objects)
+        fail(level, "no <GameObjects> (expected the level's blocks and pigs in it)");
+    else
+        readObjects(objects);
+    for (const pugi::xml_node node : level.children())
+    {
+        const std::string name = node.name();
+        if (node.type() == pugi::node_element && name != "Birds" && name != "BirdsAmount" && name != "Slingshot" &&
+            name != "GameObjects" && name != "Camera" && name != "Score")
+            warn(node, "", "<" + name + "> is not part of a Science Birds level; left out");
+    }
+    if (m_errors.empty())
+    {
+        snapOntoSupports();
+        checkResult();
+    }
+    if (!m_errors.empty())
+        throw LevelLoadError(m_errors);
+    std::stable_sort(m_warnings.begin(), m_warnings.end(),
+                     [](const LevelIssue& a, const LevelIssue& b)
+                     { return std::tie(a.line, a.column) < std::tie(b.line, b.column); });
+    return {m_level, m_warnings};
+}
+
+} // namespace
+
+ScienceBirdsLevel importScienceBirds(std::string_view bytes, const std::string& fileName, const Catalog& catalog)
+{
+    return Importer(fileName, catalog).run(bytes);
+}
+
+} // namespace abalike

@@ -1,0 +1,280 @@
+#include <abalike/level/LevelWriter.hpp>
+#include <abalike/level/ScienceBirds.hpp>
+#include <abalike/world/Catalog.hpp>
+#include <abalike/world/RestCheck.hpp>
+
+#include <gtest/gtest.h>
+
+namespace abalike
+{
+namespace
+{
+
+// A small Science Birds fort written the way Science Birds writes its files: an unclosed <Camera> and <Slingshot>,
+// a rotation of 90.00001, bodies a few centimetres above what holds them (its ground is y = -3.5).
+const std::string kFort = R"(<?xml version="1.0" encoding="utf-16"?>
+<Level width ="2">
+  <Camera x="0" y="2" minWidth="20" maxWidth="30">
+  <Birds>
+    <Bird type="BirdRed"/>
+    <Bird type="BirdBlue"/>
+    <Bird type="BirdBlack"/>
+  </Birds>
+  <Slingshot x="-8" y="-2.5">
+  <GameObjects>
+    <Block type="RectFat" material="wood" x="2.0" y="-3.075" rotation="90.00001" />
+    <Block type="RectFat" material="wood" x="3.5" y="-3.05" rotation="90" />
+    <Block type="RectMedium" material="ice" x="2.75" y="-2.54" rotation="0" />
+    <Block type="TriangleHole" material="stone" x="2.75" y="-2.02" rotation="0" />
+    <Block type="Circle" material="stone" x="5.5" y="-3.08" rotation="0" />
+    <Block type="SquareHole" material="wood" x="7" y="-3.05" rotation="0" />
+    <Pig type="BasicSmall" material="" x="2.75" y="-3.25" rotation="0" />
+    <Pig type="BasicMedium" material="" x="7" y="-2.3" rotation="0" />
+    <TNT type="" x="4.4" y="-3.2" rotation="0" />
+    <Platform type="Platform" material="" x="10" y="1" rotation="0" scaleX="4" scaleY="1" />
+    <Pig type="BasicBig" material="" x="10" y="1.81" rotation="0" />
+  </GameObjects>
+</Level>
+)";
+
+ScienceBirdsLevel import(const std::string& bytes)
+{
+    return importScienceBirds(bytes, "fort.xml", Catalog::builtin());
+}
+
+/// The warning about a pointer, or an empty issue.
+LevelIssue warningAbout(const ScienceBirdsLevel& imported, const std::string& pointer)
+{
+    for (const LevelIssue& issue : imported.warnings)
+        if (issue.pointer == pointer)
+            return issue;
+    return {};
+}
+
+std::string toUtf16(const std::string& ascii, bool bigEndian, bool bom)
+{
+    std::string out;
+    if (bom)
+        out += bigEndian ? std::string("\xFE\xFF") : std::string("\xFF\xFE");
+    for (const char c : ascii)
+    {
+        if (bigEndian)
+            out.append(1, '\0').append(1, c);
+        else
+            out.append(1, c).append(1, '\0');
+    }
+    return out;
+}
+
+std::string withCrlf(const std::string& text)
+{
+    std::string out;
+    for (const char c : text)
+        out += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    return out;
+}
+
+TEST(ScienceBirdsImport, MapsEveryPieceWithScienceBirdsSizesAndPutsItsGroundAtOurs)
+{
+    const ScienceBirdsLevel imported = import(kFort);
+    const LevelDef& level = imported.level;
+    EXPECT_EQ(level.id, "fort");
+    EXPECT_EQ(level.birds, (std::vector<std::string>{"red", "blue", "black"}));
+    EXPECT_DOUBLE_EQ(level.slingshot.x, -8.0);
+    EXPECT_DOUBLE_EQ(level.slingshot.y, 1.0); // -2.5 is 1 m above Science Birds' ground
+    ASSERT_EQ(level.blocks.size(), 7u);
+    // RectFat 0.85 x 0.43 stood on end: 90.00001 is 90, and its centre 0.425 m up.
+    EXPECT_EQ(level.blocks[0].shape, BlockShape::Box);
+    EXPECT_DOUBLE_EQ(level.blocks[0].widthM, 0.85);
+    EXPECT_DOUBLE_EQ(level.blocks[0].heightM, 0.43);
+    EXPECT_EQ(level.blocks[0].angleDeg, 90.0);
+    EXPECT_DOUBLE_EQ(level.blocks[0].y, 0.425);
+    EXPECT_EQ(level.blocks[2].material, "ice");
+    EXPECT_DOUBLE_EQ(level.blocks[2].widthM, 1.68);
+    EXPECT_DOUBLE_EQ(level.blocks[2].y, 0.96); // on the posts: 0.85 + 0.11
+    EXPECT_EQ(level.blocks[3].shape, BlockShape::Triangle);
+    EXPECT_DOUBLE_EQ(level.blocks[3].widthM, 0.82);
+    EXPECT_EQ(level.blocks[4].shape, BlockShape::Circle);
+    EXPECT_DOUBLE_EQ(level.blocks[4].widthM, 0.8);
+    EXPECT_EQ(level.blocks[5].shape, BlockShape::HollowBox);
+    EXPECT_DOUBLE_EQ(level.blocks[5].widthM, 0.84);
+    EXPECT_EQ(level.blocks[6].material, "tnt");
+    EXPECT_DOUBLE_EQ(level.blocks[6].widthM, 0.55);
+    ASSERT_EQ(level.pigs.size(), 3u);
+    EXPECT_EQ(level.pigs[0].type, "small");
+    EXPECT_EQ(level.pigs[1].type, "medium");
+    EXPECT_EQ(level.pigs[2].type, "large");
+    ASSERT_EQ(level.terrain.size(), 1u);
+    EXPECT_DOUBLE_EQ(level.terrain[0].widthM, 0.62 * 4);
+    EXPECT_DOUBLE_EQ(level.terrain[0].heightM, 0.62);
+    EXPECT_DOUBLE_EQ(level.terrain[0].y, 4.5);
+    EXPECT_DOUBLE_EQ(level.pigs[2].y, 5.31); // the big pig's 0.5 m radius on the platform's top at 4.81
+
+    // What it writes is a level of ours that loads and stands.
+    const LevelDef reread = parseLevel(writeLevelJson(level, ""), "fort.json", Catalog::builtin());
+    EXPECT_EQ(reread.blocks.size(), 7u);
+    const RestReport rest = checkRest(reread);
+    EXPECT_TRUE(rest.passed()) << rest.summary();
+}
+
+TEST(ScienceBirdsImport, SnapsBodiesOntoTheirSupportsAndSaysWhereEachWas)
+{
+    const ScienceBirdsLevel imported = import(kFort);
+    // The right post stood 2.5 cm above the ground (line 12), the circle 2 cm, the medium pig 1 cm above its box.
+    const LevelIssue post = warningAbout(imported, "/blocks/1");
+    EXPECT_EQ(post.line, 12);
+    EXPECT_EQ(post.column, 5);
+    EXPECT_EQ(post.message, "was 2.5 cm above the ground; set onto it (y = 0.425 in our level)");
+    EXPECT_EQ(warningAbout(imported, "/blocks/4").message,
+              "was 2.0 cm above the ground; set onto it (y = 0.4 in our level)");
+    EXPECT_EQ(warningAbout(imported, "/pigs/1").message,
+              "was 1.0 cm above block 5 (wood); set onto it (y = 1.19 in our level)");
+    EXPECT_NE(warningAbout(imported, "/blocks/3").message.find("TriangleHole becomes a solid triangle"),
+              std::string::npos);
+    // A body that sits right (the left post, the small pig) gets no word.
+    EXPECT_TRUE(warningAbout(imported, "/blocks/0").message.empty());
+    EXPECT_TRUE(warningAbout(imported, "/pigs/0").message.empty());
+}
+
+TEST(ScienceBirdsImport, ReadsUnclosedElementsAsScienceBirdsDoesAndSaysWhere)
+{
+    const ScienceBirdsLevel imported = import(kFort);
+    ASSERT_GE(imported.warnings.size(), 2u);
+    EXPECT_EQ(imported.warnings[0].line, 3);
+    EXPECT_EQ(imported.warnings[0].column, 3);
+    EXPECT_EQ(imported.warnings[0].message, "<Camera> is not closed; read as <Camera .../> (as Science Birds does)");
+    EXPECT_EQ(imported.warnings[1].line, 9);
+    EXPECT_NE(imported.warnings[1].message.find("<Slingshot> is not closed"), std::string::npos);
+}
+
+TEST(ScienceBirdsImport, EveryEncodingAndLineEndGivesTheSameLevelAndPlaces)
+{
+    const ScienceBirdsLevel reference = import(kFort);
+    const std::vector<std::pair<std::string, std::string>> variants = {
+        {"CRLF", withCrlf(kFort)},
+        {"UTF-8 BOM", "\xEF\xBB\xBF" + kFort},
+        {"UTF-16LE BOM", toUtf16(withCrlf(kFort), false, true)},
+        {"UTF-16BE BOM", toUtf16(kFort, true, true)},
+        {"UTF-16LE", toUtf16(kFort, false, false)},
+        {"UTF-16BE", toUtf16(withCrlf(kFort), true, false)},
+    };
+    for (const auto& [name, bytes] : variants)
+    {
+        const ScienceBirdsLevel imported = import(bytes);
+        EXPECT_EQ(imported.level, reference.level) << name;
+        ASSERT_EQ(imported.warnings.size(), reference.warnings.size()) << name;
+        for (std::size_t i = 0; i < imported.warnings.size(); ++i)
+        {
+            EXPECT_EQ(imported.warnings[i].line, reference.warnings[i].line) << name;
+            EXPECT_EQ(imported.warnings[i].column, reference.warnings[i].column) << name;
+        }
+    }
+}
+
+TEST(ScienceBirdsImport, AcceptsWhatScienceBirdsAcceptsWithAWarning)
+{
+    // Older files: a count of birds; no rotation, no material, no type on a pig; a file that ends inside <Level>.
+    const ScienceBirdsLevel imported = import("<Level>\n"
+                                              "  <BirdsAmount> 4 </BirdsAmount>\n"
+                                              "  <Slingshot x=\"-7.5\" y=\"-2\"/>\n"
+                                              "  <GameObjects>\n"
+                                              "    <Block type=\"RectSmall\" x=\"2\" y=\"-3.39\"/>\n"
+                                              "    <Pig x=\"2\" y=\"-3.03\"/>\n"
+                                              "    <Ufo x=\"1\"/>\n"
+                                              "  </GameObjects>\n");
+    const LevelDef& level = imported.level;
+    EXPECT_EQ(level.birds, std::vector<std::string>(4, "red"));
+    ASSERT_EQ(level.blocks.size(), 1u);
+    EXPECT_EQ(level.blocks[0].material, "wood");
+    EXPECT_EQ(level.blocks[0].angleDeg, 0.0);
+    ASSERT_EQ(level.pigs.size(), 1u);
+    EXPECT_EQ(level.pigs[0].type, "small");
+    EXPECT_DOUBLE_EQ(level.pigs[0].y, 0.47); // on the plank: 0.22 + 0.25
+    std::string all;
+    for (const LevelIssue& w : imported.warnings)
+        all += std::to_string(w.line) + ":" + std::to_string(w.column) + " " + w.message + "\n";
+    EXPECT_NE(all.find("5:5 <Block> has no material; read as material=\"wood\""), std::string::npos) << all;
+    EXPECT_NE(all.find("5:5 <Block> has no rotation; read as rotation=\"0\""), std::string::npos) << all;
+    EXPECT_NE(all.find("6:5 <Pig> has no type; read as type=\"BasicSmall\""), std::string::npos) << all;
+    EXPECT_NE(all.find("7:5 <Ufo> is not a Science Birds object; left out"), std::string::npos) << all;
+    EXPECT_NE(all.find("the file ends before its elements are closed"), std::string::npos) << all;
+
+    const ScienceBirdsLevel bare = import("<Level><GameObjects><Pig type=\"BasicSmall\" x=\"2\" y=\"-3.25\"/>"
+                                          "</GameObjects></Level>");
+    EXPECT_EQ(bare.level.birds, std::vector<std::string>(3, "red"));
+    EXPECT_DOUBLE_EQ(bare.level.slingshot.x, -8.0);
+    EXPECT_DOUBLE_EQ(bare.level.slingshot.y, 1.0);
+}
+
+TEST(ScienceBirdsImport, LeavesBodiesFarFromTheirSupportForTheRestCheck)
+{
+    // 20 cm above the ground is not how Science Birds places things: the import leaves it there, and says so.
+    const ScienceBirdsLevel imported = import("<Level><GameObjects>\n"
+                                              "<Block type=\"SquareSmall\" material=\"stone\" x=\"2\" y=\"-3.085\" "
+                                              "rotation=\"0\"/>\n"
+                                              "<Pig type=\"BasicSmall\" x=\"5\" y=\"-3.25\"/>\n"
+                                              "</GameObjects></Level>");
+    EXPECT_DOUBLE_EQ(imported.level.blocks[0].y, 0.415);
+    EXPECT_EQ(warningAbout(imported, "/blocks/0").message,
+              "is 20.0 cm above the ground, more than the 10.0 cm the import closes: left where it is (abalike check "
+              "reports it)");
+}
+
+/// The one error importing text gives, as "LINE:COL message".
+std::string errorOf(const std::string& bytes)
+{
+    try
+    {
+        import(bytes);
+    }
+    catch (const LevelLoadError& e)
+    {
+        std::string text;
+        for (const LevelIssue& issue : e.issues())
+            text += std::to_string(issue.line) + ":" + std::to_string(issue.column) + " " + issue.message + "\n";
+        return text;
+    }
+    return "no error";
+}
+
+TEST(ScienceBirdsImport, RefusesWhatScienceBirdsCannotLoadWithItsPlace)
+{
+    const std::string head = "<Level>\n<GameObjects>\n";
+    EXPECT_EQ(errorOf(head + "  <Block type=\"RectHuge\" material=\"wood\" x=\"1\" y=\"-3\"/>\n</GameObjects></Level>"),
+              "3:3 <Block type=\"RectHuge\"> is not a Science Birds block (expected one of SquareHole, RectFat, "
+              "SquareSmall, SquareTiny, RectTiny, RectSmall, RectMedium, RectBig, Circle, CircleSmall, Triangle, "
+              "TriangleHole)\n");
+    EXPECT_EQ(errorOf(head + "<Block type=\"RectBig\" material=\"glass\" x=\"1\" y=\"-3\"/></GameObjects></Level>"),
+              "3:1 <Block material=\"glass\"> is not a Science Birds material (expected wood, ice or stone)\n");
+    EXPECT_EQ(errorOf(head + "<Pig type=\"BasicSmall\" x=\"1,5\" y=\"-3\"/></GameObjects></Level>"),
+              "3:1 <Pig> x=\"1,5\" is not a number (expected e.g. x=\"1.5\")\n");
+    EXPECT_EQ(errorOf(head + "<Pig type=\"BasicSmall\" y=\"-3\"/></GameObjects></Level>"),
+              "3:1 <Pig> has no x (expected a number, e.g. x=\"1.5\")\n");
+    EXPECT_EQ(errorOf(head + "<Pig type=\"BasicTiny\" x=\"1\" y=\"-3\"/></GameObjects></Level>"),
+              "3:1 <Pig type=\"BasicTiny\"> is not a Science Birds pig (expected one of BasicBig, BasicMedium, "
+              "BasicSmall)\n");
+    EXPECT_EQ(errorOf("<Level>\n<Birds><Bird type=\"BirdGreen\"/></Birds>\n<GameObjects/></Level>"),
+              "2:8 <Bird type=\"BirdGreen\"> is not a Science Birds bird (expected one of BirdBlack, BirdBlue, "
+              "BirdRed, BirdWhite, BirdYellow)\n");
+    EXPECT_EQ(errorOf("<Level>\n<GameObjects>\n</Level>\n<Pig/>"), "3:3 not well-formed XML: Start-end tags mismatch\n");
+    EXPECT_EQ(errorOf("<Levels/>"), "1:1 not a Science Birds level (expected a <Level> element)\n");
+    EXPECT_EQ(errorOf(head + "<Platform x=\"1\" y=\"0\" scaleX=\"0\"/></GameObjects></Level>"),
+              "3:1 <Platform> scaleX and scaleY must be greater than 0\n");
+    EXPECT_EQ(errorOf(head + "<Pig type=\"BasicSmall\" x=\"1e9\" y=\"-3\"/></GameObjects></Level>"),
+              "3:1 <Pig> x=\"1e9\" is outside the world (at most 2000 from the origin)\n");
+    EXPECT_EQ(errorOf("<Level>\n<BirdsAmount>many</BirdsAmount>\n<GameObjects/></Level>"),
+              "2:1 <BirdsAmount> is \"many\" (expected a whole number of birds from 1 to 20)\n");
+    // A level of ours needs a pig; the check says so at the level.
+    EXPECT_NE(errorOf("<Level><GameObjects/></Level>").find("in the imported level: "), std::string::npos);
+}
+
+TEST(ScienceBirdsImport, RefusesBytesThatAreNotText)
+{
+    EXPECT_EQ(errorOf(std::string("\xFF\xFE<\0L\0x", 7)),
+              "0:0 UTF-16 text with an odd number of bytes at byte 6 (expected UTF-8 or UTF-16 text)\n");
+    EXPECT_EQ(errorOf(std::string("\xFF\xFE<\0\x00\xD8L\0", 8)),
+              "0:0 a lone UTF-16 surrogate at byte 4 (expected UTF-8 or UTF-16 text)\n");
+}
+
+} // namespace
+} // namespace abalike
