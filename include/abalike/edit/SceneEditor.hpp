@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace abalike
@@ -24,6 +25,17 @@ enum class SelectMode
     Replace, ///< the clicked objects become the selection
     Add,     ///< they are added to it
     Toggle,  ///< each is added, or removed if it was selected
+};
+
+/// Which edges or centres alignSelection lines up.
+enum class Align
+{
+    Left,
+    CentreX,
+    Right,
+    Bottom,
+    CentreY,
+    Top,
 };
 
 /// A new sandbox scene: the ground, a slingshot at (0, 1.5), three red birds, Earth's gravity in vacuum, no pigs.
@@ -89,6 +101,39 @@ public:
     void mirrorSelection();
     /// Removes the selected blocks, pigs and terrain (the slingshot stays).
     void deleteSelection();
+    /// Lines the selection's bounding boxes up on the selection's leftmost left edge, lowest bottom, ... (one undo
+    /// step; the slingshot stays where it is).
+    void alignSelection(Align align);
+    /// Spaces the selection evenly between its two outermost objects, left to right or bottom to top: equal gaps
+    /// between bounding boxes (at least three objects; one undo step).
+    void distributeSelection(bool horizontal);
+    /// Replaces several objects' definitions at once (a field edited across a multi-selection): one undo step,
+    /// merged with later ones under mergeKey. Returns why not (the first object refused, named), or an empty string.
+    std::string changeObjects(const std::vector<ObjectRef>& refs, const std::vector<ObjectDef>& defs,
+                              const std::string& label, const std::string& mergeKey = {});
+
+    // ---------------------------------------------------------------- clipboard and prefabs
+    /// The selected blocks, pigs and terrain as level JSON (a sandbox scene holding just them): what Copy puts on
+    /// the system clipboard, readable by Paste in any file and by any text editor. Empty when nothing is selected.
+    std::string copySelection() const;
+    /// Adds copies of the blocks, pigs and terrain of `source` as one undo step and selects them. With `at`, the
+    /// group moves so its bounding box's bottom centre is there (never below the ground), then settles onto a surface
+    /// within snap reach. Returns why not, or an empty string.
+    std::string insertBodies(const LevelDef& source, const std::optional<std::array<double, 2>>& at,
+                             const std::string& label);
+    /// Pastes clipboard text (a copied selection, or any level file's JSON) as insertBodies does. Returns why not:
+    /// text that is not a level, or one without bodies.
+    std::string paste(std::string_view text, const std::optional<std::array<double, 2>>& at);
+
+    // ---------------------------------------------------------------- terrain polygon corners
+    /// Moves corner `vertex` of terrain polygon `terrain` to (x, y). Returns why not (a polygon that would cross
+    /// itself, ...), or an empty string; steps under one mergeKey are one undo step.
+    std::string moveVertex(std::size_t terrain, std::size_t vertex, double x, double y,
+                           const std::string& mergeKey = {});
+    /// Adds a corner in the middle of the edge from `vertex` to the next one. Returns why not, or an empty string.
+    std::string insertVertex(std::size_t terrain, std::size_t vertex);
+    /// Removes a corner (a polygon keeps at least three). Returns why not, or an empty string.
+    std::string removeVertex(std::size_t terrain, std::size_t vertex);
     /// Replaces one object's definition (the property panels). Returns why not, or an empty string.
     std::string changeObject(const ObjectRef& ref, const ObjectDef& def, const std::string& label,
                              const std::string& mergeKey = {});

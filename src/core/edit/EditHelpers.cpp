@@ -1,0 +1,79 @@
+#include "edit/EditHelpers.hpp"
+
+#include "level/LevelLimits.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace abalike
+{
+
+void fitPolygonBounds(TerrainDef& terrain)
+{
+    double left = 1e300, right = -1e300, bottom = 1e300, top = -1e300;
+    for (const auto& point : terrain.points)
+    {
+        left = std::min(left, point[0]);
+        right = std::max(right, point[0]);
+        bottom = std::min(bottom, point[1]);
+        top = std::max(top, point[1]);
+    }
+    terrain.x = 0.5 * (left + right);
+    terrain.y = 0.5 * (bottom + top);
+    terrain.widthM = right - left;
+    terrain.heightM = top - bottom;
+    terrain.angleDeg = 0.0;
+}
+
+/// Turns a terrain polygon's points about its bounding box's centre; its box follows (a polygon has no angle).
+void rotatePolygon(TerrainDef& terrain, double deltaDeg)
+{
+    const double c = std::cos(deltaDeg * std::numbers::pi / 180.0);
+    const double s = std::sin(deltaDeg * std::numbers::pi / 180.0);
+    for (auto& point : terrain.points)
+    {
+        const double dx = point[0] - terrain.x;
+        const double dy = point[1] - terrain.y;
+        point = {terrain.x + c * dx - s * dy, terrain.y + s * dx + c * dy};
+    }
+    fitPolygonBounds(terrain);
+}
+
+double clampCoordinate(double value)
+{
+    return std::clamp(cleanMetres(value), -limits::kWorldExtentM, limits::kWorldExtentM);
+}
+
+/// Angles are kept in (-180, 180] so that turning never leaves the format's -360..360.
+double normaliseAngle(double degrees)
+{
+    double a = std::fmod(degrees, 360.0);
+    if (a > 180.0)
+        a -= 360.0;
+    else if (a <= -180.0)
+        a += 360.0;
+    return std::round(a * 1e9) / 1e9;
+}
+
+std::string plural(std::size_t count, const char* what)
+{
+    return std::to_string(count) + " " + what + (count == 1 ? "" : "s");
+}
+
+std::string labelFor(const char* verb, std::size_t count)
+{
+    return std::string(verb) + " " + plural(count, "object");
+}
+
+/// Bounds of an object for rectangle selection: its shape's, or the slingshot's point.
+std::array<Vec2, 2> objectBounds(const ObjectDef& def, const Catalog& catalog)
+{
+    const ConvexShape shape = objectShape(def, catalog);
+    if (!shape.empty())
+        return shapeBounds(shape);
+    const auto c = centreOf(def);
+    return {Vec2{c[0], c[1]}, Vec2{c[0], c[1]}};
+}
+
+} // namespace abalike
