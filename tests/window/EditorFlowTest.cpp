@@ -2,6 +2,8 @@
 // files it writes and the run's trace.
 #include "RunGame.hpp"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 namespace abalike::test
@@ -141,6 +143,69 @@ TEST_F(EditorFlow, ALevelWithGeometryProblemsOpensWithThemListed)
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_NE(run.err.find("overlaps /blocks/0"), std::string::npos) << run.err;
     EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"editor"}));
+}
+
+TEST_F(EditorFlow, PrefabsMirrorAndPolygonCornersWorkWithTheMouseAndFindingsFollowEveryEdit)
+{
+    // Insert > My prefabs > lean-to (from the data folder's prefabs/), Ctrl+M mirrors it, the wheel zooms, a right
+    // drag pans, a click selects the hill, its top-left corner is dragged up; Ctrl+S saves. The level opened with an
+    // overlap, which the re-check after each edit keeps finding. (tools/gallery takes docs/img/editor-tools.png
+    // from the same steps.)
+    const std::string file = m_dir.file("hillside.json");
+    std::filesystem::copy_file(sourceFile("tests/window/data/editor-hillside.json"), file);
+    std::filesystem::create_directories(data() / "prefabs");
+    std::filesystem::copy_file(sourceFile("tests/window/data/lean-to-prefab.json"),
+                               data() / "prefabs" / "lean-to.json");
+    const GameRun run = edit("'" + file + "' --frames 42" + script(R"([
+        {"frame": 8, "mouse": "move", "x": 114, "y": 11},
+        {"frame": 9, "mouse": "press", "button": "left", "x": 114, "y": 11},
+        {"frame": 9, "mouse": "release", "button": "left", "x": 114, "y": 11},
+        {"frame": 12, "mouse": "move", "x": 126, "y": 482},
+        {"frame": 13, "mouse": "press", "button": "left", "x": 126, "y": 482},
+        {"frame": 13, "mouse": "release", "button": "left", "x": 126, "y": 482},
+        {"frame": 16, "key": "M", "ctrl": true},
+        {"frame": 18, "mouse": "move", "x": 560, "y": 600},
+        {"frame": 19, "wheel": 2, "x": 560, "y": 600},
+        {"frame": 20, "wheel": 2, "x": 560, "y": 600},
+        {"frame": 22, "mouse": "move", "x": 800, "y": 300},
+        {"frame": 23, "mouse": "press", "button": "right", "x": 800, "y": 300},
+        {"frame": 24, "mouse": "move", "x": 700, "y": 250},
+        {"frame": 25, "mouse": "move", "x": 560, "y": 200},
+        {"frame": 26, "mouse": "release", "button": "right", "x": 560, "y": 200},
+        {"frame": 28, "mouse": "move", "x": 700, "y": 510},
+        {"frame": 29, "mouse": "press", "button": "left", "x": 700, "y": 510},
+        {"frame": 29, "mouse": "release", "button": "left", "x": 700, "y": 510},
+        {"frame": 31, "mouse": "move", "x": 562, "y": 468},
+        {"frame": 32, "mouse": "press", "button": "left", "x": 562, "y": 468},
+        {"frame": 33, "mouse": "move", "x": 570, "y": 450},
+        {"frame": 34, "mouse": "move", "x": 578, "y": 436},
+        {"frame": 35, "mouse": "release", "button": "left", "x": 578, "y": 436},
+        {"frame": 37, "mouse": "move", "x": 640, "y": 250},
+        {"frame": 38, "key": "S", "ctrl": true}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.values("editor-prefab", "error"), (std::vector<std::string>{"false"}));
+    const nlohmann::json saved = nlohmann::json::parse(readText(file));
+    const nlohmann::json& blocks = saved["blocks"];
+    ASSERT_EQ(blocks.size(), 6u);
+    ASSERT_EQ(saved["pigs"].size(), 2u);
+    // Mirrored: the stone post is now the right one, the ramp's right angle at the bottom right (legs swapped, a
+    // quarter turn).
+    EXPECT_EQ(blocks[2]["material"], "stone");
+    EXPECT_EQ(blocks[5]["material"], "ice");
+    EXPECT_GT(blocks[2]["x"].get<double>(), blocks[5]["x"].get<double>());
+    EXPECT_EQ(blocks[3]["shape"], "triangle");
+    EXPECT_EQ(blocks[3]["angle_deg"].get<double>(), 90.0);
+    EXPECT_EQ(blocks[3]["w"].get<double>(), 1.0);
+    // The hill's corner at (27, 2.5) went up, on the grid; the others stayed.
+    const nlohmann::json& points = saved["terrain"][0]["points"];
+    ASSERT_EQ(points.size(), 6u);
+    EXPECT_GT(points[5][1].get<double>(), 2.5);
+    EXPECT_EQ(std::fmod(points[5][1].get<double>(), 0.25), 0.0);
+    EXPECT_EQ(points[2], nlohmann::json::parse("[37, 3]"));
+    // The geometry check ran again after the edits and still finds the overlap the level opened with.
+    const std::vector<std::string> rechecks = run.values("editor-recheck", "geometry_findings");
+    ASSERT_GE(rechecks.size(), 3u);  // the insert, the mirror, the corner
+    EXPECT_EQ(rechecks.back(), "2"); // the overlap marks both blocks
 }
 
 } // namespace

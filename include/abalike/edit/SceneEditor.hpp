@@ -71,7 +71,7 @@ public:
     void selectAll();
     void clearSelection();
     /// An object's outline for drawing (a convex polygon, counter-clockwise; circles with 64 sides; the slingshot's
-    /// frame as a box), in metres.
+    /// frame as a box; a terrain polygon's own corners, in its file's order), in metres.
     std::vector<std::array<double, 2>> outline(const ObjectRef& ref) const;
     /// The outline an object would have in this scene (the placement ghost).
     std::vector<std::array<double, 2>> outlineOf(const ObjectDef& def) const;

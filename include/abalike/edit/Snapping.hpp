@@ -16,7 +16,7 @@ struct SnapSettings
     bool grid = true;
     double gridM = 0.25;           ///< grid spacing (m)
     bool surfaces = true;          ///< rest objects on the surface below and against neighbours
-    double surfaceReachM = 0.25;   ///< a surface this close (m) pulls an object onto it
+    double surfaceReachM = 0.25;   ///< a surface this close (m) pulls an object onto it (the editor sets at most 0.1)
     double rotationStepDeg = 15.0; ///< rotations snap to multiples of this when grid is on
 };
 

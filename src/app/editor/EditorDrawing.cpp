@@ -88,7 +88,23 @@ void EditorScreen::drawOverlay(sf::RenderTarget& target)
     if (m_editor->selection().size() == 1 && m_tool == Tool::Select)
     {
         const ObjectRef ref = m_editor->selection()[0];
-        if (ref.kind == ObjectKind::Block || ref.kind == ObjectKind::Terrain)
+        const bool polygon = ref.kind == ObjectKind::Terrain && m_editor->level().terrain[ref.index].isPolygon();
+        if (polygon)
+        {
+            // A polygon's corners (squares: drag to move, Ctrl+click to remove) and its edges' middles (rings:
+            // click to add a corner there).
+            const float half = 6.0f * scale * camera.metresPerPixel();
+            for (const VertexHandle& handle : vertexHandles())
+            {
+                const sf::Vector2f at = vertexHandlePosition(handle);
+                if (handle.edgeMiddle)
+                    m_mesh.addRing(at, half, 2.0f * scale * camera.metresPerPixel(), kSelected, 16);
+                else
+                    m_mesh.addGradientRect(at - sf::Vector2f(half, half), at + sf::Vector2f(half, half), kSelected,
+                                           kSelected);
+            }
+        }
+        else if (ref.kind == ObjectKind::Block || ref.kind == ObjectKind::Terrain)
         {
             const auto outline = m_editor->outline(ref);
             const ObjectDef def = objectDef(m_editor->level(), ref);

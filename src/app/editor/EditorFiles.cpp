@@ -19,17 +19,6 @@ namespace
 /// Autosave at most this often while there are unsaved changes.
 constexpr auto kAutosaveEvery = std::chrono::seconds(5);
 
-/// Level files in a folder, sorted, for the open and save dialogs.
-std::vector<std::filesystem::path> levelFilesIn(const std::filesystem::path& folder)
-{
-    std::vector<std::filesystem::path> files;
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
-        if (entry.path().extension() == ".json" && entry.path().filename() != "campaign.json")
-            files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    return files;
-}
 } // namespace
 
 std::filesystem::path EditorScreen::schemaPath() const
@@ -149,6 +138,15 @@ void EditorScreen::resetScene(EditorSource source)
 
 void EditorScreen::openFile(const std::filesystem::path& path)
 {
+    // Open opens what is there; a new level starts from File > New or `abalike edit NEW.json`.
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+    {
+        m_message = std::filesystem::exists(path, ec) ? "\"" + path.string() + "\" is a folder, not a level file"
+                                                      : "No such file: \"" + path.string() + "\"";
+        m_messageIsError = true;
+        return;
+    }
     try
     {
         resetScene(editorSourceFor(path));

@@ -61,6 +61,8 @@ std::optional<ObjectRef> EditorScreen::resizeHandleAt(sf::Vector2f pixel) const
     if (m_editor->selection().size() != 1)
         return std::nullopt;
     const ObjectRef ref = m_editor->selection()[0];
+    if (ref.kind == ObjectKind::Terrain && m_editor->level().terrain[ref.index].isPolygon())
+        return std::nullopt; // its corners have their own handles
     const auto corner = handleCorner(objectDef(m_editor->level(), ref));
     if (!corner)
         return std::nullopt;
@@ -69,6 +71,71 @@ std::optional<ObjectRef> EditorScreen::resizeHandleAt(sf::Vector2f pixel) const
     if (std::abs(at.x - pixel.x) <= reach && std::abs(at.y - pixel.y) <= reach)
         return ref;
     return std::nullopt;
+}
+
+std::vector<EditorScreen::VertexHandle> EditorScreen::vertexHandles() const
+{
+    std::vector<VertexHandle> handles;
+    if (m_editor->selection().size() != 1 || m_tool != Tool::Select)
+        return handles;
+    const ObjectRef ref = m_editor->selection()[0];
+    if (ref.kind != ObjectKind::Terrain || !m_editor->level().terrain[ref.index].isPolygon())
+        return handles;
+    const std::size_t corners = m_editor->level().terrain[ref.index].points.size();
+    for (std::size_t i = 0; i < corners; ++i)
+    {
+        handles.push_back({ref.index, i, false});
+        handles.push_back({ref.index, i, true});
+    }
+    return handles;
+}
+
+sf::Vector2f EditorScreen::vertexHandlePosition(const VertexHandle& handle) const
+{
+    const auto& points = m_editor->level().terrain[handle.terrain].points;
+    const auto& a = points[handle.vertex];
+    if (!handle.edgeMiddle)
+        return {static_cast<float>(a[0]), static_cast<float>(a[1])};
+    const auto& b = points[(handle.vertex + 1) % points.size()];
+    return {static_cast<float>(0.5 * (a[0] + b[0])), static_cast<float>(0.5 * (a[1] + b[1]))};
+}
+
+std::optional<EditorScreen::VertexHandle> EditorScreen::vertexHandleAt(sf::Vector2f pixel) const
+{
+    const Camera camera = m_view.camera(m_app.windowSize());
+    const float reach = (kHandlePx + 3.0f) * m_app.uiScale();
+    std::optional<VertexHandle> best;
+    float bestDistance = reach;
+    for (const VertexHandle& handle : vertexHandles())
+    {
+        const sf::Vector2f at = camera.toScreen(vertexHandlePosition(handle));
+        // Corners win over edge middles at the same distance: they are what a designer grabs most.
+        const float distance = std::hypot(at.x - pixel.x, at.y - pixel.y) + (handle.edgeMiddle ? 0.5f : 0.0f);
+        if (distance <= bestDistance)
+        {
+            bestDistance = distance;
+            best = handle;
+        }
+    }
+    return best;
+}
+
+void EditorScreen::pressVertexHandle(const VertexHandle& handle, bool ctrl)
+{
+    std::string why;
+    if (handle.edgeMiddle)
+    {
+        // A new corner in the edge's middle, at once dragged.
+        why = m_editor->insertVertex(handle.terrain, handle.vertex);
+        if (why.empty())
+            m_vertexDrag = VertexHandle{handle.terrain, handle.vertex + 1, false};
+    }
+    else if (ctrl)
+        why = m_editor->removeVertex(handle.terrain, handle.vertex);
+    else
+        m_vertexDrag = handle;
+    m_message = why;
+    m_messageIsError = !why.empty();
 }
 
 ObjectDef EditorScreen::toolObject(sf::Vector2f world) const
@@ -98,8 +165,11 @@ void EditorScreen::handleSceneMouse(const sf::Event& event)
 {
     const sf::Vector2f pixel = pixelOf(event);
     m_pointer = pixel;
-    const bool busy = m_dragFrom || m_bandFrom || m_panFrom || m_resizing;
-    const bool overPanels = pointerOverPanels(pixel) || ImGui::IsAnyItemActive();
+    const bool busy = m_dragFrom || m_bandFrom || m_panFrom || m_resizing || m_vertexDrag;
+    // A field being typed in keeps the pointer's moves, but not a press on the scene: that click both ends the typing
+    // (Dear ImGui commits the field) and does what it does on the scene, so no first click is lost.
+    const bool overPanels =
+        pointerOverPanels(pixel) || (ImGui::IsAnyItemActive() && event.type != sf::Event::MouseButtonPressed);
     m_pointerOnScene = !overPanels;
     if (overPanels && !busy)
         return;
@@ -164,6 +234,11 @@ void EditorScreen::pressOnScene(sf::Vector2f pixel, bool shift, bool ctrl)
             m_tool = Tool::Select;
         return;
     }
+    if (const auto vertex = vertexHandleAt(pixel))
+    {
+        pressVertexHandle(*vertex, ctrl);
+        return;
+    }
     if (const auto handle = resizeHandleAt(pixel))
     {
         m_resizing = handle;
@@ -191,6 +266,21 @@ void EditorScreen::moveOnScene(sf::Vector2f pixel)
     const sf::Vector2f world = m_view.toWorld(pixel);
     if (m_dragFrom)
         m_editor->dragTo(world.x - m_dragFrom->x, world.y - m_dragFrom->y);
+    else if (m_vertexDrag)
+    {
+        // On the grid when it is on (a corner is a point: it snaps to the grid itself).
+        double x = world.x;
+        double y = world.y;
+        if (m_editor->snapSettings().grid)
+        {
+            const double g = m_editor->snapSettings().gridM;
+            x = std::round(x / g) * g;
+            y = std::round(y / g) * g;
+        }
+        const std::string why = m_editor->moveVertex(m_vertexDrag->terrain, m_vertexDrag->vertex, x, y, "vertex-drag");
+        m_message = why;
+        m_messageIsError = !why.empty();
+    }
     else if (m_resizing)
     {
         // The handle follows the pointer in the object's own frame; the bottom edge stays where it is.
@@ -230,10 +320,11 @@ void EditorScreen::releaseOnScene(sf::Vector2f pixel)
         m_editor->endDrag();
         m_dragFrom.reset();
     }
-    if (m_resizing)
+    if (m_resizing || m_vertexDrag)
     {
         m_editor->endGesture();
         m_resizing.reset();
+        m_vertexDrag.reset();
     }
     if (m_bandFrom)
     {

@@ -125,6 +125,7 @@ void EditorScreen::selectionTab()
     if (selection.size() > 1)
     {
         ImGui::Text("%zu objects selected", selection.size());
+        multiSelectionFields(selection);
     }
     else
     {
@@ -762,6 +763,58 @@ void EditorScreen::checksTab()
         for (const LevelIssue& issue : problems)
             ImGui::BulletText("%s", issue.message.c_str());
     }
+}
+
+void EditorScreen::multiSelectionFields(const std::vector<ObjectRef>& selection)
+{
+    // The blocks' common fields, shown with the first block's value and set on every selected block at once.
+    std::vector<ObjectRef> blocks;
+    for (const ObjectRef& ref : selection)
+        if (ref.kind == ObjectKind::Block)
+            blocks.push_back(ref);
+    if (blocks.empty())
+        return;
+    BlockDef first = std::get<BlockDef>(objectDef(m_editor->level(), blocks.front()));
+    ImGui::TextDisabled("For all %zu selected blocks:", blocks.size());
+    ImGui::PushItemWidth(-110.0f * m_app.uiScale());
+    const auto& materials = Catalog::builtin().materials();
+    std::vector<const char*> names;
+    int material = 0;
+    for (std::size_t i = 0; i < materials.size(); ++i)
+    {
+        names.push_back(materials[i].name.c_str());
+        if (materials[i].name == first.material)
+            material = static_cast<int>(i);
+    }
+    const auto applyToAll = [&](const char* label, const auto& change)
+    {
+        std::vector<ObjectDef> defs;
+        for (const ObjectRef& ref : blocks)
+        {
+            BlockDef block = std::get<BlockDef>(objectDef(m_editor->level(), ref));
+            change(block);
+            defs.emplace_back(block);
+        }
+        const std::string why = m_editor->changeObjects(blocks, defs, label, std::string("multi-") + label);
+        if (!why.empty())
+        {
+            m_message = why;
+            m_messageIsError = true;
+        }
+    };
+    if (ImGui::Combo("Material", &material, names.data(), static_cast<int>(names.size())))
+    {
+        const std::string name = materials[static_cast<std::size_t>(material)].name;
+        applyToAll("Material", [&](BlockDef& b) { b.material = name; });
+    }
+    if (inputDouble("Width (m)", first.widthM, m_fieldReleased))
+        applyToAll("Width", [&](BlockDef& b) { b.widthM = first.widthM; });
+    if (inputDouble("Height (m)", first.heightM, m_fieldReleased))
+        applyToAll("Height",
+                   [&](BlockDef& b) { b.heightM = b.shape == BlockShape::Circle ? b.widthM : first.heightM; });
+    if (inputDouble("Angle (\u00B0)", first.angleDeg, m_fieldReleased, "%.1f"))
+        applyToAll("Angle", [&](BlockDef& b) { b.angleDeg = first.angleDeg; });
+    ImGui::PopItemWidth();
 }
 
 } // namespace abalike::app

@@ -127,6 +127,12 @@ void EditorScreen::menuBar()
             m_editor->redo();
         ImGui::Separator();
         const bool any = !m_editor->selection().empty();
+        if (ImGui::MenuItem("Cut", "Ctrl+X", false, any))
+            copySelection(true);
+        if (ImGui::MenuItem("Copy", "Ctrl+C", false, any))
+            copySelection(false);
+        if (ImGui::MenuItem("Paste", "Ctrl+V"))
+            pasteClipboard();
         if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, any))
             m_editor->duplicateSelection();
         if (ImGui::MenuItem("Mirror left to right", "Ctrl+M", false, any))
@@ -139,9 +145,30 @@ void EditorScreen::menuBar()
             m_editor->rotateSelection(-15.0);
         if (ImGui::MenuItem("Select all", "Ctrl+A"))
             m_editor->selectAll();
+        ImGui::Separator();
+        const bool several = m_editor->selection().size() >= 2;
+        if (ImGui::BeginMenu("Align", several))
+        {
+            static constexpr std::pair<const char*, Align> kAligns[] = {{"Left edges", Align::Left},
+                                                                        {"Centres (vertical line)", Align::CentreX},
+                                                                        {"Right edges", Align::Right},
+                                                                        {"Bottoms", Align::Bottom},
+                                                                        {"Centres (horizontal line)", Align::CentreY},
+                                                                        {"Tops", Align::Top}};
+            for (const auto& [label, align] : kAligns)
+                if (ImGui::MenuItem(label))
+                    m_editor->alignSelection(align);
+            ImGui::EndMenu();
+        }
+        const bool three = m_editor->selection().size() >= 3;
+        if (ImGui::MenuItem("Distribute left to right", nullptr, false, three))
+            m_editor->distributeSelection(true);
+        if (ImGui::MenuItem("Distribute bottom to top", nullptr, false, three))
+            m_editor->distributeSelection(false);
         m_editor->endGesture();
         ImGui::EndMenu();
     }
+    prefabMenu();
     if (ImGui::BeginMenu("View"))
     {
         SnapSettings& snap = m_editor->snapSettings();
@@ -249,8 +276,13 @@ void EditorScreen::palettePanel()
 
     heading("Scenery");
     if (ImGui::Button("Terrain (T)", ImVec2(buttonWidth, 0.0f)))
+    {
         m_tool = Tool::Terrain;
+        m_terrainTemplate = TerrainDef{0.0, 0.0, 4.0, 1.0, 0.0, {}};
+    }
     ImGui::SameLine();
+    if (ImGui::Button("Hill (H)", ImVec2(buttonWidth, 0.0f)))
+        chooseHillTool();
     if (ImGui::Button("Slingshot (L)", ImVec2(buttonWidth, 0.0f)))
         m_tool = Tool::Slingshot;
 
@@ -278,6 +310,8 @@ void EditorScreen::palettePanel()
     ImGui::Spacing();
     ImGui::TextDisabled("Drag: move  Shift+click: add");
     ImGui::TextDisabled("Q/E: rotate  [ ]: resize");
+    ImGui::TextDisabled("Ctrl+C/X/V: copy, cut, paste");
+    ImGui::TextDisabled("Ctrl+click a corner: remove");
     ImGui::TextDisabled("Right drag: pan  Wheel: zoom");
     ImGui::End();
 }

@@ -232,6 +232,15 @@ void EditorScreen::handleKey(const sf::Event::KeyEvent& key)
         case K::N:
             request(Pending::New);
             break;
+        case K::C:
+            copySelection(false);
+            break;
+        case K::X:
+            copySelection(true);
+            break;
+        case K::V:
+            pasteClipboard();
+            break;
         case K::D:
             m_editor->duplicateSelection();
             break;
@@ -316,6 +325,10 @@ void EditorScreen::handleKey(const sf::Event::KeyEvent& key)
         break;
     case K::T:
         m_tool = Tool::Terrain;
+        m_terrainTemplate = TerrainDef{0.0, 0.0, 4.0, 1.0, 0.0, {}};
+        break;
+    case K::H:
+        chooseHillTool();
         break;
     case K::L:
         m_tool = Tool::Slingshot;
@@ -351,8 +364,10 @@ void EditorScreen::frameUpdate(double frameS)
     refreshScene();
     if (!m_viewFitted)
         fitView();
-    // Surfaces pull an object within 30 pixels (at least 25 cm): what is near on screen is near enough to mean it.
-    m_editor->snapSettings().surfaceReachM = std::max(0.25, 30.0 / m_view.pixelsPerMetre());
+    // Surfaces pull an object within 12 pixels, never more than 10 cm: near enough to mean it, too near to throw a
+    // pig onto the wrong wall.
+    m_editor->snapSettings().surfaceReachM = std::clamp(12.0 / m_view.pixelsPerMetre(), 0.02, 0.1);
+    recheckAfterEdits();
     if (playing())
     {
         m_play->setCamera(m_view.camera(m_app.windowSize()));

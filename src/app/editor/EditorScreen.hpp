@@ -12,6 +12,7 @@
 #include <SFML/Graphics/Rect.hpp>
 #include <abalike/edit/SceneEditor.hpp>
 #include <abalike/game/GameSession.hpp>
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <map>
@@ -89,6 +90,30 @@ private:
     void releaseOnScene(sf::Vector2f pixel);
     ObjectDef toolObject(sf::Vector2f world) const;
     std::optional<ObjectRef> resizeHandleAt(sf::Vector2f pixel) const;
+    /// A corner of the one selected terrain polygon (or the middle of an edge, which adds a corner) under a pixel.
+    struct VertexHandle
+    {
+        std::size_t terrain = 0;
+        std::size_t vertex = 0; ///< the corner, or the edge from this corner to the next
+        bool edgeMiddle = false;
+    };
+    std::optional<VertexHandle> vertexHandleAt(sf::Vector2f pixel) const;
+    std::vector<VertexHandle> vertexHandles() const;
+    sf::Vector2f vertexHandlePosition(const VertexHandle& handle) const; ///< world
+    void pressVertexHandle(const VertexHandle& handle, bool ctrl);
+
+    // EditorGroups.cpp: clipboard, prefabs, the automatic re-check
+    void copySelection(bool cut);
+    void pasteClipboard();
+    /// Where pasted or inserted bodies go: under the pointer when it is on the scene, else the view's centre on the
+    /// ground.
+    std::array<double, 2> insertionPoint() const;
+    void insertPrefab(const std::filesystem::path& file);
+    void saveSelectionAsPrefab();
+    void prefabMenu();
+    void recheckAfterEdits();
+    /// The terrain tool with a polygon hill (six corners; its corners then edited on the scene).
+    void chooseHillTool();
 
     // EditorDrawing.cpp: grid, selection, findings, the placement ghost
     void drawOverlay(sf::RenderTarget& target);
@@ -101,6 +126,8 @@ private:
     void palettePanel();
     void inspectorPanel();
     void selectionTab();
+    /// A multi-selection's common block fields (material, size, angle), edited for all at once.
+    void multiSelectionFields(const std::vector<ObjectRef>& selection);
     void environmentTab();
     void birdTab();
     void birdListAndSlingshot(LevelDef& next);
@@ -155,10 +182,12 @@ private:
     std::optional<sf::Vector2f> m_dragFrom; ///< where a drag of the selection started (world)
     std::optional<sf::Vector2f> m_bandFrom; ///< a selection rectangle's first corner (world)
     bool m_bandAdds = false;
-    std::optional<sf::Vector2f> m_panFrom; ///< panning with the right or middle button (pixels)
-    std::optional<ObjectRef> m_resizing;   ///< a block or terrain piece being resized by its handle
-    bool m_focusScene = false;             ///< take keyboard focus from the panels at the next frame
-    bool m_fieldReleased = false;          ///< an object field was let go this frame: its edit is complete
+    std::optional<sf::Vector2f> m_panFrom;     ///< panning with the right or middle button (pixels)
+    std::optional<ObjectRef> m_resizing;       ///< a block or terrain piece being resized by its handle
+    std::optional<VertexHandle> m_vertexDrag;  ///< a terrain polygon's corner being dragged
+    std::uint64_t m_recheckedRevision = ~0ull; ///< the revision the automatic re-check last ran on
+    bool m_focusScene = false;                 ///< take keyboard focus from the panels at the next frame
+    bool m_fieldReleased = false;              ///< an object field was let go this frame: its edit is complete
 
     std::vector<sf::FloatRect> m_panels; ///< where the panels were drawn in the last frame (window pixels)
     bool m_modalOpen = false;

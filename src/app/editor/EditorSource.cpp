@@ -1,5 +1,7 @@
 #include "editor/EditorSource.hpp"
 
+#include <algorithm>
+
 #include "editor/EditorScreen.hpp"
 #include "screens/App.hpp"
 
@@ -14,6 +16,18 @@ EditorSource sandboxSource()
     EditorSource source;
     source.level = emptyScene();
     return source;
+}
+
+/// Level files in a folder, sorted, for the open and save dialogs.
+std::vector<std::filesystem::path> levelFilesIn(const std::filesystem::path& folder)
+{
+    std::vector<std::filesystem::path> files;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
+        if (entry.path().extension() == ".json" && entry.path().filename() != "campaign.json")
+            files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
 }
 
 EditorSource editorSourceFor(const std::filesystem::path& path)

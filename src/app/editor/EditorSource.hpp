@@ -25,6 +25,9 @@ EditorSource sandboxSource();
 /// A level file to edit. A path that does not exist yet gives an empty scene that saves there; a file that cannot
 /// be read or whose JSON or format is invalid throws LevelLoadError (every problem, as `check` prints them); a
 /// level with geometry problems opens with them listed.
+/// Level files in a folder (campaign manifests left out), sorted: the open and save dialogs' lists, the prefabs.
+std::vector<std::filesystem::path> levelFilesIn(const std::filesystem::path& folder);
+
 EditorSource editorSourceFor(const std::filesystem::path& path);
 
 /// Opens the editor over the screens already there (title menu's Sandbox, level select's Edit).

@@ -188,6 +188,9 @@ std::vector<std::array<double, 2>> SceneEditor::outlineOf(const ObjectDef& def) 
                 {s->x + kSlingshotPickHalfWidthM, top},
                 {s->x - kSlingshotPickHalfWidthM, top}};
     }
+    // A terrain polygon is drawn as its own corners, not the convex hull that picks and snaps it.
+    if (const auto* t = std::get_if<TerrainDef>(&def); t != nullptr && t->isPolygon())
+        return t->points;
     return objectShape(def, levelCatalog(m_level, m_catalog));
 }
 
