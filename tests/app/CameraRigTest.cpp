@@ -60,15 +60,79 @@ TEST(CameraFit, EveryCampaignLevelStartsWithTheSlingshotAndEveryBodyInViewInEver
                         1e-3f);
             const auto launch = session.launchPoint();
             EXPECT_TRUE(inside(visible, {static_cast<float>(launch[0]), static_cast<float>(launch[1])}, 1.0f));
+            // The smallest pig is drawn at least kMinPigPx tall while aiming.
+            const CameraFocus focus = cameraFocusOf(session);
+            EXPECT_GE(rig.view().pixelsPerMetre * focus.smallestPigM, kMinPigPx - 1e-3f);
+            // Every body is in view, or (a level wider than that) the opening pan sweeps from a view that shows
+            // the level's far end to this one, so every body is shown on the way.
+            sf::FloatRect swept = visible;
+            if (rig.homeLeavesLevelOut(focus))
+            {
+                CameraRig opening;
+                opening.reset(focus, window);
+                ASSERT_TRUE(opening.startOpening(focus));
+                const sf::FloatRect first = opening.camera().visibleWorld();
+                EXPECT_NEAR(first.top, visible.top, 1e-3f);
+                swept.width = first.left + first.width - visible.left;
+            }
             for (const Entity& entity : session.world().entities())
             {
                 if (entity.body != nullptr && (entity.kind == EntityKind::Block || entity.kind == EntityKind::Pig))
                 {
-                    EXPECT_TRUE(inside(visible, positionOf(entity)))
-                        << entity.typeName << " at " << positionOf(entity).x;
+                    EXPECT_TRUE(inside(swept, positionOf(entity))) << entity.typeName << " at " << positionOf(entity).x;
                 }
             }
         }
+}
+
+TEST(CameraFit, AWideLevelOpensWithAPanFromItsFarEndToTheSlingshotThatAnyInputOrALaunchEnds)
+{
+    // A small pig 120 m out: the whole level would draw it 6 px tall in 1280 x 720.
+    LevelDef level;
+    level.id = "wide";
+    level.title = "Wide";
+    level.birds = {"red"};
+    level.pigs.push_back({"small", 120.0, 0.25});
+    const sf::Vector2u window{1280, 720};
+    GameSession session(level);
+    const CameraFocus focus = cameraFocusOf(session);
+    CameraRig rig;
+    rig.reset(focus, window);
+    ASSERT_TRUE(rig.homeLeavesLevelOut(focus));
+    const CameraView home = rig.homeView(focus);
+    EXPECT_NEAR(home.pixelsPerMetre * 0.5f, kMinPigPx, 1e-3f); // the pig just 12 px tall
+    ASSERT_TRUE(rig.startOpening(focus));
+    EXPECT_EQ(rig.mode(), CameraRig::Mode::Opening);
+    EXPECT_TRUE(inside(rig.camera().visibleWorld(), {120.0f, 0.25f})); // it starts at the pig
+    const float startX = rig.view().centreM.x;
+    rig.update(focus, 1.25); // half way in time, half way in distance (the easing is symmetric)
+    EXPECT_NEAR(rig.view().centreM.x, 0.5f * (startX + home.centreM.x), 0.01f);
+    for (int i = 0; i < 80; ++i)
+        rig.update(focus, 1.0 / 60.0);
+    EXPECT_EQ(rig.mode(), CameraRig::Mode::Home);
+    EXPECT_NEAR(rig.view().centreM.x, home.centreM.x, 1e-3f);
+    EXPECT_TRUE(inside(rig.camera().visibleWorld(), {0.0f, 1.5f}, 1.0f)); // the slingshot
+
+    // Any input: home at the next frame.
+    ASSERT_TRUE(rig.startOpening(focus));
+    rig.update(focus, 0.1);
+    rig.skipOpening();
+    rig.update(focus, 1.0 / 60.0);
+    EXPECT_EQ(rig.mode(), CameraRig::Mode::Home);
+    EXPECT_NEAR(rig.view().centreM.x, home.centreM.x, 1e-3f);
+
+    // A launch: the camera follows the bird at once.
+    ASSERT_TRUE(rig.startOpening(focus));
+    session.launch(30.0, 20.0);
+    session.step();
+    rig.update(cameraFocusOf(session), 1.0 / 60.0);
+    EXPECT_EQ(rig.mode(), CameraRig::Mode::Follow);
+
+    // A level that fits has no opening pan.
+    GameSession small(campaign().levels.front().level);
+    CameraRig fits;
+    fits.reset(cameraFocusOf(small), window);
+    EXPECT_FALSE(fits.startOpening(cameraFocusOf(small)));
 }
 
 /// The live pigs within kActionReachM of a moving block or pig: after an impact they must be in the window.
@@ -302,11 +366,16 @@ TEST(CameraFit, AResizeKeepsTheLevelInViewWithoutStretching)
             const sf::FloatRect visible = rig.camera().visibleWorld();
             EXPECT_NEAR(visible.width / visible.height, static_cast<float>(window.x) / static_cast<float>(window.y),
                         1e-3f);
-            const WorldBox home = cameraFocusOf(session).home;
+            const CameraFocus focus = cameraFocusOf(session);
+            const WorldBox home = focus.home;
             EXPECT_TRUE(inside(visible, {home.left + 0.5f, home.bottom + 0.1f}))
                 << entry.level.id << " " << window.x << "x" << window.y;
-            EXPECT_TRUE(inside(visible, {home.right - 0.5f, home.top - 0.5f}))
-                << entry.level.id << " " << window.x << "x" << window.y;
+            // The whole level, or (wider than the smallest pig drawn 12 px tall allows) the slingshot's end of it.
+            if (rig.homeLeavesLevelOut(focus))
+                EXPECT_GE(rig.view().pixelsPerMetre * focus.smallestPigM, kMinPigPx - 1e-3f) << entry.level.id;
+            else
+                EXPECT_TRUE(inside(visible, {home.right - 0.5f, home.top - 0.5f}))
+                    << entry.level.id << " " << window.x << "x" << window.y;
         }
     }
 }

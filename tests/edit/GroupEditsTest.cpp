@@ -182,5 +182,22 @@ TEST(SceneEditorVertices, MovesAddsAndRemovesCornersAndRefusesACrossing)
     EXPECT_EQ(editor.level().terrain, level.terrain);
 }
 
+TEST(SceneEditorVertices, AConcaveHillIsPickedByItsOwnOutlineNotItsHull)
+{
+    LevelDef level = emptyScene();
+    TerrainDef valley;
+    valley.points = {{20.0, 0.0}, {30.0, 0.0}, {30.0, 4.0}, {25.0, 1.0}, {20.0, 4.0}}; // a V-shaped dip
+    valley.x = 25.0;
+    valley.y = 2.0;
+    valley.widthM = 10.0;
+    valley.heightM = 4.0;
+    level.terrain.push_back(valley);
+    SceneEditor editor(level);
+    EXPECT_EQ(editor.objectAt(21.0, 3.0), (ObjectRef{ObjectKind::Terrain, 0}));
+    EXPECT_EQ(editor.objectAt(25.0, 0.5), (ObjectRef{ObjectKind::Terrain, 0}));
+    EXPECT_EQ(editor.objectAt(25.0, 3.0), std::nullopt);            // in the dip: inside the hull, outside the hill
+    EXPECT_EQ(editor.outline({ObjectKind::Terrain, 0}).size(), 5u); // drawn by its own five corners
+}
+
 } // namespace
 } // namespace abalike

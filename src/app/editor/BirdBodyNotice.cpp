@@ -2,6 +2,7 @@
 
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
+#include "render/ScreenRegions.hpp"
 #include "screens/App.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
@@ -45,6 +46,7 @@ void BirdBodyNotice::drawScreen(sf::RenderTarget& target, PlayView& view)
     const float top = 96.0f * scale; // under the HUD's aim readout
     sf::RectangleShape box({width + 2.0f * pad, lineHeight * static_cast<float>(lines.size()) + 2.0f * pad});
     box.setPosition(left, top);
+    recordScreenRegion("bird body notice", {{left, top}, box.getSize()});
     box.setFillColor(palette::kPanel);
     box.setOutlineColor(palette::kStar);
     box.setOutlineThickness(1.5f * scale);

@@ -201,7 +201,20 @@ void EditorScreen::handleSceneMouse(const sf::Event& event)
         m_focusScene = true; // the keys belong to the scene again
     if (playing())
     {
-        m_play->handleEvent(event);
+        // The play test is drawn in the scene area: its input is in that area's pixels.
+        const sf::FloatRect area = sceneArea();
+        sf::Event local = event;
+        if (event.type == sf::Event::MouseMoved)
+        {
+            local.mouseMove.x -= static_cast<int>(area.left);
+            local.mouseMove.y -= static_cast<int>(area.top);
+        }
+        else if (event.type == sf::Event::MouseButtonPressed || event.type == sf::Event::MouseButtonReleased)
+        {
+            local.mouseButton.x -= static_cast<int>(area.left);
+            local.mouseButton.y -= static_cast<int>(area.top);
+        }
+        m_play->handleEvent(local);
         return;
     }
     if (event.type == sf::Event::MouseButtonPressed && event.mouseButton.button == sf::Mouse::Left)

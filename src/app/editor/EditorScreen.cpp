@@ -4,8 +4,10 @@
 #include "render/Palette.hpp"
 #include "screens/App.hpp"
 
+#include <SFML/Graphics/Sprite.hpp>
 #include <abalike/edit/Autosave.hpp>
 #include <abalike/save/DataDirectory.hpp>
+#include <box2d/box2d.h>
 #include <imgui.h>
 #include <imgui_internal.h>
 #include <iostream>
@@ -115,11 +117,43 @@ void EditorScreen::startPlay()
     if (playing())
         return;
     m_editor->endDrag();
-    m_play = std::make_unique<ScenePlay>(m_app, m_editor->level(), m_view.camera(m_app.windowSize()));
+    m_play = std::make_unique<ScenePlay>(m_app, m_editor->level(), playCamera());
     m_play->aimAt(m_playAngleDeg, std::min(m_playSpeedMps, m_play->maxSpeedMps()));
     m_app.trace().write("editor-play", {{"level", m_editor->level().id}});
     m_message = "Drag the bird back, or set the angle and speed here and Fire. Esc returns to the scene as it was.";
     m_messageIsError = false;
+}
+
+Camera EditorScreen::playCamera() const
+{
+    const sf::FloatRect area = sceneArea();
+    return Camera::fromView(m_view.toWorld({area.left, area.top}), m_view.pixelsPerMetre(),
+                            {static_cast<unsigned>(area.width), static_cast<unsigned>(area.height)});
+}
+
+void EditorScreen::followBirdInPlay()
+{
+    const GameSession& session = m_play->session();
+    const Entity* bird = session.world().bird();
+    if (bird == nullptr || bird->body == nullptr || session.phase() == Phase::Aiming)
+        return;
+    // Pan when the bird comes within 60 px of the play area's edge, so that it stays at least that far in.
+    const Camera camera = playCamera();
+    const b2Vec2 position = bird->body->GetPosition();
+    const sf::Vector2f at = camera.toScreen({position.x, position.y});
+    const sf::Vector2f size(camera.windowSize());
+    const float margin = std::min(60.0f * m_app.uiScale(), 0.25f * std::min(size.x, size.y));
+    sf::Vector2f shift(0.0f, 0.0f);
+    if (at.x > size.x - margin)
+        shift.x = size.x - margin - at.x;
+    else if (at.x < margin)
+        shift.x = margin - at.x;
+    if (at.y < margin)
+        shift.y = margin - at.y;
+    else if (at.y > size.y - margin)
+        shift.y = size.y - margin - at.y;
+    if (shift.x != 0.0f || shift.y != 0.0f)
+        m_view.pan(shift);
 }
 
 void EditorScreen::stopPlay()
@@ -370,7 +404,8 @@ void EditorScreen::frameUpdate(double frameS)
     recheckAfterEdits();
     if (playing())
     {
-        m_play->setCamera(m_view.camera(m_app.windowSize()));
+        followBirdInPlay();
+        m_play->setCamera(playCamera());
         m_play->frameUpdate(frameS);
     }
     m_imgui.newFrame(frameS);
@@ -386,7 +421,19 @@ void EditorScreen::onResize(sf::Vector2u size)
 void EditorScreen::draw(sf::RenderTarget& target)
 {
     if (playing())
-        m_play->draw(target);
+    {
+        // The play test fills the free part of the window exactly; the panels sit beside it, not over it.
+        const sf::FloatRect area = sceneArea();
+        const sf::Vector2u size(static_cast<unsigned>(area.width), static_cast<unsigned>(area.height));
+        if (m_playTexture.getSize() != size)
+            (void)m_playTexture.create(size.x, size.y);
+        m_playTexture.clear();
+        m_play->draw(m_playTexture);
+        m_playTexture.display();
+        sf::Sprite sprite(m_playTexture.getTexture());
+        sprite.setPosition(area.left, area.top);
+        target.draw(sprite);
+    }
     else if (m_scene)
     {
         const Camera camera = m_view.camera(target.getSize());

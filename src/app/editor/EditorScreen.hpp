@@ -10,6 +10,7 @@
 #include "screens/Screen.hpp"
 
 #include <SFML/Graphics/Rect.hpp>
+#include <SFML/Graphics/RenderTexture.hpp>
 #include <abalike/edit/SceneEditor.hpp>
 #include <abalike/game/GameSession.hpp>
 #include <array>
@@ -74,6 +75,11 @@ private:
 
     // EditorScreen.cpp: frame, modes, events
     void startPlay();
+    /// The play test's camera: the editor's view, over the part of the window the panels leave free (the play is
+    /// drawn there, so no panel covers the bird, the HUD or a teaching panel).
+    Camera playCamera() const;
+    /// Keeps the bird in flight inside the play area by panning the view after it.
+    void followBirdInPlay();
     void stopPlay();
     bool playing() const { return m_play != nullptr; }
     void handleKey(const sf::Event::KeyEvent& key);
@@ -163,6 +169,7 @@ private:
     EditorView m_view;
     EditorChecks m_checks;
     std::unique_ptr<ScenePlay> m_play;
+    sf::RenderTexture m_playTexture; ///< the play test is drawn here, then into the free part of the window
 
     // The scene as the game would build it, for drawing; rebuilt when the scene changes.
     std::unique_ptr<GameSession> m_scene;

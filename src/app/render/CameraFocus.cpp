@@ -30,6 +30,12 @@ CameraFocus cameraFocusOf(const GameSession& session)
     CameraFocus focus;
     focus.home = levelHomeBox(session.level(), session.catalog());
     focus.groundY = static_cast<float>(session.level().groundY);
+    for (const PigDef& pig : session.level().pigs)
+        if (const PigType* type = session.catalog().findPig(pig.type))
+        {
+            const auto diameter = static_cast<float>(2.0 * type->radiusM);
+            focus.smallestPigM = focus.smallestPigM > 0.0f ? std::min(focus.smallestPigM, diameter) : diameter;
+        }
     focus.shotUnderWay = session.phase() == Phase::Flying;
     if (!focus.shotUnderWay)
         return focus;

@@ -28,7 +28,14 @@ struct CameraFocus
     std::vector<WorldBox> action;                    ///< the moving bodies and the pigs near them
     std::vector<WorldBox> actionPigs;                ///< of those, the live pigs: they must stay inside the window
     float topReserved = camera_limits::kTopReserved; ///< the window's top fraction panels cover
+    /// The smallest pig of the level as designed (its diameter): the view while aiming never draws it under
+    /// kMinPigPx, showing the slingshot and as much of the level as fits instead of all of it.
+    float smallestPigM = 0.0f;
 };
+
+/// While aiming, a small pig is drawn at least this tall: wider levels show the slingshot's end of the level and
+/// open with a pan over the rest.
+inline constexpr float kMinPigPx = 12.0f;
 
 /// A pig this near a moving body may be hit by it: the camera keeps it in view after an impact.
 inline constexpr float kActionReachM = 15.0f;

@@ -48,20 +48,20 @@ CameraView CameraRig::target(const CameraFocus& focus) const
 {
     if (m_mode == Mode::Manual)
         return m_view;
-    if (m_mode == Mode::Home)
-        return fitBox(focus.home, focus.groundY, m_window, focus.topReserved);
+    if (m_mode == Mode::Home || m_mode == Mode::Opening)
+        return homeView(focus);
     if (focus.afterImpact)
     {
         // Frame the action; when nothing moves any more, the level as designed.
         if (focus.action.empty())
-            return fitBox(focus.home, focus.groundY, m_window, focus.topReserved);
+            return homeView(focus);
         WorldBox action = focus.action.front();
         for (const WorldBox& box : focus.action)
             action = action.united(box);
         return fitBox(action.expanded(kStructureMarginM), focus.groundY, m_window, focus.topReserved);
     }
     if (focus.birds.empty() && !focus.structure)
-        return fitBox(focus.home, focus.groundY, m_window, focus.topReserved);
+        return homeView(focus);
 
     std::optional<WorldBox> box = focus.structure;
     if (box)
@@ -94,11 +94,25 @@ void CameraRig::update(const CameraFocus& focus, double frameS)
     m_home = focus.home;
     m_groundY = focus.groundY;
     if (focus.shotUnderWay && !m_shotUnderWay)
-        m_mode = Mode::Follow; // launch: follow, whatever the player had panned to
+        m_mode = Mode::Follow; // launch: follow, whatever the player had panned to (or the opening pan showed)
     else if (!focus.shotUnderWay && m_shotUnderWay)
         m_mode = Mode::Home; // the world settled: back to the level
     m_shotUnderWay = focus.shotUnderWay;
 
+    if (m_mode == Mode::Opening)
+    {
+        // From the far end to the slingshot, easing in and out; a launch takes over at once (above).
+        m_openingS += std::max(frameS, 0.0);
+        const auto t = static_cast<float>(std::min(m_openingS / kOpeningS, 1.0));
+        const float s = t * t * (3.0f - 2.0f * t);
+        const CameraView home = homeView(focus);
+        m_view.centreM = m_openingFrom.centreM + (home.centreM - m_openingFrom.centreM) * s;
+        m_view.pixelsPerMetre = home.pixelsPerMetre;
+        if (t >= 1.0f)
+            m_mode = Mode::Home;
+        rebuild();
+        return;
+    }
     const CameraView goal = target(focus);
     if (m_snap)
         m_view = goal;
@@ -196,6 +210,53 @@ void CameraRig::clampManual()
 void CameraRig::recentre()
 {
     m_mode = m_shotUnderWay ? Mode::Follow : Mode::Home;
+}
+
+CameraView CameraRig::homeView(const CameraFocus& focus) const
+{
+    const CameraView whole = fitBox(focus.home, focus.groundY, m_window, focus.topReserved);
+    if (!homeLeavesLevelOut(focus))
+        return whole;
+    // The scale that draws the smallest pig kMinPigPx tall, the slingshot's end of the level at the left edge, the
+    // ground where fitBox keeps it.
+    const float ppm = std::min(kMinPigPx / focus.smallestPigM, camera_limits::kMaxPixelsPerMetre);
+    const sf::Vector2f window(static_cast<float>(std::max(m_window.x, 1u)),
+                              static_cast<float>(std::max(m_window.y, 1u)));
+    const float visibleWidth = window.x / ppm;
+    const float visibleHeight = window.y / ppm;
+    const float base = std::min(focus.home.bottom, focus.groundY);
+    return {{focus.home.left + 0.5f * visibleWidth, base + (0.5f - camera_limits::kGroundFromBottom) * visibleHeight},
+            ppm};
+}
+
+bool CameraRig::homeLeavesLevelOut(const CameraFocus& focus) const
+{
+    if (focus.smallestPigM <= 0.0f)
+        return false;
+    const CameraView whole = fitBox(focus.home, focus.groundY, m_window, focus.topReserved);
+    return whole.pixelsPerMetre * focus.smallestPigM < kMinPigPx;
+}
+
+bool CameraRig::startOpening(const CameraFocus& focus)
+{
+    if (focus.shotUnderWay || !homeLeavesLevelOut(focus))
+        return false;
+    const CameraView home = homeView(focus);
+    const float halfWidth = 0.5f * static_cast<float>(std::max(m_window.x, 1u)) / home.pixelsPerMetre;
+    m_openingFrom = {{std::max(home.centreM.x, focus.home.right - halfWidth), home.centreM.y}, home.pixelsPerMetre};
+    m_openingS = 0.0;
+    m_mode = Mode::Opening;
+    m_view = m_openingFrom;
+    rebuild();
+    return true;
+}
+
+void CameraRig::skipOpening()
+{
+    if (m_mode != Mode::Opening)
+        return;
+    m_mode = Mode::Home;
+    m_snap = true;
 }
 
 void CameraRig::rebuild()

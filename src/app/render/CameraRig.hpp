@@ -17,9 +17,10 @@ class CameraRig
 public:
     enum class Mode
     {
-        Home,   ///< the level's home view (slingshot and every body)
-        Follow, ///< a shot is under way: bird and structure
-        Manual, ///< the player panned or zoomed; kept until the next launch, the world settling, or recentre()
+        Home,    ///< the level's home view (slingshot and every body)
+        Follow,  ///< a shot is under way: bird and structure
+        Manual,  ///< the player panned or zoomed; kept until the next launch, the world settling, or recentre()
+        Opening, ///< a level wider than the home view shows: a pan from its far end to the slingshot
     };
 
     /// Snaps to the level's home view in a window of this size.
@@ -35,6 +36,16 @@ public:
     void zoomAt(float factor, sf::Vector2f pixel);
     /// Back to automatic: home, or following if a shot is under way.
     void recentre();
+    /// On a level wider than its home view (see homeView), pans from the far end of the level to the slingshot over
+    /// kOpeningS; any input ends it (skipOpening), and so does a launch. Returns whether it started.
+    bool startOpening(const CameraFocus& focus);
+    /// Ends the opening pan at the home view at once.
+    void skipOpening();
+    /// The view while aiming: the whole level when its smallest pig is then drawn at least kMinPigPx tall, else the
+    /// slingshot's end of the level at the scale that draws it so.
+    CameraView homeView(const CameraFocus& focus) const;
+    /// True when the home view leaves part of the level out (and the level opens with a pan).
+    bool homeLeavesLevelOut(const CameraFocus& focus) const;
     /// The camera to draw with this frame. (A shake is FxLayer's: it moves the picture, not the camera.)
     const Camera& camera() const { return m_camera; }
     /// Where the rig looks.
@@ -44,6 +55,8 @@ public:
     /// Seconds for the view to cover about 63 % of the way to its target.
     static constexpr double kFollowTimeS = 0.3;
     static constexpr double kReturnTimeS = 0.45;
+    /// The opening pan's length.
+    static constexpr double kOpeningS = 2.5;
 
 private:
     /// Where the automatic camera wants to be now.
@@ -61,7 +74,9 @@ private:
     float m_groundY = 0.0f;
     Mode m_mode = Mode::Home;
     bool m_shotUnderWay = false;
-    bool m_snap = true; ///< jump to the next target instead of easing (new level, resize in home view)
+    bool m_snap = true;      ///< jump to the next target instead of easing (new level, resize in home view)
+    double m_openingS = 0.0; ///< time into the opening pan
+    CameraView m_openingFrom;
 };
 
 } // namespace abalike::app

@@ -4,6 +4,7 @@
 
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
+#include "render/ScreenRegions.hpp"
 #include "render/TextFormat.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
@@ -20,8 +21,9 @@ unsigned scaled(float scale, float size)
     return static_cast<unsigned>(std::max(9.0f, std::round(size * scale)));
 }
 
-void panel(sf::RenderTarget& target, sf::FloatRect rect)
+void panel(sf::RenderTarget& target, sf::FloatRect rect, std::string_view name)
 {
+    recordScreenRegion(name, rect);
     sf::RectangleShape box({rect.width, rect.height});
     box.setPosition(rect.left, rect.top);
     box.setFillColor(palette::kPanel);
@@ -109,7 +111,7 @@ sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float
     const float lines = time.isEmpty() ? 2.0f : 3.0f;
     const float height = titleHeight + lines * lineHeight + 2.0f * pad;
     const sf::FloatRect rect(margin, margin, width + 2.0f * pad, height);
-    panel(target, rect);
+    panel(target, rect, "status");
 
     sf::Vector2f at(margin + pad, margin + pad);
     drawLabel(target, *m_font, title, at, titleSize, palette::kText);
@@ -146,7 +148,7 @@ float Hud::drawEnvironment(sf::RenderTarget& target, float top, float scale, con
     const float pad = 7.0f * scale;
     const float width = measureText(*m_font, label, textSize).x;
     const float height = m_font->getLineSpacing(textSize) + 2.0f * pad;
-    panel(target, {margin, top, width + 2.0f * pad, height});
+    panel(target, {margin, top, width + 2.0f * pad, height}, "environment");
     drawLabel(target, *m_font, label, {margin + pad, top + pad}, textSize, palette::kTextDim);
     return top + height;
 }
@@ -166,7 +168,7 @@ void Hud::drawAim(sf::RenderTarget& target, sf::Vector2u size, float scale, cons
     const float x = slot ? *slot : 12.0f * scale;
     const float top = slot ? 12.0f * scale : below;
     const float centre = x + 0.5f * width;
-    panel(target, {x, top, width, mainHeight + m_font->getLineSpacing(lessonSize) + 2.0f * pad});
+    panel(target, {x, top, width, mainHeight + m_font->getLineSpacing(lessonSize) + 2.0f * pad}, "aim readout");
     drawLabel(target, *m_font, main, {centre, top + pad}, mainSize, palette::kText, Align::Centre);
     drawLabel(target, *m_font, lesson, {centre, top + pad + mainHeight}, lessonSize, palette::kTextDim, Align::Centre);
 }
@@ -184,7 +186,7 @@ void Hud::drawAbilityPrompt(sf::RenderTarget& target, sf::Vector2u size, float s
     const float x = slot ? *slot : 12.0f * scale;
     const float top = slot ? 12.0f * scale : below;
     const float centre = x + 0.5f * width;
-    panel(target, {x, top, width, m_font->getLineSpacing(textSize) + 2.0f * pad});
+    panel(target, {x, top, width, m_font->getLineSpacing(textSize) + 2.0f * pad}, "ability prompt");
     drawLabel(target, *m_font, text, {centre, top + pad}, textSize, palette::kStar, Align::Centre);
 }
 
@@ -196,23 +198,26 @@ void Hud::drawHint(sf::RenderTarget& target, sf::Vector2u size, float scale, con
     const float maxWidth = static_cast<float>(size.x) - 24.0f * scale;
     float bottom = static_cast<float>(size.y) - 8.0f * scale;
     // Bottom up: the keys, then the level's hint, each wrapped to the window at large text sizes.
-    const auto block = [&](const std::string& text, unsigned textSize, sf::Color colour)
+    const auto block = [&](const std::string& text, unsigned textSize, sf::Color colour, std::string_view name)
     {
         const std::vector<std::string> lines = wrapText(*m_font, text, textSize, maxWidth);
         const float lineHeight = m_font->getLineSpacing(textSize);
         bottom -= lineHeight * static_cast<float>(lines.size());
         float y = bottom;
+        float widest = 0.0f;
         for (const std::string& line : lines)
         {
-            drawLabel(target, *m_font, utf8(line), {centre, y}, textSize, colour, Align::Centre);
+            widest = std::max(
+                widest, drawLabel(target, *m_font, utf8(line), {centre, y}, textSize, colour, Align::Centre).width);
             y += lineHeight;
         }
+        recordScreenRegion(name, {centre - 0.5f * widest, bottom, widest, y - bottom});
     };
     block("Mouse: drag the bird back   \u00B7   Keys: \u2191\u2193 angle, \u2190\u2192 power, Space launch   \u00B7   "
           "R restart   \u00B7   Esc pause   \u00B7   F1 help",
-          keysSize, palette::kTextDim);
+          keysSize, palette::kTextDim, "keys");
     if (!level.hints.empty())
-        block(filledHint(level), hintSize, palette::kText);
+        block(filledHint(level), hintSize, palette::kText, "hint");
 }
 
 const std::string& Hud::filledHint(const LevelDef& level) const

@@ -1,6 +1,7 @@
 #include "render/OverlayRenderer.hpp"
 
 #include "render/LabelPlacement.hpp"
+#include "render/ScreenRegions.hpp"
 
 #include "render/Hud.hpp"
 #include "render/Label.hpp"
@@ -176,6 +177,7 @@ void OverlayRenderer::drawShotMarkers(sf::RenderTarget& target, const Camera& ca
 
     sf::RectangleShape box({extent.x + 2.0f * pad, extent.y + 2.0f * pad});
     box.setPosition(at);
+    recordScreenRegion("predicted vs actual", {at, box.getSize()});
     box.setFillColor(faded(palette::kPanel, opacity));
     box.setOutlineColor(faded(palette::kActualPath, opacity));
     box.setOutlineThickness(1.5f);

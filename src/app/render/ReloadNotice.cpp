@@ -3,6 +3,7 @@
 #include "render/Hud.hpp"
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
+#include "render/ScreenRegions.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <algorithm>
@@ -35,6 +36,7 @@ void ReloadNotice::draw(sf::RenderTarget& target, sf::Vector2u size, const std::
 
     sf::RectangleShape box({static_cast<float>(size.x) - 2 * pad, height});
     box.setPosition(pad, top);
+    recordScreenRegion("reload banner", {{pad, top}, box.getSize()});
     box.setFillColor(kNoticePanel);
     target.draw(box);
 

@@ -3,6 +3,7 @@
 #include "render/Hud.hpp"
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
+#include "render/ScreenRegions.hpp"
 #include "render/Screenshot.hpp"
 #include "screens/HelpScreen.hpp"
 #include "screens/PlayScreen.hpp"
@@ -170,10 +171,21 @@ int App::run()
         // The last frame as the screens are after its changes: what the player would see next. The trace lists
         // its texts, so a scripted run can check what a screen says.
         std::vector<std::string> texts;
+        std::vector<ScreenRegion> regions;
         setDrawnTextSink(&texts);
+        setScreenRegionSink(&regions);
         drawFrame();
         setDrawnTextSink(nullptr);
+        setScreenRegionSink(nullptr);
         m_trace.write("texts", {{"shown", texts}});
+        nlohmann::json panels = nlohmann::json::array();
+        for (const ScreenRegion& region : regions)
+            panels.push_back({{"name", region.name},
+                              {"x", region.rect.left},
+                              {"y", region.rect.top},
+                              {"w", region.rect.width},
+                              {"h", region.rect.height}});
+        m_trace.write("panels", {{"drawn", panels}, {"window", {windowSize().x, windowSize().y}}});
         if (!m_options.screenshotPath.empty() && !saveScreenshot(m_window, m_options.screenshotPath))
             exitCode = exitCode == 0 ? 2 : exitCode;
     }
@@ -307,6 +319,7 @@ void App::drawNotices()
         const float width = measureText(*m_font, text, size).x + 2.0f * pad;
         sf::RectangleShape box({width, lineHeight + pad});
         box.setPosition(centre - 0.5f * width, y - 0.5f * pad);
+        recordScreenRegion("notice", {box.getPosition(), box.getSize()});
         box.setFillColor(palette::kPanel);
         m_window.draw(box);
         drawLabel(m_window, *m_font, text, {centre, y}, size, palette::kText, Align::Centre);

@@ -34,17 +34,20 @@ PlayScreen::PlayScreen(App& app, PlaySource source)
     // ability. (The editor's play mode has its own panels instead.)
     m_layers.push_back(std::make_unique<PlayToolbar>());
     findRestProblems();
-    startSession();
+    startSession(true);
     if (!m_source.path.empty())
         m_watcher.emplace(m_source.path, Catalog::builtin());
 }
 
 PlayScreen::~PlayScreen() = default;
 
-void PlayScreen::startSession()
+void PlayScreen::startSession(bool withOpening)
 {
     m_session = std::make_unique<GameSession>(m_source.level, Catalog::builtin());
     m_rig.reset(cameraFocus(), m_app.windowSize());
+    // A level wider than the aiming view opens with a pan over it to the slingshot (restarts do not).
+    if (withOpening && m_rig.startOpening(cameraFocus()))
+        m_app.trace().write("camera-opening", {{"seconds", CameraRig::kOpeningS}});
     m_finishHandled = false;
     m_destroyedTraced = 0;
     m_frozen = false;
@@ -127,11 +130,15 @@ void PlayScreen::pollLevelFile()
     }
     m_source.level = std::move(*reload->level);
     findRestProblems();
-    startSession();
+    startSession(false); // a designer's save reloads in place, without the opening pan
 }
 
 void PlayScreen::handleEvent(const sf::Event& event)
 {
+    // Any key, button or wheel ends the opening pan, and still does what it does.
+    if (event.type == sf::Event::KeyPressed || event.type == sf::Event::MouseButtonPressed ||
+        event.type == sf::Event::MouseWheelScrolled)
+        m_rig.skipOpening();
     for (auto it = m_layers.rbegin(); it != m_layers.rend(); ++it)
         if ((*it)->handleEvent(event, *this))
             return;

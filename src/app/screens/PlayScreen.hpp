@@ -86,7 +86,8 @@ private:
         bool operator==(const PreviewKey&) const = default;
     };
 
-    void startSession();
+    /// A new session of the level; withOpening: a level wider than the aiming view opens with the camera's pan.
+    void startSession(bool withOpening);
     /// What the camera should keep in view now, below the panels on screen.
     CameraFocus cameraFocus() const;
     static constexpr float kTeachingTopReserved = 0.4f;

@@ -2,6 +2,7 @@
 
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
+#include "render/ScreenRegions.hpp"
 #include "screens/App.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
@@ -145,6 +146,7 @@ void PlayToolbar::drawScreen(sf::RenderTarget& target, PlayView& view)
     for (std::size_t i = 0; i < rects.size(); ++i)
     {
         const sf::FloatRect& rect = rects[i];
+        recordScreenRegion("toolbar", rect);
         const bool lit = m_hover == i || m_pressed == i;
         sf::RectangleShape box({rect.width, rect.height});
         box.setPosition(rect.left, rect.top);
@@ -179,6 +181,7 @@ void PlayToolbar::drawScreen(sf::RenderTarget& target, PlayView& view)
         const float right = rects.back().left + rects.back().width;
         const sf::FloatRect panel(right - extent.x - 2.0f * pad, bottomPx(scale) + pad, extent.x + 2.0f * pad,
                                   font->getLineSpacing(tipSize) + pad);
+        recordScreenRegion("toolbar tip", panel);
         drawRect(target, panel, palette::kPanel);
         drawLabel(target, *font, tip, {panel.left + pad, panel.top + 0.5f * pad}, tipSize, palette::kText);
     }

@@ -59,7 +59,7 @@ sf::FloatRect BandGraph::draw(sf::RenderTarget& target, const sf::Font& font, sf
     const GraphMetrics m = metricsFor(font, titleSize, rowSize, scale);
     const sf::Vector2f size = measure(font, titleSize, rowSize, scale);
     const sf::FloatRect rect(topRight.x - size.x, topRight.y, size.x, size.y);
-    drawTeachPanel(target, rect, scale);
+    drawTeachPanel(target, rect, scale, "aim graph");
     drawLabel(target, font, utf8("Band: force F against pull x"), {rect.left + m.pad, rect.top + m.pad}, titleSize,
               palette::kText);
 

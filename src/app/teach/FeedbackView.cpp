@@ -75,7 +75,7 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
     const sf::FloatRect above(rect.left, top, rect.width, rect.height);
     if (coveredArea(rect, avoid) > 0.0f && coveredArea(above, avoid) <= 0.0f)
         rect = above; // the structure reaches down here: the sentences go up into the sky
-    drawTeachPanel(target, rect, scale);
+    drawTeachPanel(target, rect, scale, "feedback");
     float y = rect.top + pad;
     for (const std::string& line : lines)
     {

@@ -147,7 +147,7 @@ sf::FloatRect drawEnergyBars(sf::RenderTarget& target, const sf::Font& font, sf:
     const float width = 2.0f * pad + labelWidth + barWidth + valueWidth + 20.0f * scale;
     const float height = 2.0f * pad + titleHeight + rowHeight * 5.2f;
     const sf::FloatRect rect(topRight.x - width, topRight.y, width, height);
-    drawTeachPanel(target, rect, scale);
+    drawTeachPanel(target, rect, scale, "energy");
     drawLabel(target, font,
               utf8(atContact ? "Energy at the first contact" : "Energy: at launch = kinetic + potential + drag"),
               {rect.left + pad, rect.top + pad}, titleSize, palette::kStar);

@@ -49,7 +49,7 @@ sf::FloatRect GuideRunner::draw(sf::RenderTarget& target, const sf::Font& font, 
     const float titleHeight = font.getLineSpacing(titleSize) * 1.15f;
     const float height = 2.0f * pad + titleHeight + rowHeight * static_cast<float>(lines.size());
     const sf::FloatRect rect(topLeft, {maxWidth, height});
-    drawTeachPanel(target, rect, scale);
+    drawTeachPanel(target, rect, scale, "guide");
     drawLabel(target, font, utf8(m_guide->title), {rect.left + pad, rect.top + pad}, titleSize, palette::kStar);
     drawLabel(target, font, utf8(progress), {rect.left + rect.width - pad, rect.top + pad}, rowSize, palette::kTextDim,
               Align::Right);

@@ -270,7 +270,7 @@ void PathHistory::drawTools(sf::RenderTarget& target, const sf::Font& font, cons
         const float pad = 5.0f * scale;
         const sf::FloatRect box(mid.x - 0.5f * size.x - pad, mid.y - size.y - 3.0f * pad, size.x + 2.0f * pad,
                                 size.y + 2.0f * pad);
-        drawTeachPanel(target, box, scale);
+        drawTeachPanel(target, box, scale, "measure");
         drawLabel(target, font, utf8(text), {mid.x, box.top + pad}, rowSize, palette::kText, Align::Centre);
     }
     if (m_hover)

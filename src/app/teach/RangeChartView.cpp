@@ -66,7 +66,7 @@ sf::FloatRect RangeChartView::draw(sf::RenderTarget& target, const sf::Font& fon
     const float width = 380.0f * scale;
     const float height = 250.0f * scale;
     const sf::FloatRect rect(topRight.x - width, topRight.y, width, height);
-    drawTeachPanel(target, rect, scale);
+    drawTeachPanel(target, rect, scale, "range chart");
     drawLabel(target, font,
               utf8("Range to the ground by angle, " + formatFixed(m_launch.speedMps, 1) + " m/s (" + m_key.bird + ")"),
               {rect.left + pad, rect.top + pad}, titleSize, palette::kStar);

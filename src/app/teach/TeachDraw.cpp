@@ -2,6 +2,7 @@
 
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
+#include "render/ScreenRegions.hpp"
 #include "render/TextFormat.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
@@ -34,8 +35,9 @@ void addArrow(Mesh& mesh, sf::Vector2f from, sf::Vector2f to, float width, sf::C
     mesh.addTriangle(to, base + half * n, base - half * n, colour);
 }
 
-void drawTeachPanel(sf::RenderTarget& target, sf::FloatRect rect, float scale)
+void drawTeachPanel(sf::RenderTarget& target, sf::FloatRect rect, float scale, std::string_view name)
 {
+    recordScreenRegion(name, rect);
     sf::RectangleShape box({rect.width, rect.height});
     box.setPosition(rect.left, rect.top);
     box.setFillColor(teach::kPanel);
@@ -87,7 +89,7 @@ sf::FloatRect TextPanel::draw(sf::RenderTarget& target, const sf::Font& font, sf
 {
     const sf::Vector2f size = measure(font, titleSize, rowSize, scale);
     const sf::FloatRect rect(at, size);
-    drawTeachPanel(target, rect, scale);
+    drawTeachPanel(target, rect, scale, m_title);
     const float pad = 8.0f * scale;
     const float swatch = 12.0f * scale;
     float y = at.y + pad;

@@ -8,6 +8,7 @@
 #include <SFML/Graphics/Rect.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace abalike::app
@@ -34,8 +35,9 @@ inline const sf::Color kComparison(255, 70, 70);
 /// With rim > 0, a dark rim of that width around it first, so that crossing arrows stay apart.
 void addArrow(Mesh& mesh, sf::Vector2f from, sf::Vector2f to, float width, sf::Color colour, float rim = 0.0f);
 
-/// A rectangle with an edge: the background of every teaching panel.
-void drawTeachPanel(sf::RenderTarget& target, sf::FloatRect rect, float scale);
+/// A rectangle with an edge: the background of every teaching panel. `name` says which panel it is in the record of
+/// a frame's layout (ScreenRegions).
+void drawTeachPanel(sf::RenderTarget& target, sf::FloatRect rect, float scale, std::string_view name);
 
 /// One row of a text panel: a label on the left, a value on the right, a colour swatch when set.
 struct PanelRow

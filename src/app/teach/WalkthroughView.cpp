@@ -233,7 +233,7 @@ void WalkthroughView::drawPanel(sf::RenderTarget& target, const sf::Font& font, 
 
     // The step magnified: where each slope is evaluated, the slope times dt from there, and the true path.
     const sf::FloatRect inset(rect.left + rect.width + 4.0f * scale, rect.top, insetWidth, rect.height);
-    drawTeachPanel(target, inset, scale);
+    drawTeachPanel(target, inset, scale, "walkthrough");
     std::vector<sf::Vector2f> points;
     const double dt = w.dtS;
     for (const Rk4Stage& stage : w.stages)

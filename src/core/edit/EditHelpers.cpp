@@ -26,6 +26,19 @@ void fitPolygonBounds(TerrainDef& terrain)
     terrain.angleDeg = 0.0;
 }
 
+bool polygonContains(const std::vector<std::array<double, 2>>& points, double x, double y)
+{
+    bool inside = false;
+    for (std::size_t i = 0, j = points.size() - 1; i < points.size(); j = i++)
+    {
+        const auto& a = points[i];
+        const auto& b = points[j];
+        if ((a[1] > y) != (b[1] > y) && x < (b[0] - a[0]) * (y - a[1]) / (b[1] - a[1]) + a[0])
+            inside = !inside;
+    }
+    return inside;
+}
+
 /// Turns a terrain polygon's points about its bounding box's centre; its box follows (a polygon has no angle).
 void rotatePolygon(TerrainDef& terrain, double deltaDeg)
 {

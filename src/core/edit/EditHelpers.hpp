@@ -17,6 +17,9 @@ namespace abalike
 /// A terrain polygon's box (x, y, w, h) made its points' bounding box again after they changed.
 void fitPolygonBounds(TerrainDef& terrain);
 
+/// True when (x, y) lies inside a simple polygon, convex or not, either winding (even-odd rule).
+bool polygonContains(const std::vector<std::array<double, 2>>& points, double x, double y);
+
 /// Turns a terrain polygon's points about its bounding box's centre; its box follows (a polygon has no angle).
 void rotatePolygon(TerrainDef& terrain, double deltaDeg);
 

@@ -207,6 +207,13 @@ std::optional<ObjectRef> SceneEditor::objectAt(double x, double y) const
                 return *it;
             continue;
         }
+        if (it->kind == ObjectKind::Terrain && m_level.terrain[it->index].isPolygon())
+        {
+            // A polygon by its own outline: a click in a hill's dip is on what is behind it, not on the hill.
+            if (polygonContains(m_level.terrain[it->index].points, x, y))
+                return *it;
+            continue;
+        }
         if (shapeContains(objectShape(objectDef(m_level, *it), m_catalog), {x, y}))
             return *it;
     }
