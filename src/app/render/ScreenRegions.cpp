@@ -8,7 +8,39 @@ namespace abalike::app
 namespace
 {
 std::vector<ScreenRegion>* g_sink = nullptr;
+std::vector<ScreenRegion> g_frame;
 } // namespace
+
+void beginScreenLayout()
+{
+    g_frame.clear();
+}
+
+const std::vector<ScreenRegion>& screenLayout()
+{
+    return g_frame;
+}
+
+float firstFreeTop(float left, float width, float top, float height, float gap)
+{
+    // Each pass moves the panel under the first panel it overlaps; y only grows, so this ends.
+    for (bool moved = true; moved;)
+    {
+        moved = false;
+        for (const ScreenRegion& region : g_frame)
+        {
+            const sf::FloatRect& r = region.rect;
+            const bool acrossX = left < r.left + r.width && r.left < left + width;
+            const bool acrossY = top < r.top + r.height && r.top < top + height;
+            if (acrossX && acrossY)
+            {
+                top = r.top + r.height + gap;
+                moved = true;
+            }
+        }
+    }
+    return top;
+}
 
 void setScreenRegionSink(std::vector<ScreenRegion>* sink)
 {
@@ -17,7 +49,10 @@ void setScreenRegionSink(std::vector<ScreenRegion>* sink)
 
 void recordScreenRegion(std::string_view name, const sf::FloatRect& rect)
 {
-    if (g_sink != nullptr && rect.width > 0.0f && rect.height > 0.0f)
+    if (rect.width <= 0.0f || rect.height <= 0.0f)
+        return;
+    g_frame.push_back({std::string(name), rect});
+    if (g_sink != nullptr)
         g_sink->push_back({std::string(name), rect});
 }
 

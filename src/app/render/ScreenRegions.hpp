@@ -23,6 +23,16 @@ void setScreenRegionSink(std::vector<ScreenRegion>* sink);
 /// Records one panel when a sink is set; panels call it where they draw their background.
 void recordScreenRegion(std::string_view name, const sf::FloatRect& rect);
 
+/// Starts a frame's layout: the panels recorded from now on are what later panels of the frame keep clear of.
+void beginScreenLayout();
+
+/// The panels drawn so far in this frame's layout.
+const std::vector<ScreenRegion>& screenLayout();
+
+/// The highest top edge, at or below `top`, for a panel of this width and height at `left` that overlaps no panel
+/// drawn so far this frame (each overlap moves it under that panel, `gap` apart).
+float firstFreeTop(float left, float width, float top, float height, float gap);
+
 /// Pairs of regions (indices) that overlap by more than `tolerancePx` both ways.
 std::vector<std::pair<std::size_t, std::size_t>> overlappingRegions(const std::vector<ScreenRegion>& regions,
                                                                     float tolerancePx = 1.0f);

@@ -310,20 +310,37 @@ void App::drawNotices()
     const unsigned size = textSize(17.0f);
     const float pad = 8.0f * uiScale();
     const float lineHeight = m_font->getLineSpacing(size);
-    float y =
-        static_cast<float>(windowSize().y) - 70.0f * uiScale() - lineHeight * static_cast<float>(m_notices.size());
     const float centre = 0.5f * static_cast<float>(windowSize().x);
+    // Each notice wrapped to the window (a long file name must not run off its edges), stacked upwards from above
+    // the level's hint.
+    const float maxWidth = std::max(100.0f, static_cast<float>(windowSize().x) - 4.0f * pad);
+    std::vector<std::vector<std::string>> wrapped;
+    std::size_t lines = 0;
     for (const Notice& notice : m_notices)
     {
-        const sf::String text = utf8(notice.text);
-        const float width = measureText(*m_font, text, size).x + 2.0f * pad;
-        sf::RectangleShape box({width, lineHeight + pad});
+        wrapped.push_back(wrapText(*m_font, notice.text, size, maxWidth - 2.0f * pad));
+        lines += wrapped.back().size();
+    }
+    float y = static_cast<float>(windowSize().y) - 70.0f * uiScale() - lineHeight * static_cast<float>(lines) -
+              pad * static_cast<float>(m_notices.size() - 1);
+    for (const std::vector<std::string>& notice : wrapped)
+    {
+        float width = 0.0f;
+        for (const std::string& line : notice)
+            width = std::max(width, measureText(*m_font, utf8(line), size).x);
+        width += 2.0f * pad;
+        const float height = lineHeight * static_cast<float>(notice.size()) + pad;
+        sf::RectangleShape box({width, height});
         box.setPosition(centre - 0.5f * width, y - 0.5f * pad);
         recordScreenRegion("notice", {box.getPosition(), box.getSize()});
         box.setFillColor(palette::kPanel);
         m_window.draw(box);
-        drawLabel(m_window, *m_font, text, {centre, y}, size, palette::kText, Align::Centre);
-        y += lineHeight + pad;
+        for (const std::string& line : notice)
+        {
+            drawLabel(m_window, *m_font, utf8(line), {centre, y}, size, palette::kText, Align::Centre);
+            y += lineHeight;
+        }
+        y += pad;
     }
 }
 

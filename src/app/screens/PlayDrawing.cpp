@@ -1,5 +1,7 @@
 #include "screens/PlayDrawing.hpp"
 
+#include "render/ScreenRegions.hpp"
+
 #include "input/AimController.hpp"
 #include "render/LabelPlacement.hpp"
 #include "render/Mesh.hpp"
@@ -46,6 +48,8 @@ void drawPullLimit(sf::RenderTarget& target, const Camera& camera, const GameSes
 void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, OverlayRenderer& overlay, const Hud& hud,
               sf::Vector2f pullOffset, bool pulling, const std::vector<std::unique_ptr<PlayLayer>>& layers)
 {
+    // One layout per frame: every panel drawn from here on is recorded, and later panels keep clear of earlier ones.
+    beginScreenLayout();
     const GameSession& session = view.session();
     const Camera& camera = view.camera();
     // A shake moves the world's picture, never the HUD and panels over it.

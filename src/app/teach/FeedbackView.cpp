@@ -3,6 +3,7 @@
 #include "render/Label.hpp"
 #include "render/LabelPlacement.hpp"
 #include "render/Palette.hpp"
+#include "render/ScreenRegions.hpp"
 #include "teach/TeachDraw.hpp"
 
 #include <abalike/teach/ShotFeedback.hpp>
@@ -48,6 +49,7 @@ void FeedbackView::update(const GameSession& session, const std::optional<AimRea
     try
     {
         m_sentences = shotFeedback(session.level(), session.catalog(), shot, session.world().dt());
+        m_spot.reset();
     }
     catch (const std::exception&)
     {
@@ -71,10 +73,57 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
     const float pad = 8.0f * scale;
     const float height = rowHeight * static_cast<float>(lines.size()) + 2.0f * pad;
     const float centre = 0.5f * static_cast<float>(target.getSize().x);
-    sf::FloatRect rect(centre - 0.5f * width - pad, bottom - height, width + 2.0f * pad, height);
-    const sf::FloatRect above(rect.left, top, rect.width, rect.height);
-    if (coveredArea(rect, avoid) > 0.0f && coveredArea(above, avoid) <= 0.0f)
-        rect = above; // the structure reaches down here: the sentences go up into the sky
+    const float windowWidth = static_cast<float>(target.getSize().x);
+    const float w = width + 2.0f * pad;
+    // Candidates in order of preference: above the hint in the middle, then its left and right, then up in the sky
+    // under the panels already drawn (middle, left, right). The first that covers neither a panel nor the
+    // structure wins; when none is free, the one covering least (a panel counting far more than the structure).
+    std::vector<sf::FloatRect> candidates;
+    for (const float x : {centre - 0.5f * w, 12.0f * scale, windowWidth - 12.0f * scale - w})
+        candidates.emplace_back(x, bottom - height, w, height);
+    for (const float x : {centre - 0.5f * w, 12.0f * scale, windowWidth - 12.0f * scale - w})
+        candidates.emplace_back(x, firstFreeTop(x, w, top, height, 6.0f * scale), w, height);
+    // Chosen once per shot's sentences: the card stays put while the structure collapses behind it, and moves only
+    // when a panel drawn before it (a label that appeared later) now takes its spot.
+    std::vector<sf::FloatRect> panels;
+    for (const ScreenRegion& region : screenLayout())
+        panels.push_back(region.rect);
+    if (m_spot && *m_spot < candidates.size() && coveredArea(candidates[*m_spot], panels) <= 0.0f)
+    {
+        drawCard(target, font, candidates[*m_spot], lines, rowSize, scale);
+        return;
+    }
+    const float windowHeight = static_cast<float>(target.getSize().y);
+    sf::FloatRect rect = candidates.front();
+    m_spot = 0;
+    float least = -1.0f;
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+    {
+        const sf::FloatRect& candidate = candidates[i];
+        const bool inside = candidate.left >= 0.0f && candidate.top >= 0.0f &&
+                            candidate.left + candidate.width <= windowWidth &&
+                            candidate.top + candidate.height <= windowHeight;
+        // Covering a panel is far worse than covering the structure; leaving the window worst of all.
+        const float covered =
+            coveredArea(candidate, avoid) + 100.0f * coveredArea(candidate, panels) + (inside ? 0.0f : 1e9f);
+        if (least < 0.0f || covered < least)
+        {
+            least = covered;
+            rect = candidate;
+            m_spot = i;
+        }
+        if (covered <= 0.0f)
+            break;
+    }
+    drawCard(target, font, rect, lines, rowSize, scale);
+}
+
+void FeedbackView::drawCard(sf::RenderTarget& target, const sf::Font& font, const sf::FloatRect& rect,
+                            const std::vector<std::string>& lines, unsigned rowSize, float scale) const
+{
+    const float rowHeight = font.getLineSpacing(rowSize);
+    const float pad = 8.0f * scale;
+    const float centre = rect.left + 0.5f * rect.width;
     drawTeachPanel(target, rect, scale, "feedback");
     float y = rect.top + pad;
     for (const std::string& line : lines)

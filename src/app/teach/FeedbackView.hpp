@@ -23,12 +23,18 @@ public:
     void update(const GameSession& session, const std::optional<AimReadout>& aim);
     void reset();
     const std::vector<std::string>& sentences() const { return m_sentences; }
-    /// Draws the sentences centred above `bottom` (window pixels), wrapped to `maxWidth`; if the panel would cover
-    /// any of the boxes in `avoid` (the structure on screen) and it would not at `top`, it goes there instead.
+    /// Draws the sentences wrapped to `maxWidth` on a card: above `bottom` (window pixels) in the middle, else at
+    /// its left or right, else from `top` down under the panels already drawn this frame (ScreenRegions), the first
+    /// spot covering neither a panel nor a box of `avoid` (the structure on screen). The spot is chosen once per
+    /// shot's sentences, so the card stays put while the world moves.
     void draw(sf::RenderTarget& target, const sf::Font& font, float bottom, float top,
               std::span<const sf::FloatRect> avoid, float maxWidth, unsigned rowSize, float scale) const;
 
 private:
+    void drawCard(sf::RenderTarget& target, const sf::Font& font, const sf::FloatRect& rect,
+                  const std::vector<std::string>& lines, unsigned rowSize, float scale) const;
+
+    mutable std::optional<std::size_t> m_spot; ///< the candidate spot chosen for the current sentences
     std::size_t m_shotsSeen = 0;
     bool m_done = false;
     std::optional<std::pair<double, double>> m_firstAim; ///< angle and speed when the next bird became ready

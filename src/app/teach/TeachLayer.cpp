@@ -1,5 +1,7 @@
 #include "teach/TeachLayer.hpp"
 
+#include "render/ScreenRegions.hpp"
+
 #include "render/LabelPlacement.hpp"
 #include "screens/App.hpp"
 #include "screens/PlayToolbar.hpp"
@@ -205,11 +207,21 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     // Right column: the flying bird's forces and energy, or after its first contact the impact; while aiming, the
     // chart and the comparison.
     sf::Vector2f right(window.x - margin, PlayToolbar::bottomPx(PlayToolbar::buttonScale(m_app)) + gap);
+    // The columns start under whatever the HUD drew where they go (the aim readout reaches into them in narrow
+    // windows and at large text): ScreenRegions holds this frame's panels so far.
+    const float rightWidth = std::min(470.0f * scale, window.x - 2.0f * margin);
+    const float minHeight = 40.0f * scale;
+    const auto clearRight = [&]
+    {
+        right.y = firstFreeTop(right.x - rightWidth, rightWidth, right.y, minHeight, gap);
+    };
     const auto below = [&](const sf::FloatRect& rect)
     {
         if (rect.height > 0.0f)
             right.y = rect.top + rect.height + gap;
+        clearRight();
     };
+    clearRight();
     if (overlayOn() && !m_walkthrough.active())
     {
         const unsigned terms = m_follower.model() ? activeTerms(*m_follower.model()) : 0u;
@@ -239,32 +251,48 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
             }
         }
     }
-    // While aiming, the aim readout sits at the top centre: the chart and the comparison go below its line.
+    // While aiming, the aim readout sits at the top centre: the chart and the comparison go below it.
     if (aiming)
-        right.y = std::max(right.y, 88.0f * scale);
+        clearRight();
     if (aiming && overlayOn())
         if (const std::optional<AimReadout> aim = view.aim())
-            below(BandGraph::draw(target, *font, right, *aim, titleSize, rowSize, scale));
+        {
+            // Its own size is known: it goes where all of it is clear, or (no room left) is left out.
+            const sf::Vector2f size = BandGraph::measure(*font, titleSize, rowSize, scale);
+            const float top = firstFreeTop(right.x - size.x, size.x, right.y, size.y, gap);
+            if (top + size.y <= window.y)
+                below(BandGraph::draw(target, *font, {right.x, top}, *aim, titleSize, rowSize, scale));
+        }
     if (m_showChart && aiming)
         below(m_chart.draw(target, *font, right, titleSize, rowSize, scale));
     if (aiming)
         below(m_comparison.drawPanel(target, *font, right, titleSize, rowSize, scale));
 
     // Left column, under the level's status and air: a tutorial's or lesson's step, why preview and world can differ.
+    const float leftWidth = std::min(440.0f * scale, window.x - 2.0f * margin);
     float left = 152.0f * scale;
+    const auto clearLeft = [&]
+    {
+        left = firstFreeTop(margin, leftWidth, left, minHeight, gap);
+    };
+    clearLeft();
     if (m_guide.active() && !m_walkthrough.active())
     {
         const sf::FloatRect card =
             m_guide.draw(target, *font, {margin, left}, std::min(440.0f * scale, window.x - 2.0f * margin),
                          m_app.textSize(17.0f), m_app.textSize(15.0f), scale);
         left = card.top + card.height + gap;
+        clearLeft();
     }
     if (PredictQuizView::wanted(session.level()) && !m_walkthrough.active())
     {
         const sf::FloatRect card = m_quiz.draw(target, *font, {margin, left}, titleSize, rowSize, scale);
         left = card.top + card.height + gap;
+        clearLeft();
     }
-    if (overlayOn() && !m_walkthrough.active())
+    // A panel with no room left under the others is left out rather than drawn over them or off the window.
+    const bool roomLeft = left + minHeight <= window.y;
+    if (overlayOn() && !m_walkthrough.active() && roomLeft)
         drawWhyPanel(target, *font, {margin, left}, session, view.preview(), m_app.universityWording(), titleSize,
                      rowSize, scale);
 
