@@ -11,6 +11,10 @@ namespace abalike
 /// A block shape's name in level files: "box", "circle", "triangle", "hollow_box".
 const char* blockShapeName(BlockShape shape);
 
+/// Shortest text that reads back as the same double; whole numbers without a fraction ("22", not "22.0"), -0 as
+/// "0": how levels write numbers, and how messages quote them.
+std::string shortestNumber(double value);
+
 /// The level as JSON text in the documented format (levels/README.md): keys in the guide's order, optional fields
 /// only where they differ from their defaults, numbers in their shortest form that reads back to the same double,
 /// one block, pig or terrain piece per line. Saving, loading and saving again gives the same bytes.

@@ -21,14 +21,9 @@ constexpr std::size_t kLineWidth = 120;
 /// gives back the digits written (90, not 90.00000000000001) and a second save the same bytes.
 constexpr int kPhaseDigits = 12;
 
-/// Shortest text that reads back as the same double; whole numbers without a fraction ("22", not "22.0").
 std::string number(double value)
 {
-    if (value == 0.0)
-        return "0"; // also -0
-    char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
+    return shortestNumber(value);
 }
 
 std::string text(const std::string& value)
@@ -211,6 +206,15 @@ const char* blockShapeName(BlockShape shape)
         break;
     }
     return "box";
+}
+
+std::string shortestNumber(double value)
+{
+    if (value == 0.0)
+        return "0"; // also -0
+    char buffer[64];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
 }
 
 std::string writeLevelJson(const LevelDef& level, const std::string& schemaReference)

@@ -1,5 +1,6 @@
 #include <abalike/level/ScienceBirds.hpp>
 
+#include <abalike/level/LevelWriter.hpp>
 #include <abalike/world/Catalog.hpp>
 #include <abalike/world/RestFindings.hpp>
 
@@ -51,14 +52,6 @@ const std::map<std::string, std::string> kBirds = {
     {"BirdRed", "red"}, {"BirdBlue", "blue"}, {"BirdYellow", "yellow"}, {"BirdBlack", "black"}, {"BirdWhite", "white"}};
 const std::map<std::string, std::string> kPigs = {
     {"BasicSmall", "small"}, {"BasicMedium", "medium"}, {"BasicBig", "large"}};
-
-/// The shortest text that reads back as the same double ("1.5", "-2.5", "0").
-std::string shortest(double value)
-{
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
 
 std::string joinedKeys(const std::map<std::string, std::string>& names)
 {
@@ -134,7 +127,7 @@ std::optional<double> Importer::number(const pugi::xml_node& node, const char* n
             return std::nullopt;
         }
         warn(node, pointer,
-             "<" + element + "> has no " + name + "; read as " + name + "=\"" + shortest(*fallback) + "\"");
+             "<" + element + "> has no " + name + "; read as " + name + "=\"" + shortestNumber(*fallback) + "\"");
         return fallback;
     }
     std::string_view text = attribute.value();
@@ -445,7 +438,7 @@ void Importer::snapOntoSupports()
         std::string message = (gap.gapM > 0 ? "was " + centimetres(gap.gapM) + " above " + gap.support
                                             : "sank " + centimetres(gap.gapM) + " into " + gap.support) +
                               "; set onto it (y = ";
-        message.append(shortest(y)).append(" in our level)");
+        message.append(shortestNumber(y)).append(" in our level)");
         m_warnings.push_back(issueAt(offset, pointer, message));
     }
 }
