@@ -4,9 +4,11 @@
 #include "cli/WindowOptions.hpp"
 #include "render/Font.hpp"
 #include "screens/App.hpp"
+#include "teach/Guide.hpp"
 
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/Campaign.hpp>
+#include <abalike/level/LevelIO.hpp>
 #include <abalike/save/SaveStore.hpp>
 #include <abalike/world/StressScenes.hpp>
 #include <algorithm>
@@ -27,20 +29,51 @@ constexpr int kFrames = 600;     ///< 10 s of game time: the shot, the collapse,
 constexpr int kQuickFrames = 90; ///< the ctest smoke run
 constexpr int kPreviewCalls = 300;
 constexpr int kQuickPreviewCalls = 20;
-constexpr unsigned kWidth = 1280;
-constexpr unsigned kHeight = 720;
-constexpr double kTargetP99Ms = 16.7;     ///< 60 frames per second
 constexpr double kTargetPreviewMs = 0.17; ///< 1 % of a 60 Hz frame
+constexpr std::size_t kSmallLevelBodies = 200;
 
-/// One scene's measurement.
+/// A window size and what its frames must meet.
+struct FrameSize
+{
+    unsigned width;
+    unsigned height;
+};
+constexpr FrameSize kSmall{1280, 720};
+constexpr FrameSize kLarge{1920, 1080};
+
+/// One scene to play: a campaign level, a lesson or a stress scene.
+struct Scene
+{
+    std::string name;
+    std::string kind; ///< "level", "lesson" or "stress"
+    std::string path; ///< the level's file; empty for a scene held in memory
+    LevelDef level;
+};
+
+/// One scene's measurement at one window size.
 struct SceneFrames
 {
     std::string name;
+    std::string kind;
+    FrameSize size{};
     std::size_t bodies = 0;
-    std::vector<double> frameMs;
+    std::vector<FrameTimes> frames;
+    double loadMs = 0.0;
     double previewMedianMs = 0.0;
     long rssKb = -1;
 };
+
+/// The frame p99 target: 60 frames per second at 1280x720 except on the 1 000-block wall (40), 40 at 1920x1080.
+double targetP99Ms(const SceneFrames& scene)
+{
+    return scene.size.width > kSmall.width || scene.kind == "stress" ? 25.0 : 16.7;
+}
+
+/// The load target: the first frame within 100 ms of choosing a level of up to 200 bodies, else within 1 s.
+double targetLoadMs(const SceneFrames& scene)
+{
+    return scene.bodies <= kSmallLevelBodies ? 100.0 : 1000.0;
+}
 
 volatile std::size_t g_sink = 0;
 
@@ -73,23 +106,27 @@ double previewMedianMs(const LevelDef& level, const ScriptedShot& shot, int call
 }
 
 /// Plays the level in the real game loop (window, screens, every layer) with the shot fired at once.
-/// path: the level's file (for "next level" in the campaign), empty for a scene held in memory.
-SceneFrames playScene(const std::string& name, const std::string& path, const LevelDef& level, const ScriptedShot& shot,
-                      int frames, Campaign campaign)
+SceneFrames playScene(const Scene& scene, FrameSize size, const ScriptedShot& shot, int frames, Campaign campaign)
 {
     SceneFrames result;
-    result.name = name;
-    result.bodies = level.blocks.size() + level.pigs.size();
+    result.name = scene.name;
+    result.kind = scene.kind;
+    result.size = size;
+    result.bodies = scene.level.blocks.size() + scene.level.pigs.size();
     AppOptions options;
-    options.levelPath = path;
-    options.level = level;
+    options.levelPath = scene.path;
+    options.level = scene.level;
     options.frames = frames;
-    options.width = kWidth;
-    options.height = kHeight;
+    options.width = size.width;
+    options.height = size.height;
     options.shots.push_back(shot);
-    options.onFrameTimed = [&result](double frameS)
+    options.onFrameTimed = [&result](const FrameTimes& times)
     {
-        result.frameMs.push_back(1000.0 * frameS);
+        result.frames.push_back(times);
+    };
+    options.onFirstFrame = [&result](double loadS)
+    {
+        result.loadMs = 1000.0 * loadS;
     };
     // Every overlay on, and the player's own files left alone: the settings come from a folder of our own (a
     // scripted run reads its data folder and never writes it).
@@ -111,6 +148,49 @@ SceneFrames playScene(const std::string& name, const std::string& path, const Le
     return result;
 }
 
+/// The median of one part of the frame over every frame of a scene.
+double partMedianMs(const SceneFrames& scene, double FrameTimes::*part)
+{
+    std::vector<double> ms;
+    ms.reserve(scene.frames.size());
+    for (const FrameTimes& times : scene.frames)
+        ms.push_back(1000.0 * (times.*part));
+    return percentile(std::move(ms), 0.5);
+}
+
+/// Every campaign level in campaign order, every lesson, and the 1 000-block wall; with quick the busiest level, the
+/// first lesson and the wall.
+std::vector<Scene> framesScenes(const Campaign& campaign, bool quick)
+{
+    std::vector<Scene> scenes;
+    const CampaignLevel* busiest = nullptr;
+    for (const CampaignLevel& entry : campaign.levels)
+    {
+        if (!quick)
+            scenes.push_back({entry.level.id, "level", entry.path, entry.level});
+        if (busiest == nullptr || entry.level.blocks.size() + entry.level.pigs.size() >
+                                      busiest->level.blocks.size() + busiest->level.pigs.size())
+            busiest = &entry;
+    }
+    if (quick && busiest != nullptr)
+        scenes.push_back({busiest->level.id, "level", busiest->path, busiest->level});
+    const std::filesystem::path lessons = std::filesystem::path(campaign.manifestPath).parent_path() / "lessons";
+    for (const LessonEntry& lesson : lessonList())
+    {
+        const std::string path = (lessons / lesson.file).string();
+        scenes.push_back({lesson.id, "lesson", path, loadLevel(path, Catalog::builtin())});
+        if (quick)
+            break;
+    }
+    for (const StressScene& scene : structureScenes())
+        if (scene.level.blocks.size() >= 1000)
+        {
+            scenes.push_back({scene.name, "stress", "", scene.level});
+            break;
+        }
+    return scenes;
+}
+
 } // namespace
 
 int runFramesBench(const BenchOptions& options)
@@ -120,69 +200,77 @@ int runFramesBench(const BenchOptions& options)
     const int frames = options.quick ? kQuickFrames : kFrames;
     const int previewCalls = options.quick ? kQuickPreviewCalls : kPreviewCalls;
     const Campaign campaign = loadCampaignLevels(campaignManifest(), Catalog::builtin());
+    const std::vector<Scene> scenes = framesScenes(campaign, options.quick);
 
-    // The campaign level with the most bodies, and its reference shot (or a flat full-power shot).
-    const CampaignLevel* busiest = nullptr;
-    for (const CampaignLevel& entry : campaign.levels)
-        if (busiest == nullptr || entry.level.blocks.size() + entry.level.pigs.size() >
-                                      busiest->level.blocks.size() + busiest->level.pigs.size())
-            busiest = &entry;
-    struct Scene
-    {
-        std::string name;
-        std::string path;
-        LevelDef level;
-    };
-    std::vector<Scene> scenes;
-    if (busiest != nullptr)
-        scenes.push_back({busiest->level.id, busiest->path, busiest->level});
-    for (const StressScene& scene : structureScenes())
-        if (scene.level.blocks.size() >= 1000)
-        {
-            scenes.push_back({scene.name, "", scene.level});
-            break;
-        }
-
+    // The large window only where the screen holds it (Xvfb's screen is set on its command line).
+    const sf::VideoMode desktop = sf::VideoMode::getDesktopMode();
+    const bool largeFits = desktop.width >= kLarge.width && desktop.height >= kLarge.height;
     std::vector<SceneFrames> results;
     for (const Scene& scene : scenes)
     {
-        const LevelDef& level = scene.level;
-        GameSession probe(level);
+        GameSession probe(scene.level);
         ScriptedShot shot(30.0, probe.maxLaunchSpeed());
-        if (level.referenceShot)
-            shot = ScriptedShot(level.referenceShot->angleDeg, level.referenceShot->speedMps);
-        SceneFrames measured = playScene(scene.name, scene.path, level, shot, frames, campaign);
-        measured.previewMedianMs = previewMedianMs(level, shot, previewCalls);
-        results.push_back(std::move(measured));
+        if (scene.level.referenceShot)
+            shot = ScriptedShot(scene.level.referenceShot->angleDeg, scene.level.referenceShot->speedMps);
+        const double previewMs = previewMedianMs(scene.level, shot, previewCalls);
+        std::vector<FrameSize> sizes{kSmall};
+        if (!options.quick && largeFits && scene.kind != "stress")
+            sizes.push_back(kLarge);
+        for (const FrameSize size : sizes)
+        {
+            SceneFrames measured = playScene(scene, size, shot, frames, campaign);
+            measured.previewMedianMs = previewMs;
+            std::cerr << "bench frames: " << measured.name << " " << size.width << "x" << size.height << " done\n";
+            results.push_back(std::move(measured));
+        }
     }
 
-    ReportTable table({"scene", "bodies", "frames", "median ms", "p99 ms", "p99 target", "preview median ms",
-                       "preview share", "preview target", "VmRSS MB"});
+    ReportTable table({"scene", "kind", "window", "bodies", "load ms", "load target", "frames", "median ms", "p99 ms",
+                       "p99 target", "physics ms", "update ms", "draw ms", "display ms", "preview ms", "preview target",
+                       "VmRSS MB"});
+    int missed = 0;
     for (const SceneFrames& scene : results)
     {
-        const double median = percentile(scene.frameMs, 0.5);
-        const double p99 = percentile(scene.frameMs, 0.99);
-        table.addRow({scene.name, std::to_string(scene.bodies), std::to_string(scene.frameMs.size()),
-                      formatSignificant(median), formatSignificant(p99),
-                      p99 <= kTargetP99Ms ? "met (<= 16.7)" : "missed (> 16.7)",
-                      formatSignificant(scene.previewMedianMs),
-                      formatSignificant(median > 0.0 ? 100.0 * scene.previewMedianMs / median : 0.0) + " %",
-                      scene.previewMedianMs <= kTargetPreviewMs ? "met (<= 0.17)" : "missed (> 0.17)",
-                      formatSignificant(static_cast<double>(scene.rssKb) / 1024.0)});
+        std::vector<double> totalMs;
+        for (const FrameTimes& times : scene.frames)
+            totalMs.push_back(1000.0 * times.totalS);
+        const double p99 = percentile(totalMs, 0.99);
+        const double target = targetP99Ms(scene);
+        const double loadTarget = targetLoadMs(scene);
+        const auto verdict = [&missed](bool met, double limit)
+        {
+            missed += met ? 0 : 1;
+            return std::string(met ? "met (<= " : "missed (> ") + formatSignificant(limit) + ")";
+        };
+        table.addRow(
+            {scene.name, scene.kind, std::to_string(scene.size.width) + "x" + std::to_string(scene.size.height),
+             std::to_string(scene.bodies), formatSignificant(scene.loadMs),
+             verdict(scene.loadMs <= loadTarget, loadTarget), std::to_string(scene.frames.size()),
+             formatSignificant(percentile(totalMs, 0.5)), formatSignificant(p99), verdict(p99 <= target, target),
+             formatSignificant(partMedianMs(scene, &FrameTimes::physicsS)),
+             formatSignificant(partMedianMs(scene, &FrameTimes::updateS)),
+             formatSignificant(partMedianMs(scene, &FrameTimes::drawS)),
+             formatSignificant(partMedianMs(scene, &FrameTimes::displayS)), formatSignificant(scene.previewMedianMs),
+             verdict(scene.previewMedianMs <= kTargetPreviewMs, kTargetPreviewMs),
+             formatSignificant(static_cast<double>(scene.rssKb) / 1024.0)});
     }
     std::ostringstream md;
     md << "# Frame times of the game loop\n\n"
-       << "`abalike bench frames" << (options.quick ? " --quick" : "") << "`: " << frames << " frames at " << kWidth
-       << "x" << kHeight << " per scene under the current display, the teaching overlay, preview and path on, the"
-       << " scene's shot fired at once (one 1/60 s physics step per frame). Frame time: events, physics, every"
-       << " layer, drawing and display, by the wall clock. Preview: one RK4 preview of the shot with its contact"
-       << " queries, timed headless on the same level (median of " << previewCalls << "); its share is of the median"
-       << " frame. Targets are reported, never asserted. " << loadAverageNote() << ".\n\n"
+       << "`abalike bench frames" << (options.quick ? " --quick" : "") << "`: " << frames
+       << " frames per scene and window size under the current display, the teaching overlay, preview and path on,"
+       << " the scene's shot fired at once (one 1/60 s physics step per frame)"
+       << (largeFits || options.quick ? "" : "; the screen is smaller than 1920x1080, so that size was left out")
+       << ". Load: from choosing the level (its settle step included) to its first frame shown. Frame time: events,"
+       << " physics, every layer, drawing and display, by the wall clock, and the median of each part (physics: the"
+       << " fixed steps; update: events, camera and layers; draw: building and submitting the layers; display:"
+       << " showing the frame, where software GL fills the pixels). Preview: one RK4 preview of the shot with its"
+       << " contact queries, timed headless on the same level (median of " << previewCalls
+       << "). Targets are reported, never asserted: " << missed << " missed. " << loadAverageNote() << ".\n\n"
        << table.markdown();
-    std::cout << "bench frames\n" << table.text();
+    std::cout << "bench frames\n" << table.text() << missed << " targets missed\n";
     const bool written = writeReportFile(options.outDir, "frames.csv", table.csv()) &&
                          writeReportFile(options.outDir, "frames.md", md.str());
-    return written && results.size() == scenes.size() && !scenes.empty() ? 0 : 1;
+    return written && !results.empty() ? 0 : 1;
 }
 
 } // namespace abalike::app

@@ -121,13 +121,21 @@ void App::openFirstScreen()
 int App::run()
 {
     openWindow();
+    const sf::Clock loadClock;
     openFirstScreen();
     const bool offline = m_options.frames.has_value();
     sf::Clock clock;
     sf::Clock frameClock;
+    sf::Clock partClock;
+    const auto lap = [&partClock]
+    {
+        return static_cast<double>(partClock.restart().asMicroseconds()) * 1e-6;
+    };
     while (!m_exitCode)
     {
         frameClock.restart();
+        partClock.restart();
+        m_frameTimes = FrameTimes{};
         ++m_frame;
         m_trace.setFrame(m_frame);
         for (const sf::Event& event : m_script.eventsForFrame(static_cast<int>(m_frame)))
@@ -141,24 +149,33 @@ int App::run()
         const double frameS = offline ? kStepS : std::min(static_cast<double>(clock.restart().asSeconds()), kMaxFrameS);
         for (const sf::Event& repeat : m_gamepad.tick(frameS))
             dispatch(repeat);
+        m_frameTimes.updateS += lap();
         const int steps = stepsForFrame(frameS);
         for (int i = 0; i < steps && !m_exitCode && m_screens.top() != nullptr; ++i)
             m_screens.top()->fixedUpdate(kStepS);
+        m_frameTimes.physicsS += lap();
         if (Screen* top = m_screens.top())
             top->frameUpdate(frameS);
         for (Notice& notice : m_notices)
             notice.shownS += frameS;
         std::erase_if(m_notices, [](const Notice& n) { return n.shownS > kNoticeS; });
+        m_frameTimes.updateS += lap() - m_frameTimes.previewS;
 
         const bool lastFrame = offline && m_frame >= *m_options.frames;
         if (!lastFrame)
         {
             drawFrame();
+            m_frameTimes.drawS += lap();
             m_window.display();
+            m_frameTimes.displayS += lap();
         }
         m_screens.applyPending();
+        m_frameTimes.updateS += lap();
+        m_frameTimes.totalS = static_cast<double>(frameClock.getElapsedTime().asMicroseconds()) * 1e-6;
         if (m_options.onFrameTimed && !lastFrame)
-            m_options.onFrameTimed(static_cast<double>(frameClock.getElapsedTime().asMicroseconds()) * 1e-6);
+            m_options.onFrameTimed(m_frameTimes);
+        if (m_options.onFirstFrame && m_frame == 1)
+            m_options.onFirstFrame(static_cast<double>(loadClock.getElapsedTime().asMicroseconds()) * 1e-6);
         if (m_screens.empty())
             quit(m_exitCode.value_or(0));
         if (lastFrame)

@@ -45,6 +45,8 @@ public:
     ScreenStack& screens() { return m_screens; }
     const InputState& input() const { return m_input; }
     Trace& trace() { return m_trace; }
+    /// This frame's times so far: a screen adds the preview's share (`bench frames`).
+    FrameTimes& frameTimes() { return m_frameTimes; }
     /// Frames drawn so far, counting from 1 for the first.
     long long frame() const { return m_frame; }
     /// Seconds of one physics step.
@@ -107,6 +109,7 @@ private:
     std::vector<sf::Event> m_posted;
     ScriptedInput m_script;
     Trace m_trace;
+    FrameTimes m_frameTimes;
     std::optional<SaveStore> m_store;
     Settings m_settings;
     Progress m_progress;

@@ -5,6 +5,8 @@
 #include <abalike/save/Settings.hpp>
 #include <abalike/script/InputScript.hpp>
 
+#include "screens/FrameTimes.hpp"
+
 #include <functional>
 #include <memory>
 #include <optional>
@@ -33,8 +35,10 @@ struct AppOptions
     std::optional<unsigned> height;
     std::optional<Wording> wording; ///< `--wording` wins over the saved setting for this run
 
-    /// Called after every frame with the wall time it took (events, physics, drawing, display): `bench frames`.
-    std::function<void(double frameWallS)> onFrameTimed;
+    /// Called after every frame with the wall time it took and where it went: `bench frames`.
+    std::function<void(const FrameTimes&)> onFrameTimed;
+    /// Called once with the seconds from opening the first screen (loading its level) to its first frame shown.
+    std::function<void(double loadS)> onFirstFrame;
 
     /// Opens this screen first instead of the title or a level (`abalike edit` opens the editor this way).
     std::function<std::unique_ptr<Screen>(App&)> firstScreen;

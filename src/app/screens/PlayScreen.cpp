@@ -336,6 +336,7 @@ void PlayScreen::refreshPreview()
     if (m_preview && key == m_previewKey)
         return;
     m_previewKey = key;
+    const sf::Clock clock;
     try
     {
         m_preview = m_session->preview(key.angleDeg, key.speedMps);
@@ -345,6 +346,7 @@ void PlayScreen::refreshPreview()
         // A preview the core cannot compute is not worth stopping the game for.
         m_preview.reset();
     }
+    m_app.frameTimes().previewS += static_cast<double>(clock.getElapsedTime().asMicroseconds()) * 1e-6;
 }
 
 void PlayScreen::frameUpdate(double frameS)
