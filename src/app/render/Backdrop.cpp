@@ -9,11 +9,27 @@
 namespace abalike::app
 {
 
-void Backdrop::paintSky(Mesh& mesh, const Camera& camera, float groundY, const Scenery& scenery)
+namespace
+{
+/// A gradient fill into the opaque batch when both its colours are opaque, else into the blended one.
+void addFill(Mesh& base, Mesh& detail, sf::Vector2f min, sf::Vector2f max, sf::Color atMinY, sf::Color atMaxY)
+{
+    Mesh& mesh = atMinY.a == 255 && atMaxY.a == 255 ? base : detail;
+    mesh.addGradientRect(min, max, atMinY, atMaxY);
+}
+} // namespace
+
+void Backdrop::paint(Mesh& base, Mesh& detail, const Camera& camera, float groundY, const Scenery& scenery)
+{
+    paintSky(base, detail, camera, groundY, scenery);
+    paintGround(base, detail, camera, groundY, scenery);
+}
+
+void Backdrop::paintSky(Mesh& base, Mesh& mesh, const Camera& camera, float groundY, const Scenery& scenery)
 {
     const sf::FloatRect view = camera.visibleWorld();
     const float top = view.top + view.height;
-    mesh.addGradientRect({view.left, groundY}, {view.left + view.width, top}, scenery.skyBottom, scenery.skyTop);
+    addFill(base, mesh, {view.left, groundY}, {view.left + view.width, top}, scenery.skyBottom, scenery.skyTop);
 
     DetailRandom random(7);
     const float skyHeight = top - groundY;
@@ -71,13 +87,14 @@ void Backdrop::paintHills(Mesh& mesh, const sf::FloatRect& view, float groundY, 
         const float radius = periodM * random.range(0.7f, 1.1f);
         if (x - radius > right)
             break;
-        // Low, so the structure, the preview dots and the labels stand out against the sky, not against a hill.
+        // Low, so the structure, the preview dots and the labels stand out against the sky, not against a hill. Only
+        // the half above the ground line: the ground is drawn first (opaque) and would not hide the lower half.
         const float height = periodM * random.range(0.07f, 0.13f) * (depth < 0.4f ? 1.3f : 1.0f);
-        mesh.addEllipse({x, groundY}, radius, height, colour, 32);
+        mesh.addUpperHalfEllipse({x, groundY}, radius, height, colour, 32);
     }
 }
 
-void Backdrop::paintGround(Mesh& mesh, const Camera& camera, float groundY, const Scenery& scenery)
+void Backdrop::paintGround(Mesh& base, Mesh& mesh, const Camera& camera, float groundY, const Scenery& scenery)
 {
     const sf::FloatRect view = camera.visibleWorld();
     const float left = view.left;
@@ -86,16 +103,20 @@ void Backdrop::paintGround(Mesh& mesh, const Camera& camera, float groundY, cons
     const float pixelM = camera.metresPerPixel();
     const float grass = std::max(0.3f, 7.0f * pixelM);
 
-    mesh.addGradientRect({left, bottom}, {right, groundY}, scenery.groundDark, scenery.ground);
+    addFill(base, mesh, {left, bottom}, {right, groundY}, scenery.groundDark, scenery.ground);
     // Pebbles in the earth.
     DetailRandom random(11);
     const int pebbles = std::clamp(static_cast<int>(view.width * 1.5f), 10, 200);
     for (int i = 0; i < pebbles; ++i)
     {
-        const sf::Vector2f p(random.range(left, right), random.range(bottom, groundY - grass));
-        mesh.addEllipse(p, std::max(0.08f, 2.0f * pixelM), std::max(0.05f, 1.4f * pixelM), scenery.groundDark, 8);
+        // Wholly under the grass band, which is drawn before them.
+        const float radiusY = std::max(0.05f, 1.4f * pixelM);
+        // y is drawn before x: the pebbles keep the places they have always had.
+        const float y = std::min(random.range(bottom, groundY - grass), groundY - grass - radiusY);
+        const sf::Vector2f p(random.range(left, right), y);
+        mesh.addEllipse(p, std::max(0.08f, 2.0f * pixelM), radiusY, scenery.groundDark, 8);
     }
-    mesh.addGradientRect({left, groundY - grass}, {right, groundY}, scenery.surfaceDark, scenery.surface);
+    addFill(base, mesh, {left, groundY - grass}, {right, groundY}, scenery.surfaceDark, scenery.surface);
     if (!scenery.blades)
         return;
     // Blades along the top edge.

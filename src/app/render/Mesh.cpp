@@ -73,6 +73,18 @@ void Mesh::addEllipse(sf::Vector2f centre, float radiusX, float radiusY, sf::Col
     }
 }
 
+void Mesh::addUpperHalfEllipse(sf::Vector2f centre, float radiusX, float radiusY, sf::Color colour, int segments)
+{
+    sf::Vector2f previous = centre + sf::Vector2f(radiusX, 0.0f);
+    for (int i = 1; 2 * i <= segments; ++i)
+    {
+        const float angle = kTwoPi * static_cast<float>(i) / static_cast<float>(segments);
+        const sf::Vector2f next = centre + sf::Vector2f(radiusX * std::cos(angle), radiusY * std::sin(angle));
+        addTriangle(centre, previous, next, colour);
+        previous = next;
+    }
+}
+
 void Mesh::addRing(sf::Vector2f centre, float radius, float width, sf::Color colour, int segments)
 {
     const float inner = radius - 0.5f * width;
@@ -126,10 +138,13 @@ void Mesh::addStar(sf::Vector2f centre, float outerRadius, float innerRadius, sf
     }
 }
 
-void Mesh::draw(sf::RenderTarget& target, const sf::Transform& transform) const
+void Mesh::draw(sf::RenderTarget& target, const sf::Transform& transform, const sf::BlendMode& blend) const
 {
+    if (m_vertices.getVertexCount() == 0)
+        return;
     sf::RenderStates states;
     states.transform = transform;
+    states.blendMode = blend;
     target.draw(m_vertices, states);
 }
 

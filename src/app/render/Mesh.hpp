@@ -28,6 +28,8 @@ public:
     void addGradientRect(sf::Vector2f min, sf::Vector2f max, sf::Color atMinY, sf::Color atMaxY);
     void addCircle(sf::Vector2f centre, float radius, sf::Color colour, int segments = 24);
     void addEllipse(sf::Vector2f centre, float radiusX, float radiusY, sf::Color colour, int segments = 24);
+    /// The half of an ellipse on the +y side of its centre: segments of the whole ellipse, half of them added.
+    void addUpperHalfEllipse(sf::Vector2f centre, float radiusX, float radiusY, sf::Color colour, int segments = 24);
     /// A circle outline of the given width, centred on the radius.
     void addRing(sf::Vector2f centre, float radius, float width, sf::Color colour, int segments = 24);
     /// A straight stroke with square ends.
@@ -39,7 +41,10 @@ public:
     /// A five-pointed star.
     void addStar(sf::Vector2f centre, float outerRadius, float innerRadius, sf::Color colour);
 
-    void draw(sf::RenderTarget& target, const sf::Transform& transform = sf::Transform::Identity) const;
+    /// blend: sf::BlendNone for opaque fills, which a software rasterizer draws without reading what is under them
+    /// and lets it drop whatever was drawn under them before.
+    void draw(sf::RenderTarget& target, const sf::Transform& transform = sf::Transform::Identity,
+              const sf::BlendMode& blend = sf::BlendAlpha) const;
     /// Vertices added so far (three per triangle).
     std::size_t vertexCount() const { return m_vertices.getVertexCount(); }
 

@@ -61,11 +61,11 @@ std::vector<sf::Vector2f> polygonPoints(const b2PolygonShape& shape)
 void WorldRenderer::drawBackground(sf::RenderTarget& target, const Camera& camera, const GameSession& session)
 {
     const auto groundY = static_cast<float>(session.level().groundY);
+    m_base.clear();
     m_mesh.clear();
     const Scenery& scenery = sceneryOf(levelTheme(session.level()));
     m_surface = scenery.surface; // the terrain's top edges wear the world's surface too
-    Backdrop::paintSky(m_mesh, camera, groundY, scenery);
-    Backdrop::paintGround(m_mesh, camera, groundY, scenery);
+    Backdrop::paint(m_base, m_mesh, camera, groundY, scenery);
     for (const Entity& entity : session.world().entities())
     {
         if (entity.alive && entity.body != nullptr && entity.kind == EntityKind::Terrain)
@@ -77,6 +77,7 @@ void WorldRenderer::drawBackground(sf::RenderTarget& target, const Camera& camer
                 addTerrain(entity, camera.metresPerPixel());
         }
     }
+    m_base.draw(target, camera.transform(), sf::BlendNone);
     m_mesh.draw(target, camera.transform());
 }
 

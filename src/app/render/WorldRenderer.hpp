@@ -36,6 +36,7 @@ private:
     void addWaitingBirds(const GameSession& session, float pixelM);
     void addOffscreenMarker(const Entity& bird, const Camera& camera);
 
+    Mesh m_base; ///< the backdrop's opaque fills, drawn without blending
     Mesh m_mesh;
     std::vector<bool> m_dazed; ///< by entity index
     const GameWorld* m_dazedWorld = nullptr;
