@@ -187,6 +187,7 @@ int App::run()
     {
         // The last frame as the screens are after its changes: what the player would see next. The trace lists
         // its texts, so a scripted run can check what a screen says.
+        m_screens.finishBackgroundWork();
         std::vector<std::string> texts;
         std::vector<ScreenRegion> regions;
         setDrawnTextSink(&texts);

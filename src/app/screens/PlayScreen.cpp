@@ -10,6 +10,7 @@
 
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/world/RestFindings.hpp>
+#include <chrono>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -105,12 +106,35 @@ void PlayScreen::resetAim()
 void PlayScreen::findRestProblems()
 {
     // A level file that does not stand plays, with what is wrong in the banner. Once per version of the file, not
-    // per restart: a large scene's 10 s rest check is not free.
+    // per restart, and on a worker thread: the check simulates 10 s of the level (a large scene's takes seconds)
+    // and the level starts without waiting for it. Its own world, its own copy of the level: nothing is shared.
+    finishBackgroundWork(); // a check of an older version is still running: let it end (its result is dropped)
     m_restFindings.clear();
-    if (!m_source.path.empty())
-        for (const LevelIssue& issue :
-             restIssues(m_source.level, Catalog::builtin(), checkRest(m_source.level), m_source.path))
-            m_restFindings.push_back(issue.format());
+    if (m_source.path.empty())
+        return;
+    m_restCheck =
+        std::async(std::launch::async,
+                   [level = m_source.level, path = m_source.path]
+                   {
+                       std::vector<std::string> findings;
+                       for (const LevelIssue& issue : restIssues(level, Catalog::builtin(), checkRest(level), path))
+                           findings.push_back(issue.format());
+                       return findings;
+                   });
+}
+
+void PlayScreen::collectRestProblems(bool wait)
+{
+    if (!m_restCheck.valid())
+        return;
+    if (!wait && m_restCheck.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+        return;
+    m_restFindings = m_restCheck.get();
+}
+
+void PlayScreen::finishBackgroundWork()
+{
+    collectRestProblems(true);
 }
 
 void PlayScreen::pollLevelFile()
@@ -354,6 +378,7 @@ void PlayScreen::frameUpdate(double frameS)
     pollLevelFile();
     syncScriptedAim();
     refreshPreview();
+    collectRestProblems(false);
     m_rig.update(cameraFocus(), frameS);
     for (const auto& layer : m_layers)
         layer->frameUpdate(*this, frameS);

@@ -17,6 +17,7 @@
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/LevelWatcher.hpp>
 #include <cstddef>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -62,6 +63,7 @@ public:
     const PlaySource& source() const { return m_source; }
 
     // PlayView
+    void finishBackgroundWork() override;
     App& app() override { return m_app; }
     const GameSession& session() const override { return *m_session; }
     const Camera& camera() const override { return m_rig.camera(); }
@@ -101,8 +103,10 @@ private:
     void fireScriptedShot();
     /// Writes each block broken and pig defeated since the last step to the trace as a "defeat" event.
     void traceDefeats();
-    /// Runs the rest check on the level file as loaded (m_restFindings), for the banner.
+    /// Starts the rest check of the level file as loaded on a worker thread (m_restFindings, for the banner).
     void findRestProblems();
+    /// Takes the rest check's findings once it has finished (wait: until it has).
+    void collectRestProblems(bool wait);
     void syncScriptedAim();
     double aimSpeedMps() const;
     void refreshPreview();
@@ -136,8 +140,9 @@ private:
     OverlayRenderer m_overlay;
     Hud m_hud;
     std::optional<LevelWatcher> m_watcher;
-    std::vector<std::string> m_reloadErrors; ///< problems of the last edit that did not load
-    std::vector<std::string> m_restFindings; ///< bodies of the level file that move with no shot fired
+    std::vector<std::string> m_reloadErrors;           ///< problems of the last edit that did not load
+    std::vector<std::string> m_restFindings;           ///< bodies of the level file that move with no shot fired
+    std::future<std::vector<std::string>> m_restCheck; ///< the rest check running on a worker thread
     ReloadNotice m_reloadNotice;
     std::vector<std::unique_ptr<PlayLayer>> m_layers;
 };

@@ -36,6 +36,8 @@ public:
     virtual void onResize(sf::Vector2u size) { (void)size; }
     /// The screen is on top again after the one above it left.
     virtual void onResume() {}
+    /// Waits for work the screen started in the background, so that a scripted run's last frame shows its result.
+    virtual void finishBackgroundWork() {}
     /// The window's close button was pressed while this screen is on top. Return true to handle it yourself (the
     /// editor asks to save unsaved changes first, then quits); false lets the app quit at once.
     virtual bool onCloseRequest() { return false; }

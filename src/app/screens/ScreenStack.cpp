@@ -99,6 +99,12 @@ void ScreenStack::draw(sf::RenderTarget& target) const
         m_screens[i]->draw(target);
 }
 
+void ScreenStack::finishBackgroundWork()
+{
+    for (const auto& screen : m_screens)
+        screen->finishBackgroundWork();
+}
+
 void ScreenStack::resize(sf::Vector2u size)
 {
     for (const auto& screen : m_screens)

@@ -44,6 +44,8 @@ public:
     void draw(sf::RenderTarget& target) const;
     /// Tells every screen the window's new size.
     void resize(sf::Vector2u size);
+    /// Every screen's finishBackgroundWork(), bottom first.
+    void finishBackgroundWork();
 
     void setObserver(Observer observer) { m_observer = std::move(observer); }
 
