@@ -179,6 +179,20 @@ TEST(RollingResistance, HoldsAPigOnlyOnSlopesGentlerThanItsCoefficient)
     EXPECT_GT(pigRollM(pigOnASlope(1.5), {}, 3.0), 0.2);
 }
 
+TEST(SettleStep, CountsItsSubStepsForALoadingScreen)
+{
+    // A 12-block tower settles in 3 sub-steps; a loading screen reads how many are done while the step runs.
+    GameWorld world(towerScene(12), Catalog::builtin());
+    EXPECT_FALSE(world.settled());
+    EXPECT_EQ(world.settleSubstepsPlanned(), 3);
+    EXPECT_EQ(world.settleSubstepsDone(), 0);
+    world.step();
+    EXPECT_TRUE(world.settled());
+    EXPECT_EQ(world.settleSubstepsDone(), 3);
+    world.step(); // later steps are not settle steps
+    EXPECT_EQ(world.settleSubstepsDone(), 3);
+}
+
 TEST(StackSubsteps, GrowWithTheDeepestStack)
 {
     const auto substeps = [](const LevelDef& level)

@@ -8,6 +8,7 @@
 #include <abalike/world/Catalog.hpp>
 #include <abalike/world/FirstImpact.hpp>
 #include <array>
+#include <atomic>
 #include <memory>
 #include <optional>
 #include <string>
@@ -170,6 +171,12 @@ public:
     int stackDepth() const { return m_stackDepth; }
     /// Velocity iterations of the settle step (see WorldSettings::settleIterations).
     int settleIterations() const { return m_settleIterations; }
+    /// True once the first step, the settle step, has been taken.
+    bool settled() const { return m_steps > 0; }
+    /// Sub-steps of the settle step done so far, of settleSubstepsPlanned(): a loading screen's progress while the
+    /// settle step runs on another thread (the one value safe to read meanwhile).
+    int settleSubstepsDone() const { return m_settleSubstepsDone.load(std::memory_order_relaxed); }
+    int settleSubstepsPlanned() const { return m_stackSubsteps; }
 
     /// Changes the air and gravity while the world runs (the sandbox's live environment): Box2D's gravity at once,
     /// and the launched bird's flight model from its current state on. Split birds and eggs already in the air keep
@@ -316,6 +323,7 @@ private:
     long m_steps = 0;
     int m_stackDepth = 0;
     int m_settleIterations = 0;
+    std::atomic<int> m_settleSubstepsDone{0};
     int m_lastSubsteps = 1;
     int m_stackSubsteps = 1;
     double m_lightestBodyKg = 0.0;    ///< lightest block or pig at the start; 0 when there is none

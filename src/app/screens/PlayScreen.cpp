@@ -2,14 +2,17 @@
 
 #include "cli/SessionJson.hpp"
 #include "render/CameraFocus.hpp"
+#include "render/TextFormat.hpp"
 #include "screens/App.hpp"
 #include "screens/PauseScreen.hpp"
 #include "screens/PlayDrawing.hpp"
 #include "screens/PlayToolbar.hpp"
 #include "screens/ResultsScreen.hpp"
+#include "ui/ProgressCard.hpp"
 
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/world/RestFindings.hpp>
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <iostream>
@@ -61,6 +64,31 @@ void PlayScreen::startSession(bool withOpening)
     m_trails.onLevelStart(*m_session);
     for (const auto& layer : m_layers)
         layer->onLevelStart(*this);
+    startSettling();
+}
+
+void PlayScreen::startSettling()
+{
+    // A scripted run settles in its first physics step as it always has, so its frames are the same on every run.
+    if (m_app.scripted())
+        return;
+    // The settle step is the world's first step; on a worker thread, so that a large level (seconds for the
+    // 1 000-block wall) shows its progress instead of a window that does not answer. Until it ends, nothing else
+    // touches the session: no input, no update, no drawing of the world.
+    GameSession* session = m_session.get();
+    m_settling = std::async(std::launch::async, [session] { session->step(); });
+    // Most levels settle in milliseconds: wait that long with nothing shown; a longer load shows the progress card.
+    m_settling.wait_for(kQuietLoad);
+    finishSettling(false);
+}
+
+void PlayScreen::finishSettling(bool wait)
+{
+    if (!m_settling.valid())
+        return;
+    if (!wait && m_settling.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+        return;
+    m_settling.get(); // what the step threw, if anything, is thrown here
 }
 
 void PlayScreen::restartLevel()
@@ -75,6 +103,7 @@ void PlayScreen::restartLevel()
     m_trails.onLevelStart(*m_session);
     for (const auto& layer : m_layers)
         layer->onLevelStart(*this);
+    startSettling();
 }
 
 std::optional<std::size_t> PlayScreen::nextLevelIndex() const
@@ -134,6 +163,7 @@ void PlayScreen::collectRestProblems(bool wait)
 
 void PlayScreen::finishBackgroundWork()
 {
+    finishSettling(true);
     collectRestProblems(true);
 }
 
@@ -159,6 +189,8 @@ void PlayScreen::pollLevelFile()
 
 void PlayScreen::handleEvent(const sf::Event& event)
 {
+    if (settling())
+        return;
     // Any key, button or wheel ends the opening pan, and still does what it does.
     if (event.type == sf::Event::KeyPressed || event.type == sf::Event::MouseButtonPressed ||
         event.type == sf::Event::MouseWheelScrolled)
@@ -221,6 +253,8 @@ bool PlayScreen::playerMayAim() const
 void PlayScreen::fixedUpdate(double dtS)
 {
     (void)dtS; // the session steps at its own fixed rate, which is the app's
+    if (settling())
+        return;
     if (!m_frozen && m_slowMotion.takeStep())
         physicsStep();
 }
@@ -375,6 +409,9 @@ void PlayScreen::refreshPreview()
 
 void PlayScreen::frameUpdate(double frameS)
 {
+    finishSettling(false);
+    if (settling())
+        return;
     pollLevelFile();
     syncScriptedAim();
     refreshPreview();
@@ -400,12 +437,32 @@ void PlayScreen::onResize(sf::Vector2u size)
 
 void PlayScreen::draw(sf::RenderTarget& target)
 {
+    if (settling())
+    {
+        drawSettleProgress(target);
+        return;
+    }
     drawPlay(target, *this, m_world, m_overlay, m_hud, m_aim.pullOffset(), m_aim.dragging(), m_layers);
     if (!m_reloadErrors.empty())
         m_reloadNotice.draw(target, target.getSize(), m_reloadErrors, static_cast<float>(m_app.settings().textScale));
     else
         m_reloadNotice.draw(target, target.getSize(), m_restFindings, static_cast<float>(m_app.settings().textScale),
                             ReloadNotice::kDoesNotStand);
+}
+
+void PlayScreen::drawSettleProgress(sf::RenderTarget& target) const
+{
+    const GameWorld& world = m_session->world();
+    const int planned = std::max(1, world.settleSubstepsPlanned());
+    const int done = std::min(world.settleSubstepsDone(), planned);
+    const std::size_t bodies = m_source.level.blocks.size() + m_source.level.pigs.size();
+    Progress progress;
+    progress.title = "Loading " + m_source.level.title;
+    progress.detail = "Settling " + formatPoints(static_cast<int>(bodies)) + " bodies (part " +
+                      std::to_string(std::min(done + 1, planned)) + " of " + std::to_string(planned) +
+                      ") so that they stand from the first frame";
+    progress.fraction = static_cast<float>(done) / static_cast<float>(planned);
+    drawProgressCard(target, m_app.font(), progress, m_app.textSize(22.0f), m_app.textSize(15.0f), m_app.uiScale());
 }
 
 } // namespace abalike::app

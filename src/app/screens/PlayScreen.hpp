@@ -16,6 +16,7 @@
 
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/LevelWatcher.hpp>
+#include <chrono>
 #include <cstddef>
 #include <future>
 #include <memory>
@@ -107,6 +108,12 @@ private:
     void findRestProblems();
     /// Takes the rest check's findings once it has finished (wait: until it has).
     void collectRestProblems(bool wait);
+    /// Starts the session's settle step (its first step) on a worker thread in live play.
+    void startSettling();
+    /// Ends the settle step's worker once it has finished (wait: until it has).
+    void finishSettling(bool wait);
+    bool settling() const { return m_settling.valid(); }
+    void drawSettleProgress(sf::RenderTarget& target) const;
     void syncScriptedAim();
     double aimSpeedMps() const;
     void refreshPreview();
@@ -143,6 +150,9 @@ private:
     std::vector<std::string> m_reloadErrors;           ///< problems of the last edit that did not load
     std::vector<std::string> m_restFindings;           ///< bodies of the level file that move with no shot fired
     std::future<std::vector<std::string>> m_restCheck; ///< the rest check running on a worker thread
+    std::future<void> m_settling;                      ///< the settle step running on a worker thread (live play)
+    /// A load shorter than this shows nothing; a longer one shows its progress.
+    static constexpr std::chrono::milliseconds kQuietLoad{300};
     ReloadNotice m_reloadNotice;
     std::vector<std::unique_ptr<PlayLayer>> m_layers;
 };

@@ -146,6 +146,8 @@ void GameWorld::step()
             m_settings.positionIterations);
         if (rolling > 0.0)
             resistRolling(m_entities, rolling);
+        if (settle)
+            m_settleSubstepsDone.fetch_add(1, std::memory_order_relaxed);
     }
     ++m_steps;
     m_world->ClearForces();
