@@ -1,6 +1,6 @@
 #include "render/Label.hpp"
 
-#include <SFML/Graphics/Text.hpp>
+#include <SFML/Graphics/VertexArray.hpp>
 #include <algorithm>
 #include <cmath>
 
@@ -12,11 +12,74 @@ sf::String utf8(std::string_view text)
     return sf::String::fromUtf8(text.begin(), text.end());
 }
 
+namespace
+{
+/// Lays a line of text out as sf::Text does in its regular style (kerning, spaces, tabs and new lines alike), calling
+/// visit(glyph, pen) for each visible glyph with the pen at its baseline. Returns the right edge sf::Text's local
+/// bounds report (left + width). One pass, no sf::Text: a frame lays out a few hundred labels.
+template <class Visit>
+float layoutGlyphs(const sf::Font& font, const sf::String& text, unsigned size, Visit&& visit)
+{
+    const float whitespace = font.getGlyph(U' ', size, false).advance;
+    const float lineSpacing = font.getLineSpacing(size);
+    float x = 0.0f;
+    auto y = static_cast<float>(size);
+    float right = 0.0f;
+    sf::Uint32 previous = 0;
+    for (const sf::Uint32 current : text)
+    {
+        if (current == U'\r')
+            continue;
+        x += font.getKerning(previous, current, size);
+        previous = current;
+        if (current == U' ' || current == U'\t' || current == U'\n')
+        {
+            if (current == U' ')
+                x += whitespace;
+            else if (current == U'\t')
+                x += 4.0f * whitespace;
+            else
+            {
+                y += lineSpacing;
+                x = 0.0f;
+            }
+            right = std::max(right, x);
+            continue;
+        }
+        const sf::Glyph& glyph = font.getGlyph(current, size, false);
+        visit(glyph, sf::Vector2f(x, y));
+        right = std::max(right, x + glyph.bounds.left + glyph.bounds.width);
+        x += glyph.advance;
+    }
+    return right;
+}
+
+/// Two triangles for a glyph with a pixel of padding around it, as sf::Text draws them (the padding keeps the
+/// glyph's antialiased edge).
+void appendGlyphQuad(sf::VertexArray& vertices, sf::Vector2f pen, const sf::Glyph& glyph, sf::Color colour)
+{
+    constexpr float kPadding = 1.0f;
+    const float left = pen.x + glyph.bounds.left - kPadding;
+    const float top = pen.y + glyph.bounds.top - kPadding;
+    const float right = pen.x + glyph.bounds.left + glyph.bounds.width + kPadding;
+    const float bottom = pen.y + glyph.bounds.top + glyph.bounds.height + kPadding;
+    const float u1 = static_cast<float>(glyph.textureRect.left) - kPadding;
+    const float v1 = static_cast<float>(glyph.textureRect.top) - kPadding;
+    const float u2 = static_cast<float>(glyph.textureRect.left + glyph.textureRect.width) + kPadding;
+    const float v2 = static_cast<float>(glyph.textureRect.top + glyph.textureRect.height) + kPadding;
+    vertices.append(sf::Vertex({left, top}, colour, {u1, v1}));
+    vertices.append(sf::Vertex({right, top}, colour, {u2, v1}));
+    vertices.append(sf::Vertex({left, bottom}, colour, {u1, v2}));
+    vertices.append(sf::Vertex({left, bottom}, colour, {u1, v2}));
+    vertices.append(sf::Vertex({right, top}, colour, {u2, v1}));
+    vertices.append(sf::Vertex({right, bottom}, colour, {u2, v2}));
+}
+} // namespace
+
 sf::Vector2f measureText(const sf::Font& font, const sf::String& text, unsigned size)
 {
-    const sf::Text label(text, font, size);
-    const sf::FloatRect bounds = label.getLocalBounds();
-    return {bounds.left + bounds.width, font.getLineSpacing(size)};
+    const float right = layoutGlyphs(font, text, size, [](const sf::Glyph&, sf::Vector2f) {});
+    return {right, font.getLineSpacing(size)};
 }
 
 std::vector<std::string> wrapText(const sf::Font& font, std::string_view text, unsigned size, float maxWidth)
@@ -61,7 +124,6 @@ sf::FloatRect drawLabel(sf::RenderTarget& target, const sf::Font& font, const sf
         const std::basic_string<sf::Uint8> utf8Text = text.toUtf8();
         g_drawnTextSink->emplace_back(utf8Text.begin(), utf8Text.end());
     }
-    sf::Text label(text, font, size);
     const float width = measureText(font, text, size).x;
     if (align == Align::Centre)
         position.x -= 0.5f * width;
@@ -70,13 +132,24 @@ sf::FloatRect drawLabel(sf::RenderTarget& target, const sf::Font& font, const sf
     // Whole pixels keep glyphs sharp.
     position = {std::round(position.x), std::round(position.y)};
 
+    // The shadow and the text in one batch and one draw call, the shadow first (below).
+    static sf::VertexArray vertices(sf::Triangles);
+    vertices.clear();
     const float shadowOffset = std::max(1.0f, static_cast<float>(size) / 14.0f);
-    label.setFillColor(sf::Color(0, 0, 0, static_cast<sf::Uint8>(colour.a * 0.55f)));
-    label.setPosition(position + sf::Vector2f(shadowOffset, shadowOffset));
-    target.draw(label);
-    label.setFillColor(colour);
-    label.setPosition(position);
-    target.draw(label);
+    const sf::Vector2f shadowAt = position + sf::Vector2f(shadowOffset, shadowOffset);
+    const sf::Color shadow(0, 0, 0, static_cast<sf::Uint8>(colour.a * 0.55f));
+    layoutGlyphs(font, text, size,
+                 [&](const sf::Glyph& glyph, sf::Vector2f pen)
+                 { appendGlyphQuad(vertices, shadowAt + pen, glyph, shadow); });
+    layoutGlyphs(font, text, size,
+                 [&](const sf::Glyph& glyph, sf::Vector2f pen)
+                 { appendGlyphQuad(vertices, position + pen, glyph, colour); });
+    if (vertices.getVertexCount() > 0)
+    {
+        sf::RenderStates states;
+        states.texture = &font.getTexture(size); // after the layout: new glyphs may have grown the texture
+        target.draw(vertices, states);
+    }
     return {position, {width, font.getLineSpacing(size)}};
 }
 

@@ -36,6 +36,36 @@ std::vector<sf::Vector2f> worldPoints(std::span<const std::array<double, 3>> pat
         points.push_back(toVector(point));
     return points;
 }
+
+/// The window grown by margin pixels on every side: what is drawn outside it cannot show (a camera shake moves the
+/// picture by a few pixels at most).
+sf::FloatRect grownWindow(const Camera& camera, float margin)
+{
+    const sf::Vector2f size(camera.windowSize());
+    return {-margin, -margin, size.x + 2.0f * margin, size.y + 2.0f * margin};
+}
+
+/// Adds the parts of a screen polyline that cross the rectangle, each run of visible segments as one polyline: a
+/// long flight zoomed in leaves most of its steps off the window.
+void addVisiblePolyline(Mesh& mesh, std::span<const sf::Vector2f> points, const sf::FloatRect& window, float width,
+                        sf::Color colour)
+{
+    const auto crosses = [&window](sf::Vector2f a, sf::Vector2f b)
+    {
+        const sf::FloatRect box(std::min(a.x, b.x), std::min(a.y, b.y), std::abs(a.x - b.x), std::abs(a.y - b.y));
+        return window.intersects(box) || window.contains(a);
+    };
+    std::size_t start = 0;
+    for (std::size_t i = 1; i <= points.size(); ++i)
+    {
+        const bool visible = i < points.size() && crosses(points[i - 1], points[i]);
+        if (visible)
+            continue;
+        if (i - start >= 2)
+            mesh.addPolyline(points.subspan(start, i - start), width, colour);
+        start = i;
+    }
+}
 } // namespace
 
 void OverlayRenderer::addDots(const Camera& camera, std::span<const sf::Vector2f> points, float radius, float opacity)
@@ -54,6 +84,9 @@ void OverlayRenderer::addDots(const Camera& camera, std::span<const sf::Vector2f
         radius = std::clamp(0.3f * gaps[gaps.size() / 2], 1.5f, radius);
     }
     const float outline = std::min(1.5f, 0.5f * radius);
+    // Dots off the window are left out: a zoomed-in view of a long flight shows few of its steps.
+    const sf::FloatRect window = grownWindow(camera, radius + outline + 8.0f);
+    std::erase_if(screen, [&window](sf::Vector2f point) { return !window.contains(point); });
     for (const sf::Vector2f& point : screen)
         m_mesh.addCircle(point, radius + outline, faded(palette::kPreviewOutline, opacity), 10);
     for (const sf::Vector2f& point : screen)
@@ -131,8 +164,9 @@ void OverlayRenderer::drawShotPaths(sf::RenderTarget& target, const Camera& came
     std::vector<sf::Vector2f> actual = worldPoints(shot.actualPath);
     for (sf::Vector2f& point : actual)
         point = camera.toScreen(point);
-    m_mesh.addPolyline(actual, 6.0f, faded(sf::Color(90, 40, 0), 0.5f * opacity));
-    m_mesh.addPolyline(actual, 4.0f, faded(palette::kActualPath, opacity));
+    const sf::FloatRect window = grownWindow(camera, 16.0f);
+    addVisiblePolyline(m_mesh, actual, window, 6.0f, faded(sf::Color(90, 40, 0), 0.5f * opacity));
+    addVisiblePolyline(m_mesh, actual, window, 4.0f, faded(palette::kActualPath, opacity));
     addDots(camera, worldPoints(shot.predictedPath), kDotRadiusPx - 1.5f, 0.6f * opacity);
     m_mesh.draw(target);
 }
