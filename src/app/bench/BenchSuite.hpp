@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace abalike::app
 {
@@ -10,6 +11,7 @@ struct BenchOptions
 {
     std::string outDir = "bench-out"; ///< where the suite writes its .csv/.md/.png files
     bool quick = false;               ///< fewer repetitions (used by ctest smoke runs)
+    std::vector<std::string> scenes;  ///< `bench frames --scene`: only these (level ids, lesson ids, stress scenes)
 };
 
 // Each suite prints its table, writes its files into outDir and returns the exit code.

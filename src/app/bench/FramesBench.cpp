@@ -203,7 +203,25 @@ int runFramesBench(const BenchOptions& options)
     const int frames = options.quick ? kQuickFrames : kFrames;
     const int previewCalls = options.quick ? kQuickPreviewCalls : kPreviewCalls;
     const Campaign campaign = loadCampaignLevels(campaignManifest(), Catalog::builtin());
-    const std::vector<Scene> scenes = framesScenes(campaign, options.quick);
+    std::vector<Scene> scenes = framesScenes(campaign, options.quick && options.scenes.empty());
+    if (!options.scenes.empty())
+    {
+        // Only the scenes asked for, in the order asked; every one must exist.
+        std::vector<Scene> chosen;
+        for (const std::string& name : options.scenes)
+        {
+            const auto found =
+                std::find_if(scenes.begin(), scenes.end(), [&name](const Scene& s) { return s.name == name; });
+            if (found == scenes.end())
+            {
+                std::cerr << "bench frames: no scene \"" << name << "\" (expected a campaign level id such as 1-3, a "
+                          << "lesson id such as lesson-angle, or wall-20x50-mixed)\n";
+                return 2;
+            }
+            chosen.push_back(*found);
+        }
+        scenes = std::move(chosen);
+    }
 
     // The large window only where the screen holds it (Xvfb's screen is set on its command line).
     const sf::VideoMode desktop = sf::VideoMode::getDesktopMode();

@@ -44,7 +44,9 @@ CommandRunner addBenchCommand(CLI::App& app)
         {"reference", "predicted vs actual first contact on the reference shots", runReferenceBench},
         {"perf", "world step times per level, overhead against raw Box2D, headless speed", runPerfBench},
         {"soak", "10 000 random headless shots across the campaign; fails if resident memory grows > 5%", runSoakBench},
-        {"frames", "frame times of the game loop under the current display (1280x720, every overlay on)",
+        {"frames",
+         "frame times and load times of the game loop under the current display: every level and lesson, 1280x720 "
+         "and 1920x1080, every overlay on",
          runFramesBench},
         {"feel", "break-through, toppling defeats and the pace of turns over the campaign", runFeelBench},
     };
@@ -53,6 +55,10 @@ CommandRunner addBenchCommand(CLI::App& app)
         CLI::App* sub = cmd->add_subcommand(suite.name, suite.help);
         sub->add_option("--out", args->options.outDir, "output folder (default bench-out)");
         sub->add_flag("--quick", args->options.quick, "fewer repetitions, for smoke tests");
+        if (std::string_view(suite.name) == "frames")
+            sub->add_option("--scene", args->options.scenes,
+                            "only this scene: a level id (1-3), a lesson id (lesson-angle) or a stress scene "
+                            "(wall-20x50-mixed); repeat for more");
         sub->callback([chosen, run = suite.run] { *chosen = run; });
     }
     return [args, chosen]
