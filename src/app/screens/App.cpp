@@ -164,7 +164,7 @@ int App::run()
         const bool lastFrame = offline && m_frame >= *m_options.frames;
         if (!lastFrame)
         {
-            drawFrame();
+            drawFrame(true);
             m_frameTimes.drawS += lap();
             m_window.display();
             m_frameTimes.displayS += lap();
@@ -314,10 +314,13 @@ void App::toggleHelp()
         m_screens.push(std::make_unique<HelpScreen>(*this));
 }
 
-void App::drawFrame()
+void App::drawFrame(bool reuseCovered)
 {
     m_window.clear(palette::kSkyBottom);
-    m_screens.draw(m_window);
+    if (reuseCovered)
+        m_screens.drawWithSnapshot(m_window);
+    else
+        m_screens.draw(m_window);
     drawNotices();
 }
 
@@ -366,6 +369,7 @@ void App::updateSettings(const Settings& settings)
 {
     const Settings before = m_settings;
     m_settings = settings;
+    m_screens.invalidateSnapshot(); // the screens under the settings show the new look at once
     setActiveLook(lookFor(settings.palette, settings.highContrast));
     if (settings.fullscreen != before.fullscreen || settings.windowWidth != before.windowWidth ||
         settings.windowHeight != before.windowHeight)

@@ -95,7 +95,9 @@ private:
     /// True when the app handled the event itself (window close, resize, global keys).
     bool handleGlobal(const sf::Event& event);
     int stepsForFrame(double frameS);
-    void drawFrame();
+    /// reuseCovered: screens under an overlay come from the stack's copy of them (ScreenStack::drawWithSnapshot);
+    /// false draws every screen, as the last frame of a scripted run does to record its texts and panels.
+    void drawFrame(bool reuseCovered = false);
     void drawNotices();
     void takeStoreMessages();
 

@@ -65,6 +65,7 @@ public:
 
     // PlayView
     void finishBackgroundWork() override;
+    bool changesWhileCovered() const override { return settling(); }
     App& app() override { return m_app; }
     const GameSession& session() const override { return *m_session; }
     const Camera& camera() const override { return m_rig.camera(); }

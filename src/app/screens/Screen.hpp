@@ -36,6 +36,9 @@ public:
     virtual void onResize(sf::Vector2u size) { (void)size; }
     /// The screen is on top again after the one above it left.
     virtual void onResume() {}
+    /// True while the screen's picture changes even when another screen covers it (only the top screen is
+    /// updated, so most screens look the same under an overlay; ScreenStack::drawWithSnapshot relies on it).
+    virtual bool changesWhileCovered() const { return false; }
     /// Waits for work the screen started in the background, so that a scripted run's last frame shows its result.
     virtual void finishBackgroundWork() {}
     /// The window's close button was pressed while this screen is on top. Return true to handle it yourself (the

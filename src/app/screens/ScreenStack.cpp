@@ -1,5 +1,7 @@
 #include "screens/ScreenStack.hpp"
 
+#include <SFML/Graphics/Sprite.hpp>
+
 namespace abalike::app
 {
 
@@ -29,6 +31,7 @@ bool ScreenStack::applyPending()
 {
     if (m_pending.empty())
         return false;
+    m_snapshotValid = false;
     // Screens may queue more changes while being created or resumed: take the queue first.
     std::vector<Pending> pending = std::move(m_pending);
     m_pending.clear();
@@ -99,6 +102,44 @@ void ScreenStack::draw(sf::RenderTarget& target) const
         m_screens[i]->draw(target);
 }
 
+void ScreenStack::drawWithSnapshot(sf::RenderWindow& window)
+{
+    if (m_screens.empty())
+        return;
+    const std::size_t topIndex = m_screens.size() - 1;
+    std::size_t first = topIndex;
+    while (first > 0 && m_screens[first]->isOverlay())
+        --first;
+    bool covered = first < topIndex;
+    for (std::size_t i = first; i < topIndex && covered; ++i)
+        covered = !m_screens[i]->changesWhileCovered();
+    if (!covered)
+    {
+        m_snapshotValid = false;
+        draw(window);
+        return;
+    }
+    const sf::Vector2u size = window.getSize();
+    if (m_snapshotValid && m_snapshot->getSize() == size)
+    {
+        const sf::View view = window.getView();
+        window.setView(sf::View(sf::FloatRect(0.0f, 0.0f, static_cast<float>(size.x), static_cast<float>(size.y))));
+        window.draw(sf::Sprite(*m_snapshot), sf::RenderStates(sf::BlendNone));
+        window.setView(view);
+    }
+    else
+    {
+        for (std::size_t i = first; i < topIndex; ++i)
+            m_screens[i]->draw(window);
+        if (!m_snapshot)
+            m_snapshot = std::make_unique<sf::Texture>();
+        m_snapshotValid = m_snapshot->getSize() == size || m_snapshot->create(size.x, size.y);
+        if (m_snapshotValid)
+            m_snapshot->update(window);
+    }
+    m_screens[topIndex]->draw(window);
+}
+
 void ScreenStack::finishBackgroundWork()
 {
     for (const auto& screen : m_screens)
@@ -107,6 +148,7 @@ void ScreenStack::finishBackgroundWork()
 
 void ScreenStack::resize(sf::Vector2u size)
 {
+    m_snapshotValid = false;
     for (const auto& screen : m_screens)
         screen->onResize(size);
 }

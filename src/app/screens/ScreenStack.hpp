@@ -3,6 +3,8 @@
 #include "screens/Screen.hpp"
 
 #include <SFML/Graphics/RenderTarget.hpp>
+#include <SFML/Graphics/RenderWindow.hpp>
+#include <SFML/Graphics/Texture.hpp>
 #include <functional>
 #include <memory>
 #include <string>
@@ -42,6 +44,13 @@ public:
 
     /// Draws from the topmost full screen up to the top.
     void draw(sf::RenderTarget& target) const;
+    /// Draws like draw(), but what lies under the top screen is a copy of the window taken the first frame it was
+    /// drawn: the screens under the top are not updated, so under a pause menu or a results card the whole scene
+    /// costs one opaque copy instead of every layer again. Taken again after any change to the stack, the window's
+    /// size or the settings (invalidateSnapshot()), and not used while a covered screen changesWhileCovered().
+    void drawWithSnapshot(sf::RenderWindow& window);
+    /// Forgets the copy: the next frame draws the covered screens again.
+    void invalidateSnapshot() { m_snapshotValid = false; }
     /// Tells every screen the window's new size.
     void resize(sf::Vector2u size);
     /// Every screen's finishBackgroundWork(), bottom first.
@@ -67,6 +76,8 @@ private:
     std::vector<std::unique_ptr<Screen>> m_screens;
     std::vector<Pending> m_pending;
     Observer m_observer;
+    std::unique_ptr<sf::Texture> m_snapshot; ///< made on first use: a texture needs a display, the stack does not
+    bool m_snapshotValid = false;
 };
 
 } // namespace abalike::app
