@@ -3,6 +3,7 @@
 // walkthrough holds the world still, and every teaching key works in flight without a crash.
 #include "RunGame.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -281,5 +282,37 @@ TEST_F(TeachFlow, EveryTeachingKeyInFlightAndWhileAiming)
     EXPECT_GT(std::filesystem::file_size(shot), 10000u);
 }
 
+TEST_F(TeachFlow, AfterTheImpactEveryPanelIsInsideTheWindow)
+{
+    // 1-3's reference shot with the overlay on: the energy and first-impact panels, the Why panel and the feedback
+    // card all stand at 300 frames. The impact panel is as wide as its numbers (it once reached past the right
+    // edge), the energy panel as wide as its balance line.
+    const GameRun run = play(sourceFile("levels/1-3-hilltop.json") + " --frames 300 --shot 55,18" +
+                             script(R"([{"frame": 2, "key": "T"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const nlohmann::json* panels = nullptr;
+    for (const nlohmann::json& line : run.trace)
+        if (line.value("event", "") == "panels")
+            panels = &line;
+    ASSERT_NE(panels, nullptr);
+    const double width = (*panels)["window"][0].get<double>();
+    const double height = (*panels)["window"][1].get<double>();
+    std::vector<std::string> names;
+    for (const nlohmann::json& panel : (*panels)["drawn"])
+    {
+        const std::string name = panel.value("name", "");
+        names.push_back(name);
+        const double x = panel["x"].get<double>();
+        const double y = panel["y"].get<double>();
+        EXPECT_GE(x, 0.0) << name;
+        EXPECT_GE(y, 0.0) << name;
+        EXPECT_LE(x + panel["w"].get<double>(), width + 0.5) << name;
+        EXPECT_LE(y + panel["h"].get<double>(), height + 0.5) << name;
+    }
+    EXPECT_NE(std::find(names.begin(), names.end(), "energy"), names.end());
+    EXPECT_NE(std::find_if(names.begin(), names.end(),
+                           [](const std::string& name) { return name.rfind("First impact", 0) == 0; }),
+              names.end());
+}
 } // namespace
 } // namespace abalike::test

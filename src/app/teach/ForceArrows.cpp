@@ -144,13 +144,18 @@ sf::FloatRect drawEnergyBars(sf::RenderTarget& target, const sf::Font& font, sf:
         labelWidth = std::max(labelWidth, measureText(font, utf8(bar.label), rowSize).x);
     const float valueWidth = measureText(font, utf8("-00000 J"), rowSize).x;
     const float barWidth = 170.0f * scale;
-    const float width = 2.0f * pad + labelWidth + barWidth + valueWidth + 20.0f * scale;
+    // Wide enough for the bars' rows, the title and the balance line under them.
+    const std::string title =
+        atContact ? "Energy at the first contact" : "Energy: at launch = kinetic + potential + drag";
+    const std::string balance = "at launch (kinetic + potential) " + formatFixed(launch, 0) + " J   balance off by " +
+                                scientific(energy.balanceResidualJ()) + " J";
+    const float width = std::max({2.0f * pad + labelWidth + barWidth + valueWidth + 20.0f * scale,
+                                  2.0f * pad + measureText(font, utf8(title), titleSize).x,
+                                  2.0f * pad + measureText(font, utf8(balance), rowSize).x});
     const float height = 2.0f * pad + titleHeight + rowHeight * 5.2f;
     const sf::FloatRect rect(topRight.x - width, topRight.y, width, height);
     drawTeachPanel(target, rect, scale, "energy");
-    drawLabel(target, font,
-              utf8(atContact ? "Energy at the first contact" : "Energy: at launch = kinetic + potential + drag"),
-              {rect.left + pad, rect.top + pad}, titleSize, palette::kStar);
+    drawLabel(target, font, utf8(title), {rect.left + pad, rect.top + pad}, titleSize, palette::kStar);
 
     // Bars share one scale: the launch energy spans barWidth; a negative amount (a tailwind's "loss", a bird
     // below y = 0) reaches left of the zero line.
@@ -179,10 +184,7 @@ sf::FloatRect drawEnergyBars(sf::RenderTarget& target, const sf::Font& font, sf:
     mesh.addLine({launchX, barsTop}, {launchX, y}, 2.0f * scale, palette::kStar);
     mesh.addLine({zero, barsTop}, {zero, y}, 1.0f * scale, palette::kTextDim);
     mesh.draw(target);
-    drawLabel(target, font,
-              utf8("at launch (kinetic + potential) " + formatFixed(launch, 0) + " J   balance off by " +
-                   scientific(energy.balanceResidualJ()) + " J"),
-              {rect.left + pad, y + 0.1f * rowHeight}, rowSize, palette::kStar);
+    drawLabel(target, font, utf8(balance), {rect.left + pad, y + 0.1f * rowHeight}, rowSize, palette::kStar);
     return rect;
 }
 

@@ -1,5 +1,7 @@
 #include "teach/ImpactPanel.hpp"
 
+#include <algorithm>
+
 #include "render/TextFormat.hpp"
 #include "teach/TeachDraw.hpp"
 
@@ -34,7 +36,7 @@ std::string kinetic(double massKg, double inertia, const BodyVelocity& v)
 
 } // namespace
 
-sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topLeft,
+sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topRight,
                               const FirstImpact& impact, double bodyStrengthNs, unsigned titleSize, unsigned rowSize,
                               float scale)
 {
@@ -80,7 +82,8 @@ sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf
     else
         rows.push_back({"Momentum is kept; the kinetic energy lost became heat, sound and deformation.", ""});
     const TextPanel panel("First impact: t = " + withUnit(impact.tS, 3, "s"), std::move(rows));
-    return panel.draw(target, font, topLeft, titleSize, rowSize, scale);
+    const sf::Vector2f size = panel.measure(font, titleSize, rowSize, scale);
+    return panel.draw(target, font, {std::max(0.0f, topRight.x - size.x), topRight.y}, titleSize, rowSize, scale);
 }
 
 } // namespace abalike::app

@@ -244,10 +244,8 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
                 const double strength = shot.impact->bodyKind == EntityKind::Pig
                                             ? (pig ? pig->healthNs : 0.0)
                                             : (material ? material->strengthNs : 0.0);
-                // The impact panel is as wide as it needs; keep it in the right column.
-                const float width = 470.0f * scale;
-                below(drawImpactPanel(target, *font, {right.x - width, right.y}, *shot.impact, strength, titleSize,
-                                      rowSize, scale));
+                // The impact panel is as wide as its numbers need, its right edge on the column's.
+                below(drawImpactPanel(target, *font, right, *shot.impact, strength, titleSize, rowSize, scale));
             }
         }
     }
