@@ -124,7 +124,18 @@ sf::FloatRect drawLabel(sf::RenderTarget& target, const sf::Font& font, const sf
         const std::basic_string<sf::Uint8> utf8Text = text.toUtf8();
         g_drawnTextSink->emplace_back(utf8Text.begin(), utf8Text.end());
     }
-    const float width = measureText(font, text, size).x;
+    // One layout pass: the glyphs and their pens, and the width the alignment needs.
+    struct PlacedGlyph
+    {
+        const sf::Glyph* glyph;
+        sf::Vector2f pen;
+    };
+    static std::vector<PlacedGlyph> placed;
+    placed.clear();
+    const float width = layoutGlyphs(font, text, size,
+                                     [](const sf::Glyph& glyph, sf::Vector2f pen) {
+                                         placed.push_back({&glyph, pen});
+                                     });
     if (align == Align::Centre)
         position.x -= 0.5f * width;
     else if (align == Align::Right)
@@ -132,18 +143,16 @@ sf::FloatRect drawLabel(sf::RenderTarget& target, const sf::Font& font, const sf
     // Whole pixels keep glyphs sharp.
     position = {std::round(position.x), std::round(position.y)};
 
-    // The shadow and the text in one batch and one draw call, the shadow first (below).
+    // The shadow and the text in one batch and one draw call, every shadow first (below every glyph).
     static sf::VertexArray vertices(sf::Triangles);
     vertices.clear();
     const float shadowOffset = std::max(1.0f, static_cast<float>(size) / 14.0f);
     const sf::Vector2f shadowAt = position + sf::Vector2f(shadowOffset, shadowOffset);
     const sf::Color shadow(0, 0, 0, static_cast<sf::Uint8>(colour.a * 0.55f));
-    layoutGlyphs(font, text, size,
-                 [&](const sf::Glyph& glyph, sf::Vector2f pen)
-                 { appendGlyphQuad(vertices, shadowAt + pen, glyph, shadow); });
-    layoutGlyphs(font, text, size,
-                 [&](const sf::Glyph& glyph, sf::Vector2f pen)
-                 { appendGlyphQuad(vertices, position + pen, glyph, colour); });
+    for (const PlacedGlyph& g : placed)
+        appendGlyphQuad(vertices, shadowAt + g.pen, *g.glyph, shadow);
+    for (const PlacedGlyph& g : placed)
+        appendGlyphQuad(vertices, position + g.pen, *g.glyph, colour);
     if (vertices.getVertexCount() > 0)
     {
         sf::RenderStates states;

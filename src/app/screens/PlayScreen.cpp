@@ -137,7 +137,7 @@ void PlayScreen::findRestProblems()
     // A level file that does not stand plays, with what is wrong in the banner. Once per version of the file, not
     // per restart, and on a worker thread: the check simulates 10 s of the level (a large scene's takes seconds)
     // and the level starts without waiting for it. Its own world, its own copy of the level: nothing is shared.
-    finishBackgroundWork(); // a check of an older version is still running: let it end (its result is dropped)
+    collectRestProblems(true); // a check of an older version may still run: let it end (its result is dropped)
     m_restFindings.clear();
     if (m_source.path.empty())
         return;
