@@ -41,9 +41,13 @@ TEST(SolveCli, SolutionReplaysToTheSameScoreWhateverTheThreadCount)
     EXPECT_TRUE(solution["won"].get<bool>());
     EXPECT_GE(solution["stars"].get<int>(), 1);
     ASSERT_TRUE(solution.contains("player"));
-    for (const char* key : {"runs", "wins", "win_share", "low90", "high90", "simulations", "seconds"})
+    for (const char* key : {"runs", "wins", "win_share", "low90", "high90", "win_scores", "simulations", "seconds"})
         EXPECT_TRUE(solution["player"].contains(key)) << key;
     EXPECT_EQ(solution["player"]["runs"], 3);
+    // One score per winning run, each a winning score: at least the one-star threshold.
+    EXPECT_EQ(solution["player"]["win_scores"].size(), solution["player"]["wins"].get<std::size_t>());
+    for (const auto& score : solution["player"]["win_scores"])
+        EXPECT_GT(score.get<int>(), 0);
     EXPECT_LE(solution["player"]["low90"].get<double>(), solution["player"]["win_share"].get<double>());
 
     const RunResult replay = runAbalike(simulateArgs(level, solution["shots"]));

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 namespace abalike
 {
@@ -25,6 +26,7 @@ struct PlayerDifficulty
     double winShare = 0.0;
     double low90 = 0.0; ///< 90 % interval of the win rate (Wilson score interval)
     double high90 = 0.0;
+    std::vector<int> winScores;  ///< the score of every winning run, in run order (star thresholds come from these)
     std::size_t simulations = 0; ///< headless games played in all
     double seconds = 0.0;
 };

@@ -108,6 +108,7 @@ PlayerDifficulty measurePlayerDifficulty(const LevelDef& level, const Catalog& c
     std::size_t firstSimulations = 0;
     const ScriptedShot first = modelPlayerShot(level, {}, catalog, &firstSimulations);
     std::vector<char> won(options.runs, 0);
+    std::vector<int> scores(options.runs, 0);
     std::vector<std::size_t> simulations(options.runs, 0);
     parallelFor(
         options.runs, workerCount(options.threads),
@@ -130,6 +131,7 @@ PlayerDifficulty measurePlayerDifficulty(const LevelDef& level, const Catalog& c
                 if (session->finished())
                 {
                     won[run] = session->phase() == Phase::Won ? 1 : 0;
+                    scores[run] = session->score().total();
                     break;
                 }
             }
@@ -141,6 +143,9 @@ PlayerDifficulty measurePlayerDifficulty(const LevelDef& level, const Catalog& c
                 options.progress(done, options.runs);
         });
     result.wins = static_cast<std::size_t>(std::count(won.begin(), won.end(), 1));
+    for (std::size_t run = 0; run < options.runs; ++run)
+        if (won[run] != 0)
+            result.winScores.push_back(scores[run]);
     result.simulations = firstSimulations;
     for (const std::size_t s : simulations)
         result.simulations += s;
