@@ -93,7 +93,8 @@ TEST(SimulateCli, ShotFasterThanTheBirdCanBeLaunchedIsAnError)
 
 TEST(SimulateCli, MoreShotsThanBirdsIsAnError)
 {
-    const RunResult r = runAbalike("simulate " + kLevel + " --shot 5,10 --shot 5,10 --shot 5,10 --shot 5,10 --json");
+    const RunResult r =
+        runAbalike("simulate " + kLevel + " --shot 5,10 --shot 5,10 --shot 5,10 --shot 5,10 --shot 5,10 --json");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("no bird left"), std::string::npos) << r.err;
 }

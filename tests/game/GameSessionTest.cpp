@@ -49,14 +49,14 @@ TEST(GameSession, TwoGoodShotsWinTheFirstLevel)
     EXPECT_EQ(session->phase(), Phase::Won);
     EXPECT_EQ(session->pigsRemaining(), 0);
     EXPECT_EQ(session->birdsUsed(), 2);
-    EXPECT_EQ(session->score().unusedBirdBonus, 10000); // one red left
+    EXPECT_EQ(session->score().unusedBirdBonus, 20000); // two reds left
     EXPECT_EQ(session->score().pigsDefeated, 3);
     EXPECT_GE(session->stars(), 1);
 }
 
 TEST(GameSession, MissingWithEveryBirdLoses)
 {
-    const auto session = simulateShots(firstLevel(), {{5.0, 8.0}, {5.0, 8.0}, {5.0, 8.0}});
+    const auto session = simulateShots(firstLevel(), {{5.0, 8.0}, {5.0, 8.0}, {5.0, 8.0}, {5.0, 8.0}});
     EXPECT_EQ(session->phase(), Phase::Lost);
     EXPECT_EQ(session->pigsRemaining(), 3);
     EXPECT_EQ(session->stars(), 0);
@@ -122,7 +122,7 @@ TEST(GameSession, LaunchRulesAreEnforced)
     session.launch(45.0, 10.0);
     EXPECT_EQ(session.phase(), Phase::Flying);
     EXPECT_THROW(session.launch(45.0, 10.0), LaunchError); // the first shot is still under way
-    EXPECT_EQ(session.birdsRemaining(), 2);
+    EXPECT_EQ(session.birdsRemaining(), 3); // 1-1 has four birds
 }
 
 TEST(GameSession, RestartPutsEverythingBack)
@@ -135,7 +135,7 @@ TEST(GameSession, RestartPutsEverythingBack)
     session.restart();
     EXPECT_EQ(session.phase(), Phase::Aiming);
     EXPECT_EQ(session.score().total(), 0);
-    EXPECT_EQ(session.birdsRemaining(), 3);
+    EXPECT_EQ(session.birdsRemaining(), 4);
     EXPECT_EQ(session.pigsRemaining(), 3);
     EXPECT_TRUE(session.shots().empty());
 }

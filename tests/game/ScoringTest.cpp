@@ -30,8 +30,8 @@ TEST(Scoring, TheBreakdownAddsUpAndExplainsEachLine)
     const ScoreBreakdown s = session->score();
     const ScoringRules& rules = session->catalog().scoring();
     EXPECT_EQ(s.total(), s.blockPoints + s.pigPoints + s.unusedBirdBonus + s.efficiencyBonus + s.accuracyBonus);
-    EXPECT_EQ(s.unusedBirds, 1);
-    EXPECT_EQ(s.unusedBirdBonus, rules.pointsPerUnusedBird);
+    EXPECT_EQ(s.unusedBirds, 2) << "two of 1-1's four birds were left";
+    EXPECT_EQ(s.unusedBirdBonus, 2 * rules.pointsPerUnusedBird);
     // The first shot defeats two pigs: one of them is the efficiency bonus.
     ASSERT_EQ(session->shots().size(), 2u);
     EXPECT_EQ(session->shots()[0].pigsDefeated, 2);

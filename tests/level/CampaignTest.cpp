@@ -1,4 +1,5 @@
 #include <abalike/level/Campaign.hpp>
+#include <abalike/save/Progress.hpp>
 #include <abalike/world/Catalog.hpp>
 #include <gtest/gtest.h>
 
@@ -14,13 +15,15 @@ TEST(Campaign, LoadsEveryLevelInPlayOrder)
 {
     const Campaign campaign =
         loadCampaignLevels(std::string(ABALIKE_SOURCE_DIR) + "/levels/campaign.json", Catalog::builtin());
-    ASSERT_EQ(campaign.episodes.size(), 5u);
-    ASSERT_EQ(campaign.levels.size(), 25u);
-    EXPECT_EQ(campaign.levels.front().level.id, "1-1");
-    EXPECT_EQ(campaign.levels.back().level.id, "5-4"); // ordered by the model player: the Moon is the hardest
-    EXPECT_EQ(campaign.levels[7].episode, 1u);
-    EXPECT_EQ(campaign.levelIds()[12], "3-2");
-    EXPECT_EQ(campaign.indexOf("4-2"), 16u);
+    ASSERT_EQ(campaign.episodes.size(), 6u);
+    ASSERT_EQ(campaign.levels.size(), 50u);
+    // Ordered by the model player's win rate inside each episode (tools/balance-campaign).
+    EXPECT_EQ(campaign.levels.front().level.id, "1-1"); // where the tutorial leads
+    EXPECT_EQ(campaign.levels.back().level.id, "6-10");
+    EXPECT_EQ(campaign.levels[7].episode, 0u);
+    EXPECT_EQ(campaign.levels[8].episode, 1u);
+    EXPECT_EQ(campaign.levelIds()[16], "3-1");
+    EXPECT_EQ(campaign.indexOf("4-2"), 25u);
     EXPECT_FALSE(campaign.indexOf("9-9").has_value());
 }
 
@@ -89,6 +92,40 @@ TEST(Campaign, EveryProblemOfTheManifestAtOnceAtItsOwnLines)
                          "2:65 /episodes/0/levels/3 \"a.json\" is already listed at ",
                          "3:26 /episodes/1/levels/0 the level says \"episode\": \"1\" ",
                      }));
+}
+
+TEST(Campaign, ASaveOfTheFirstTwentyFiveLevelsKeepsItsStarsAndOpensTheNewLevelsInOrder)
+{
+    // A save written by the 25-level campaign: all of episode 1 won, 2-4 won, 2-2 lost, 2-3 unlocked.
+    Progress progress = parseProgress(R"({"format": 1,
+      "levels": {"1-1": {"best_score": 30000, "stars": 2}, "1-2": {"best_score": 26000, "stars": 3},
+                 "1-3": {"best_score": 12000, "stars": 1}, "1-4": {"best_score": 17000, "stars": 3},
+                 "1-5": {"best_score": 24000, "stars": 2}, "2-4": {"best_score": 20000, "stars": 1},
+                 "2-2": {"best_score": 4000, "stars": 0}},
+      "unlocked": ["1-1", "1-2", "1-3", "1-4", "1-5", "2-4", "2-2", "2-3"]})");
+    const Progress saved = progress;
+    const std::vector<std::string> ids =
+        loadCampaignLevels(std::string(ABALIKE_SOURCE_DIR) + "/levels/campaign.json", Catalog::builtin()).levelIds();
+    unlockCampaign(progress, ids);
+
+    EXPECT_EQ(progress.levels, saved.levels) << "every star and best score stays";
+    for (const std::string& id : saved.unlocked)
+        EXPECT_TRUE(progress.isUnlocked(id)) << id << " stays open";
+    for (std::size_t i = 1; i < ids.size(); ++i)
+    {
+        const auto previous = progress.levels.find(ids[i - 1]);
+        const bool previousWon = previous != progress.levels.end() && previous->second.stars >= 1;
+        if (!saved.isUnlocked(ids[i]))
+        {
+            EXPECT_EQ(progress.isUnlocked(ids[i]), previousWon)
+                << ids[i] << " opens exactly when the level before it (" << ids[i - 1] << ") is won";
+        }
+    }
+    std::size_t opened = 0;
+    for (const std::string& id : ids)
+        opened += progress.isUnlocked(id) ? 1 : 0;
+    EXPECT_GT(opened, saved.unlocked.size()) << "new levels after won ones open";
+    EXPECT_LT(opened, ids.size()) << "levels after unwon ones stay closed";
 }
 
 } // namespace

@@ -245,7 +245,7 @@ TEST_F(ScreenFlow, PlayPackOpensThePacksFirstUnfinishedLevelAndInstalledPacksFol
     const GameRun run = play("--pack '" + pack.string() + "' --frames 3");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"p-2"}));
-    EXPECT_EQ(run.values("level", "campaign_index"), (std::vector<std::string>{"26"})) << "after the 25 bundled levels";
+    EXPECT_EQ(run.values("level", "campaign_index"), (std::vector<std::string>{"51"})) << "after the 50 bundled levels";
 
     // Installed (copied into the data folder's packs/), it follows the campaign in every run.
     std::filesystem::create_directories(data() / "packs");
@@ -261,7 +261,7 @@ TEST_F(ScreenFlow, PlayLevelOpensACampaignLevelByItsIdEvenLocked)
     const GameRun run = play("--level 3-2 --frames 3");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"3-2"}));
-    EXPECT_EQ(run.values("level", "campaign_index"), (std::vector<std::string>{"12"}));
+    EXPECT_EQ(run.values("level", "campaign_index"), (std::vector<std::string>{"19"}));
 }
 
 TEST_F(ScreenFlow, ATimedLevelThatRunsOutSaysOutOfTimeAndTheTraceSaysWhy)

@@ -1,0 +1,447 @@
+"""The campaign's levels built from prefabs: each function returns one level (its fields but stars, which
+tools/balance-campaign sets from the model player). Levels of the first round that are not here are hand-written."""
+
+from prefabs import (Scene, ball, cage, castle, column, double_frame, frame, gate, hill, island, plateau, pyramid,
+                     roof, tnt, tower)
+
+EARTH_AIR = 1.2
+
+
+def level(id_, title, concept, hints, birds, scene, reference_shot, slingshot=None, environment=None, theme=None,
+          extra=None):
+    body = {
+        "$schema": "schema/level.schema.json",
+        "format": 1,
+        "id": id_,
+        "title": title,
+        "episode": id_.split("-")[0],
+        "concept": concept,
+        "hints": hints,
+        "slingshot": slingshot or {"x": 0, "y": 1.5},
+        "birds": birds,
+        "blocks": scene.blocks,
+        "pigs": scene.pigs,
+    }
+    if scene.terrain:
+        body["terrain"] = scene.terrain
+    if environment:
+        body["environment"] = environment
+    if theme:
+        body["theme"] = theme
+    if extra:
+        body.update(extra)
+    body["stars"] = [10000, 20000, 30000]
+    body["reference_shot"] = list(reference_shot)
+    return body
+
+
+# Episode 1: launch angle and range -----------------------------------------------------------------------------------
+
+
+def l1_6():
+    s = Scene()
+    top = pyramid(s, 30, 0, 5, 0.8, "wood")
+    s.pig("medium", 30, top)
+    s.pig("small", 26.8, 0)
+    s.pig("small", 33.2, 0)
+    roof(s, 26.8 - 1.2, 0, 1.2, "ice")
+    roof(s, 33.2 + 1.2, 0, 1.2, "ice")
+    ball(s, 36.2, 0, 0.8, "wood")
+    return level("1-6", "Pyramid Point",
+                 "In vacuum a bird launched at {v_max:red} m/s at angle theta lands v0^2 sin(2 theta) / g away on "
+                 "level ground: at most {range_flat:red} m, at 45 degrees. The pyramid is much nearer: pull "
+                 "less, or take a flatter or a steeper angle of the same range.",
+                 ["The pyramid's top pig is the highest: a flat shot at the upper courses pushes it off."],
+                 ["red", "red", "red"], s, (20.0, 22.0))
+
+
+def l1_7():
+    s = Scene()
+    castle(s, 40, 0, 3, "wood", "wood", ("medium", None, "small"), "ice")
+    cage(s, 45.4, 0, 1.2, "ice", "small")
+    return level("1-7", "Castle on the Plain",
+                 "Two launch angles reach the same range, theta and 90 - theta, in vacuum. The flat one is quick and "
+                 "strikes the walls; the steep one drops onto the roofs from above.",
+                 ["Try the steep shot: the roofs are ice."],
+                 ["red", "red", "red", "red"], s, (30.0, 24.0))
+
+
+def l1_8():
+    s = Scene()
+    column(s, 22, 0, 5, 0.8, 0.8, ("stone",))
+    column(s, 22.8, 0, 5, 0.8, 0.8, ("stone",))
+    cage(s, 27, 0, 1.2, "wood", "medium")
+    cage(s, 29, 0, 1.2, "wood", "small")
+    top = frame(s, 28, 1.2, 2.0, 1.6, "wood", "wood", None)
+    roof(s, 28, top, 2.6, "wood")
+    return level("1-8", "Over the Wall",
+                 "A stone wall stands between you and the pigs. Only a high arc clears it: above 45 degrees the "
+                 "bird climbs steeply and falls almost straight down behind it.",
+                 ["Aim high and pull less: the bird drops behind the wall."],
+                 ["red", "red", "red", "red"], s, (70.0, 24.0))
+
+
+# Episode 2: heavy and light birds, momentum --------------------------------------------------------------------------
+
+
+def l2_6():
+    s = Scene()
+    left, right = hill(s, 16, 28, 3.0, 0.5)
+    double_frame(s, 22, 3.0, 2.0, 1.6, "wood", "wood", ("small", "medium"))
+    ball(s, 21, 3.0 + 1.6 + 0.25, 0.8, "stone")
+    ball(s, 23, 3.0 + 1.6 + 0.25, 0.8, "stone")
+    top = tower(s, 31, 0, 2, 2.0, 2.0, ("wood",), ("wood",), ("large", "helmet"))
+    roof(s, 31, top, 2.6, "wood")
+    pyramid(s, 35.5, 0, 3, 0.7, "wood")
+    s.pig("small", 35.5, 2.1)
+    return level("2-6", "Boulder Hill",
+                 "A heavy ball keeps its momentum: the {mass:black} kg black bird leaves the band at {v_max:black} m/s "
+                 "with p = {p_max:black} N s, more than the red bird's {p_max:red} N s, and pushes the boulders on "
+                 "the hill over the edge. Rolling down they gain speed from their height and crush what is below.",
+                 ["Knock the boulders off the hilltop: they roll into the tower below."],
+                 ["black", "red", "black", "red"], s, (20.0, 21.0))
+
+
+def l2_7():
+    s = Scene()
+    gate(s, 22, 0, 2.4, 4, 0.6, "stone", "wood", None)
+    cage(s, 22, 0, 1.2, "wood", "small")
+    castle(s, 31, 0, 2, "wood", "wood", ("large", "small"), "wood")
+    tnt(s, 31.55, 2.25, 0.5)
+    return level("2-7", "Stone Gate",
+                 "The same pull gives every bird the same energy, {energy} J. The {mass:black} kg black bird leaves "
+                 "slowest but carries the most momentum, p = sqrt(2 m E) = {p_max:black} N s: what it hits, moves.",
+                 ["The gate's pillars are stone: send the heavy bird at them, or fly over to the castle."],
+                 ["black", "black", "red", "red"], s, (15.0, 21.0))
+
+
+def l2_8():
+    s = Scene()
+    tower(s, 20, 0, 3, 2.0, 2.0, ("wood",), ("wood",), ("small", "medium", "small"))
+    tower(s, 24, 0, 3, 2.0, 2.0, ("wood",), ("wood",), ("large", None, "small"))
+    top = tower(s, 28, 0, 3, 2.0, 2.0, ("wood",), ("wood",), ("helmet", "small", None))
+    roof(s, 28, top, 2.6, "wood")
+    ball(s, 20, 6.75, 0.6, "stone")
+    ball(s, 24, 6.75, 0.6, "stone")
+    return level("2-8", "Wrecking Crew",
+                 "Toppling passes momentum on: the towers stand closer than they are tall, so the first one to fall "
+                 "lands on the next and that one on the last. The bird only has to start it.",
+                 ["Hit the first tower high up: it falls onto the next."],
+                 ["red", "red", "blue"], s, (12.0, 26.0))
+
+
+# Episode 3: air and wind ----------------------------------------------------------------------------------------------
+
+
+def l3_6():
+    s = Scene()
+    hill(s, 28, 46, 4.0, 0.6)
+    castle(s, 37, 4.0, 2, "wood", "wood", ("medium", "small"), "ice")
+    pyramid(s, 24.5, 0, 3, 0.7, "wood")
+    s.pig("large", 26.5, 0)
+    return level("3-6", "Windy Ridge",
+                 "Drag pulls the bird towards the wind's velocity: F = -1/2 rho Cd A |v - w| (v - w). With {wind} m/s "
+                 "at its back the red bird carries farther than in vacuum, over the ridge to the castle.",
+                 ["The tailwind adds range: aim lower than you would in still air."],
+                 ["red", "red", "red", "red"], s, (30.0, 27.0), environment={"air_density": EARTH_AIR, "wind": [8, 0]})
+
+
+def l3_7():
+    s = Scene()
+    pyramid(s, 22, 0, 4, 0.7, "wood")
+    s.pig("small", 22, 2.8)
+    cage(s, 25.5, 0, 1.2, "ice", "medium")
+    top = tower(s, 29, 0, 3, 2.0, 2.0, ("wood", "ice"), ("wood",), ("large", "small", "helmet"))
+    roof(s, 29, top, 2.6, "ice")
+    tnt(s, 32.2, 0)
+    return level("3-7", "Storm Front",
+                 "Into a headwind of {wind} m/s the air's drag acts on the bird's speed relative to the wind, which is "
+                 "higher than its ground speed: the bird slows sooner and falls short. Aim higher and pull harder.",
+                 ["The wind blows against you: a flat shot falls short."],
+                 ["red", "yellow", "red"], s, (30.0, 27.0), environment={"air_density": EARTH_AIR, "wind": [-8, 0]})
+
+
+def l3_8():
+    s = Scene()
+    island(s, 22, 5.0, 5.0)
+    top = frame(s, 22, 5.0, 2.0, 1.6, "wood", "wood", "medium")
+    roof(s, 22, top, 2.6, "wood")
+    island(s, 32, 8.0, 6.0)
+    top = tower(s, 32, 8.0, 2, 2.0, 1.6, ("wood",), ("wood",), ("small", "helmet"))
+    roof(s, 32, top, 2.6, "ice")
+    cage(s, 21, 0, 1.2, "wood", "small")
+    cage(s, 23, 0, 1.2, "wood", "small")
+    pyramid(s, 30, 0, 3, 0.7, "wood")
+    cage(s, 34, 0, 1.4, "ice", "large")
+    return level("3-8", "Sky Islands",
+                 "Gusts change the wind during the flight: from {gust_t:1} s after launch the wind is {gust_wx:1} m/s, "
+                 "from {gust_t:2} s {gust_wx:2} m/s. A bird feels them through drag, so the late part of a long "
+                 "flight bends most.",
+                 ["Short flights feel the gusts least: hit the low island first."],
+                 ["red", "blue", "yellow", "red", "red"], s, (30.0, 25.0),
+                 environment={"air_density": EARTH_AIR,
+                              "gusts": [{"t": 1.0, "wx": 6, "wy": 0}, {"t": 2.0, "wx": -6, "wy": 0}]})
+
+
+# Episode 4: materials -------------------------------------------------------------------------------------------------
+
+
+def l4_6():
+    s = Scene()
+    top = tower(s, 24, 0, 4, 2.0, 1.6, ("ice",), ("wood",), ("medium", "small", "large", "small"))
+    roof(s, 24, top, 2.6, "ice")
+    double_frame(s, 30, 0, 2.0, 1.6, "ice", "ice", ("helmet", "small"))
+    roof(s, 29, 1.85, 1.6, "ice")
+    roof(s, 31, 1.85, 1.6, "ice")
+    ball(s, 19.5, 0, 0.8, "ice")
+    return level("4-6", "Glass House",
+                 "Ice is light ({density:ice} kg/m^3) and brittle: {strength:ice} N s breaks a block, against "
+                 "{strength:wood} N s for wood. The small blue birds split into a flock and shatter ice that a red "
+                 "bird only pushes.",
+                 ["Split the blue bird just before it reaches the ice (click in flight)."],
+                 ["blue", "blue", "red"], s, (20.0, 25.0))
+
+
+def l4_7():
+    s = Scene()
+    hill(s, 18, 24, 1.5, 0.4)
+    top = double_frame(s, 28, 0, 2.2, 1.6, "wood", "wood", ("small", "medium"))
+    tnt(s, 24.8, 0)
+    tnt(s, 31.2, 0)
+    frame(s, 28, top, 2.0, 1.6, "wood", "wood", "helmet")
+    tnt(s, 33, 0)
+    top = tower(s, 35, 0, 2, 2.0, 1.6, ("stone",), ("wood",), ("large", "small"))
+    roof(s, 35, top, 2.6, "wood")
+    ball(s, 37.5, 0, 0.8, "stone")
+    return level("4-7", "Powder Store",
+                 "TNT crates break at only {strength:tnt} N s and explode: everything near it gets a push and "
+                 "damage that falls off with distance. One crate that goes off sets off its neighbours.",
+                 ["Hit a crate: the blast does the rest."],
+                 ["red", "red"], s, (20.0, 22.0))
+
+
+def l4_8():
+    s = Scene()
+    castle(s, 28, 0, 3, "stone", "wood", ("helmet", "large", "helmet"), "stone")
+    cage(s, 22.4, 0, 1.0, "wood", "small")
+    cage(s, 33.6, 0, 1.0, "wood", "small")
+    return level("4-8", "Stone Fortress",
+                 "Stone is heavy ({density:stone} kg/m^3) and tough: it takes {strength:stone} N s to break, more "
+                 "than a red bird at full speed carries ({p_max:red} N s). Knock the walls over instead and let their "
+                 "weight fall on the pigs.",
+                 ["Stone will not break: hit the top of the keep so it topples."],
+                 ["black", "black", "red", "yellow", "red"], s, (25.0, 20.0))
+
+
+# Episode 5: other worlds and the clock -------------------------------------------------------------------------------
+
+
+def l5_6():
+    s = Scene()
+    hill(s, 26, 30, 1.2, 0.3)
+    hill(s, 42, 46, 1.2, 0.3)
+    castle(s, 36, 0, 3, "wood", "wood", ("large", "small", "helmet"), "stone")
+    cage(s, 44, 1.2, 1.0, "wood", None)
+    return level("5-6", "Lunar Base",
+                 "On the Moon g = {g} m/s^2: a bird at {v_max:red} m/s flies {earth_g / g|1} times as far and as long "
+                 "as on Earth, and a falling block lands slowly, so a tower topples in slow motion.",
+                 ["Gentle pulls go a long way here."],
+                 ["red", "red", "red", "red"], s, (30.0, 8.0), slingshot={"x": 0, "y": 1.5, "max_force_n": 200},
+                 environment={"gravity": 1.62}, theme="moon")
+
+
+def l5_7():
+    s = Scene()
+    plateau(s, 20, 27, 3.0)
+    plateau(s, 31, 40, 3.0)
+    cage(s, 28.2, 0, 1.2, "wood", "large")
+    cage(s, 29.8, 0, 1.2, "wood", None)
+    top = tower(s, 23.5, 3.0, 2, 2.0, 1.6, ("wood",), ("wood",), ("small", "medium"))
+    roof(s, 23.5, top, 2.6, "wood")
+    top = tower(s, 35.5, 3.0, 2, 2.0, 1.6, ("wood",), ("wood",), ("helmet", "small"))
+    roof(s, 35.5, top, 2.6, "wood")
+    ball(s, 27.3 - 0.9, 3.0, 0.6, "stone")
+    pyramid(s, 21.0, 3.0, 2, 0.5, "wood")
+    return level("5-7", "Red Canyon",
+                 "Mars: g = {g} m/s^2 and thin air ({rho} kg/m^3). At the same speed a bird stays up "
+                 "{earth_g / g|1} times as long as on Earth, long enough to drop into the canyon between the cliffs.",
+                 ["Drop a bird into the canyon, or push the boulder over its edge."],
+                 ["red", "black", "red", "red"], s, (40.0, 11.0), slingshot={"x": 0, "y": 1.5, "max_force_n": 312.5},
+                 environment={"gravity": 3.71, "air_density": 0.02}, theme="mars")
+
+
+def l5_8():
+    s = Scene()
+    castle(s, 30, 0, 2, "stone", "wood", ("helmet", "large"), "wood")
+    tnt(s, 25.3, 0)
+    cage(s, 24.0, 0, 1.0, "wood", "small")
+    pyramid(s, 36, 0, 3, 0.7, "wood")
+    s.pig("medium", 36, 2.1)
+    return level("5-8", "Jovian Keep",
+                 "On Jupiter g = {g} m/s^2, {g / earth_g|1} times Earth's: even a {v_max:red} m/s bird falls fast, "
+                 "and a block that tips comes down hard. The flight is short and steep.",
+                 ["Aim high: gravity pulls the bird down quickly."],
+                 ["red", "red", "black", "red"], s, (40.0, 50.0), slingshot={"x": 0, "y": 1.5, "max_force_n": 5000},
+                 environment={"gravity": 24.79, "air_density": 0.16}, theme="jupiter")
+
+
+# Episode 6: castles and fortresses -----------------------------------------------------------------------------------
+
+
+def l6_1():
+    s = Scene()
+    gate(s, 22, 0, 2.4, 3, 0.6, "stone", "wood", None)
+    cage(s, 22, 0, 1.2, "wood", "medium")
+    castle(s, 31, 0, 3, "wood", "wood", ("large", "small", "helmet"), "wood")
+    tnt(s, 31.55, 2.25, 0.5)
+    return level("6-1", "Gatehouse",
+                 "Everything together: the launch angle sets the range, the bird's mass its momentum, the materials "
+                 "how the castle breaks. A flat shot meets the gate; a steep one falls into the keep.",
+                 ["The TNT in the keep's first floor brings the keep down."],
+                 ["red", "black", "red", "red"], s, (30.0, 24.0))
+
+
+def l6_2():
+    s = Scene()
+    hill(s, 26, 38, 1.0, 0.8)
+    top = tower(s, 28.5, 1.0, 3, 2.0, 1.6, ("stone",), ("wood",), ("small", "large", "small"))
+    tower(s, 35.5, 1.0, 3, 2.0, 1.6, ("stone",), ("wood",), ("helmet", "small", "medium"))
+    s.block("wood", 32, top + 0.125, 8.6, 0.25)  # the bridge, resting on both keeps
+    tnt(s, 32, top + 0.25)
+    roof(s, 28.5, top + 0.25, 2.6, "wood")
+    roof(s, 35.5, top + 0.25, 2.6, "wood")
+    cage(s, 32, 1.0, 1.2, "wood", "small")
+    return level("6-2", "Twin Keeps",
+                 "Two keeps joined by a bridge: the bridge carries the TNT. A shot that breaks the bridge drops the "
+                 "crate between them; a shot at a keep's top tips it onto the other.",
+                 ["The bridge is the weak point."],
+                 ["red", "red", "black"], s, (28.0, 26.0))
+
+
+def l6_3():
+    s = Scene()
+    hill(s, 24, 44, 3.5, 0.6)
+    castle(s, 34, 3.5, 3, "wood", "wood", ("large", "medium", "helmet"), "ice")
+    cage(s, 22.5, 0, 1.2, "ice", "small")
+    cage(s, 45.5, 0, 1.2, "ice", None)
+    return level("6-3", "Hill Fort",
+                 "A fort on a hill in a headwind: the fort stands above the pouch and the "
+                 "wind of {wind} m/s pushes the bird back. Range, height and drag at once.",
+                 ["Aim higher than the fort: the headwind takes some range."],
+                 ["red", "yellow", "red", "black"], s, (35.0, 28.0),
+                 environment={"air_density": EARTH_AIR, "wind": [-4, 0]})
+
+
+def l6_4():
+    s = Scene()
+    top = double_frame(s, 24, 0, 2.2, 1.6, "wood", "wood", ("small", "small"))
+    tnt(s, 23.0, top)
+    tnt(s, 25.0, top)
+    top = double_frame(s, 31, 0, 2.2, 1.6, "wood", "wood", ("large", "medium"))
+    tnt(s, 30.0, top)
+    tnt(s, 32.0, top)
+    top = tower(s, 37, 0, 3, 2.0, 1.6, ("wood",), ("wood",), ("helmet", "small", "small"))
+    roof(s, 37, top, 2.6, "wood")
+    ball(s, 20, 0, 0.8, "stone")
+    return level("6-4", "Powder Kegs",
+                 "Chains of explosions: a TNT crate that breaks pushes and damages everything near it, and "
+                 "breaks the next crate, which explodes in turn.",
+                 ["One crate sets off the next."],
+                 ["red", "red"], s, (22.0, 22.0))
+
+
+def l6_5():
+    s = Scene()
+    hill(s, 20, 46, 1.5, 0.85)
+    castle(s, 33, 1.5, 4, "stone", "wood", ("helmet", "small", "large", "medium"), "stone")
+    for x in (25.5, 40.5):
+        top = pyramid(s, x, 1.5, 4, 0.6, "wood")
+        s.pig("small", x, top)
+    cage(s, 27.9, 1.5, 1.0, "wood", None)
+    cage(s, 38.1, 1.5, 1.0, "wood", None)
+    tnt(s, 33.55, 1.5 + 2.25, 0.5)
+    return level("6-5", "Citadel",
+                 "A citadel of stone keeps and wooden walls. Stone will not break ({strength:stone} N s), but a keep "
+                 "that topples crushes what is under it: look for the weak floor.",
+                 ["The TNT sits in the keep's first floor."],
+                 ["black", "red", "red", "yellow", "black"], s, (30.0, 21.0))
+
+
+def l6_6():
+    s = Scene()
+    island(s, 24, 6.0, 5.0)
+    island(s, 33, 9.0, 5.0)
+    island(s, 41, 5.0, 5.0)
+    for x, y, pig in ((24, 6.0, "medium"), (33, 9.0, "helmet"), (41, 5.0, "large")):
+        top = frame(s, x, y, 2.0, 1.6, "wood", "wood", pig)
+        roof(s, x, top, 2.6, "wood")
+    pyramid(s, 28.5, 0, 4, 0.7, "ice")
+    s.pig("small", 28.5, 2.8)
+    cage(s, 37, 0, 1.2, "ice", "small")
+    return level("6-6", "Island Fortress",
+                 "Islands in a gusty sky: from {gust_t:1} s the wind is {gust_wx:1} m/s. The far island needs "
+                 "the longest flight and the gust bends it most.",
+                 ["Take the low islands first."],
+                 ["red", "yellow", "blue", "red", "red"], s, (30.0, 25.0),
+                 environment={"air_density": EARTH_AIR, "gusts": [{"t": 1.5, "wx": 5, "wy": 0}]})
+
+
+def l6_7():
+    s = Scene()
+    castle(s, 30, 0, 3, "ice", "wood", ("large", "medium", "small"), "ice")
+    double_frame(s, 38.5, 0, 2.0, 1.6, "ice", "ice", ("helmet", "small"))
+    ball(s, 38.5, 1.85, 0.6, "ice")
+    return level("6-7", "Frozen Fortress",
+                 "A fortress of ice: light ({density:ice} kg/m^3) and brittle ({strength:ice} N s). Blue birds split "
+                 "into a flock and break more ice than one heavy bird.",
+                 ["Split the blue bird at the walls."],
+                 ["blue", "red", "blue", "red", "red"], s, (25.0, 26.0))
+
+
+def l6_8():
+    s = Scene()
+    plateau(s, -4, 4, 9.0)
+    castle(s, 24, 0, 3, "wood", "wood", ("medium", "large", "small"), "wood")
+    pyramid(s, 16, 0, 3, 0.7, "stone")
+    cage(s, 31, 0, 1.2, "wood", "helmet")
+    return level("6-8", "Cliff Castle",
+                 "From a cliff {launch_height} m up a bird flies farther and can shoot down at the castle: the best "
+                 "angle for range is below 45 degrees here ({vacuum_best_angle:red} degrees).",
+                 ["Shots below the horizon reach the castle's walls."],
+                 ["red", "red", "black", "red", "red"], s, (10.0, 20.0), slingshot={"x": 0, "y": 10.5})
+
+
+def l6_9():
+    s = Scene()
+    hill(s, 30, 50, 1.5, 0.7)
+    castle(s, 40, 1.5, 4, "wood", "wood", ("small", "large", "medium", "helmet"), "stone")
+    tower(s, 34.2, 1.5, 1, 1.6, 1.6, ("stone",), ("wood",), ("small",))
+    tower(s, 45.8, 1.5, 1, 1.6, 1.6, ("stone",), ("wood",), ("small",))
+    cage(s, 51.5, 0, 0.9, "wood", None)
+    return level("6-9", "Moon Citadel",
+                 "A citadel on the Moon (g = {g} m/s^2): the bird flies {earth_g / g|1} times as far as on Earth at "
+                 "the same speed, and the keep falls slowly.",
+                 ["A light pull is enough."],
+                 ["red", "red", "black", "red"], s, (35.0, 12.0), slingshot={"x": 0, "y": 1.5, "max_force_n": 400},
+                 environment={"gravity": 1.62}, theme="moon")
+
+
+def l6_10():
+    s = Scene()
+    hill(s, 22, 52, 1.5, 0.85)
+    castle(s, 31, 1.5, 4, "stone", "wood", ("helmet", "large", "helmet", "medium"), "stone")
+    castle(s, 43, 1.5, 3, "stone", "wood", ("large", "helmet", "small"), "stone")
+    for x, pig in ((25.8, "small"), (37, "small"), (48.2, None)):
+        cage(s, x, 1.5, 1.0, "wood", pig)
+    tnt(s, 37, 2.5)
+    return level("6-10", "The Last Fortress",
+                 "Two stone castles with helmeted pigs: every idea of the campaign at once. Stone does not break, it "
+                 "topples; heavy birds carry momentum; TNT between the castles reaches both.",
+                 ["The TNT between the castles is within reach of both."],
+                 ["black", "red", "black", "red"], s, (30.0, 21.0))
+
+
+# The builder used by tools/make-levels --------------------------------------------------------------------------------
+
+LEVELS = [l1_6, l1_7, l1_8, l2_6, l2_7, l2_8, l3_6, l3_7, l3_8, l4_6, l4_7, l4_8, l5_6, l5_7, l5_8,
+          l6_1, l6_2, l6_3, l6_4, l6_5, l6_6, l6_7, l6_8, l6_9, l6_10]
