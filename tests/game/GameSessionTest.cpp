@@ -122,7 +122,7 @@ TEST(GameSession, LaunchRulesAreEnforced)
     session.launch(45.0, 10.0);
     EXPECT_EQ(session.phase(), Phase::Flying);
     EXPECT_THROW(session.launch(45.0, 10.0), LaunchError); // the first shot is still under way
-    EXPECT_EQ(session.birdsRemaining(), 3); // 1-1 has four birds
+    EXPECT_EQ(session.birdsRemaining(), 3);                // 1-1 has four birds
 }
 
 TEST(GameSession, RestartPutsEverythingBack)

@@ -271,7 +271,10 @@ int runFeelBench(const BenchOptions& options)
 
     const CauseTally tally = tallyWinningShots(levels);
     const int pigs = allPigs(tally.pigsByCause);
-    const auto count = [&](const char* cause) { return countOf(tally.pigsByCause, cause); };
+    const auto count = [&](const char* cause)
+    {
+        return countOf(tally.pigsByCause, cause);
+    };
     md << "\n## What defeats the pigs\n\nThe solver's best shot sequence for each level (" << tally.levelsWon << " of "
        << tally.levelsSolved << " levels won), replayed; each pig's cause is the body that delivered the "
        << "largest impulse in the step its health ran out:\n\n| cause | pigs |\n|---|---:|\n";
@@ -289,8 +292,8 @@ int runFeelBench(const BenchOptions& options)
         const int total = allPigs(byCause);
         const int toppled = toppledPigs(byCause);
         const double toppledShare = total > 0 ? static_cast<double>(toppled) / total : 0.0;
-        md << "| " << (episode.empty() ? "-" : episode) << " | " << total << " | " << countOf(byCause, "bird")
-           << " | " << toppled << " | " << countOf(byCause, "explosion") << " | " << countOf(byCause, "egg") << " | "
+        md << "| " << (episode.empty() ? "-" : episode) << " | " << total << " | " << countOf(byCause, "bird") << " | "
+           << toppled << " | " << countOf(byCause, "explosion") << " | " << countOf(byCause, "egg") << " | "
            << fixed(100.0 * toppledShare, 0) << " % | " << verdict(toppledShare >= kToppleShareTarget) << " |\n";
     }
 

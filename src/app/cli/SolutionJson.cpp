@@ -39,9 +39,14 @@ nlohmann::ordered_json solutionToJson(const LevelDef& level, const Solution& sol
 
 nlohmann::ordered_json playerDifficultyJson(const PlayerDifficulty& player)
 {
-    return {{"runs", player.runs},      {"wins", player.wins},     {"win_share", player.winShare},
-            {"low90", player.low90},    {"high90", player.high90}, {"win_scores", player.winScores},
-            {"simulations", player.simulations}, {"seconds", player.seconds}};
+    return {{"runs", player.runs},
+            {"wins", player.wins},
+            {"win_share", player.winShare},
+            {"low90", player.low90},
+            {"high90", player.high90},
+            {"win_scores", player.winScores},
+            {"simulations", player.simulations},
+            {"seconds", player.seconds}};
 }
 
 std::string playerDifficultyText(const PlayerDifficulty& player)
