@@ -160,10 +160,15 @@ public:
     const WorldSettings& settings() const { return m_settings; }
     /// Box2D sub-steps taken by the last step (see WorldSettings::maxSubsteps and maxStackSubsteps).
     int lastSubsteps() const { return m_lastSubsteps; }
-    /// Box2D sub-steps every step takes for the level's stacks (WorldSettings::stackDepthPerSubstep).
+    /// Box2D sub-steps a step takes for the level's stacks at the start (WorldSettings::stackDepthPerSubstep).
     int stackSubsteps() const { return m_stackSubsteps; }
+    /// The same for the stacks still at rest in the last step: bodies that sleep or move (faster than
+    /// kRestingSpeedMps or kRestingSpinRadPerS) are not part of a stack. Never more than stackSubsteps().
+    int restingStackSubsteps() const;
+    static constexpr double kRestingSpeedMps = 0.2;
+    static constexpr double kRestingSpinRadPerS = 0.5;
     /// Sub-steps of a step in which the fastest awake body moves at speedMps: enough to keep every sub-step under
-    /// Box2D's translation limit, and at least stackSubsteps().
+    /// Box2D's translation limit, and at least those the stacks at rest need (restingStackSubsteps()).
     int substepsFor(double speedMps) const;
     /// Fastest a body can move without Box2D capping its speed: 90 % of b2_maxTranslation per sub-step.
     double maxSpeedMps() const;
@@ -268,6 +273,9 @@ private:
 
     void buildLevel();
     void measureStackDepth();
+    /// The most bodies resting on each other (only awake, unmoving ones with restingOnly), counted up to cap.
+    int deepestStack(bool restingOnly, int cap) const;
+    int stackSubstepsFor(int depth) const;
     int addEntity(Entity entity);
     b2Body* createBirdBody(int index, double radiusM, double massKg, double friction, double restitution,
                            const FlightState& s);
@@ -326,6 +334,7 @@ private:
     std::atomic<int> m_settleSubstepsDone{0};
     int m_lastSubsteps = 1;
     int m_stackSubsteps = 1;
+    int m_restingStackSubsteps = 1;   ///< restingStackSubsteps() at the start of the current step
     double m_lightestBodyKg = 0.0;    ///< lightest block or pig at the start; 0 when there is none
     std::array<double, 3> m_extent{}; ///< left, right, bottom: beyond these a body has left the world
 

@@ -109,18 +109,22 @@ int runPerfBench(const BenchOptions& options)
        << "Machine: " << machineDescription() << ".\n\n";
 
     md << "## Campaign levels during their reference shot\n\n"
-       << "Each level is loaded, its settle step taken, then its reference shot (the level's `reference_shot`, or "
-          "the best of a quick search) is fired and every `GameSession::step()` until the shot is over is timed; "
-       << plan.levelRuns << " run(s) per level. Target: headless speed >= " << kMinRealTimeFactor << "x real time.\n\n"
+       << "Each level is loaded, its settle step taken and " << kAimSteps
+       << " steps (a second of aiming, in which its structures come to rest and fall asleep) stepped, then its "
+          "reference shot (the level's `reference_shot`, or the best of a quick search) is fired and every "
+          "`GameSession::step()` until the shot is over is timed; "
+       << plan.levelRuns << " run(s) per level. Target: headless speed >= " << kMinRealTimeFactor
+       << "x real time. Beside it, the speed with the bird launched right after the settle step, while every body "
+          "is still awake (no player shoots that fast; not a target).\n\n"
        << "| Level | Shot (deg, m/s) | Shot from | Steps | Median step (us) | p95 step (us) | Speed (x real time) | "
-          "Target met |\n|---|---|---|---:|---:|---:|---:|---|\n";
+          "Target met | Launched at once (x real time) |\n|---|---|---|---:|---:|---:|---:|---|---:|\n";
     for (const LevelPerf& l : levels)
     {
         const bool ok = l.realTimeFactor >= kMinRealTimeFactor;
         pass = pass && ok;
         md << "| " << l.file << " | " << fixed(l.angleDeg, 1) << ", " << fixed(l.speedMps, 2) << " | " << l.shotSource
            << " | " << l.stepsPerRun << " | " << fixed(l.steps.medianUs, 1) << " | " << fixed(l.steps.p95Us, 1) << " | "
-           << fixed(l.realTimeFactor, 0) << " | " << (ok ? "yes" : "NO") << " |\n";
+           << fixed(l.realTimeFactor, 0) << " | " << (ok ? "yes" : "NO") << " | " << fixed(l.atOnceFactor, 0) << " |\n";
     }
 
     md << "\n## " << plan.pyramidRows << "-row pyramid (" << pyramids[0].bodies

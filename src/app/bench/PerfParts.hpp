@@ -36,7 +36,11 @@ struct LevelPerf
     int stepsPerRun = 0;
     StepStats steps;             ///< every step of every run
     double realTimeFactor = 0.0; ///< simulated time / wall time of the shot, median over runs
+    double atOnceFactor = 0.0;   ///< the same with the bird launched right after the settle step
 };
+
+/// Steps the campaign bench lets pass between the settle step and the shot: one second of aiming.
+constexpr int kAimSteps = 60;
 
 /// Times every level's reference shot (found by a quick search when the level has none).
 std::vector<LevelPerf> measureCampaign(const std::vector<std::string>& levelPaths, int runs, bool quickSearch);

@@ -5,6 +5,7 @@
 #include <abalike/world/GameWorld.hpp>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace abalike
@@ -47,16 +48,29 @@ GameWorld::GameWorld(const LevelDef& level, const Catalog& catalog, const WorldS
             std::clamp(kSettlePerDepthSquared * m_stackDepth * m_stackDepth, kMinAutoSettle, kMaxAutoSettle);
     else
         m_settleIterations = std::max(0, settings.settleIterations);
-    m_stackSubsteps = std::clamp((m_stackDepth + settings.stackDepthPerSubstep - 1) / settings.stackDepthPerSubstep, 1,
-                                 std::min(settings.maxStackSubsteps, settings.maxSubsteps));
+    m_stackSubsteps = stackSubstepsFor(m_stackDepth);
+    m_restingStackSubsteps = m_stackSubsteps;
 }
 
 void GameWorld::measureStackDepth()
 {
     // A step of zero time finds the contacts and their manifolds without solving or moving anything.
     m_world->Step(0.0f, m_settings.velocityIterations, m_settings.positionIterations);
+    m_stackDepth = deepestStack(false, std::numeric_limits<int>::max());
+}
+
+int GameWorld::deepestStack(bool restingOnly, int cap) const
+{
     // Breadth-first from the static bodies over touching contacts: a body's depth is one more than the shallowest
-    // body it touches.
+    // body it touches. With restingOnly, a body that sleeps or moves is not part of a stack: Box2D does not solve
+    // a sleeping one, and one that moves is not resting on anything.
+    const auto resting = [restingOnly](const b2Body* body)
+    {
+        if (!restingOnly)
+            return true;
+        return body->IsAwake() && body->GetLinearVelocity().LengthSquared() <= kRestingSpeedMps * kRestingSpeedMps &&
+               std::abs(body->GetAngularVelocity()) <= kRestingSpinRadPerS;
+    };
     std::vector<int> depth(m_entities.size(), -1);
     std::vector<int> frontier;
     for (std::size_t i = 0; i < m_entities.size(); ++i)
@@ -65,22 +79,42 @@ void GameWorld::measureStackDepth()
             depth[i] = 0;
             frontier.push_back(static_cast<int>(i));
         }
-    while (!frontier.empty())
+    int deepest = 0;
+    std::vector<int> next;
+    while (!frontier.empty() && deepest < cap)
     {
-        std::vector<int> next;
+        next.clear();
         for (const int index : frontier)
             for (b2ContactEdge* edge = m_entities[static_cast<std::size_t>(index)].body->GetContactList();
                  edge != nullptr; edge = edge->next)
             {
                 const int other = entityIndexOf(edge->other);
-                if (!edge->contact->IsTouching() || other < 0 || depth[static_cast<std::size_t>(other)] >= 0)
+                if (!edge->contact->IsTouching() || other < 0 || depth[static_cast<std::size_t>(other)] >= 0 ||
+                    edge->other->GetType() != b2_dynamicBody || !resting(edge->other))
                     continue;
                 depth[static_cast<std::size_t>(other)] = depth[static_cast<std::size_t>(index)] + 1;
-                m_stackDepth = std::max(m_stackDepth, depth[static_cast<std::size_t>(other)]);
+                deepest = std::max(deepest, depth[static_cast<std::size_t>(other)]);
                 next.push_back(other);
             }
         frontier.swap(next);
     }
+    return deepest;
+}
+
+int GameWorld::stackSubstepsFor(int depth) const
+{
+    return std::clamp((depth + m_settings.stackDepthPerSubstep - 1) / m_settings.stackDepthPerSubstep, 1,
+                      std::min(m_settings.maxStackSubsteps, m_settings.maxSubsteps));
+}
+
+int GameWorld::restingStackSubsteps() const
+{
+    // Only a stack at rest needs the short sub-step (WorldSettings::stackDepthPerSubstep); once a structure falls,
+    // its pieces are no longer resting on each other and a collapse is solved as fast as the level's other bodies.
+    if (m_stackSubsteps <= 1)
+        return 1;
+    return std::min(m_stackSubsteps,
+                    stackSubstepsFor(deepestStack(true, m_stackSubsteps * m_settings.stackDepthPerSubstep)));
 }
 
 GameWorld::~GameWorld()
@@ -104,7 +138,7 @@ int GameWorld::substepsFor(double speedMps) const
 {
     const double travel = speedMps * m_settings.dtS;
     const double perSubstep = kSubstepTravelShare * b2_maxTranslation;
-    return std::clamp(static_cast<int>(std::ceil(travel / perSubstep)), m_stackSubsteps, m_settings.maxSubsteps);
+    return std::clamp(static_cast<int>(std::ceil(travel / perSubstep)), m_restingStackSubsteps, m_settings.maxSubsteps);
 }
 
 int GameWorld::substepCount() const
@@ -134,6 +168,8 @@ void GameWorld::step()
 
     if (m_birdFlight)
         snapshotImpactVelocities();
+    // The settle step solves every stack of the level; later steps only those still at rest.
+    m_restingStackSubsteps = m_steps == 0 ? m_stackSubsteps : restingStackSubsteps();
     m_lastSubsteps = substepCount();
     const auto h = static_cast<float>(m_settings.dtS / m_lastSubsteps);
     const double rolling = m_settings.rollingResistance ? m_catalog.rollingResistance() : 0.0;
