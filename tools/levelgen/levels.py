@@ -52,7 +52,7 @@ def l1_6():
                  "level ground: at most {range_flat:red} m, at 45 degrees. The pyramid is much nearer: pull "
                  "less, or take a flatter or a steeper angle of the same range.",
                  ["The pyramid's top pig is the highest: a flat shot at the upper courses pushes it off."],
-                 ["red", "red", "red"], s, (20.0, 22.0))
+                 ["red", "red", "red"], s, (40.0, 18))
 
 
 def l1_7():
@@ -78,7 +78,7 @@ def l1_8():
                  "A stone wall stands between you and the pigs. Only a high arc clears it: above 45 degrees the "
                  "bird climbs steeply and falls almost straight down behind it.",
                  ["Aim high and pull less: the bird drops behind the wall."],
-                 ["red", "red", "red", "red"], s, (70.0, 24.0))
+                 ["red", "red", "red", "red"], s, (62.5, 18))
 
 
 # Episode 2: heavy and light birds, momentum --------------------------------------------------------------------------
@@ -112,7 +112,7 @@ def l2_7():
                  "The same pull gives every bird the same energy, {energy} J. The {mass:black} kg black bird leaves "
                  "slowest but carries the most momentum, p = sqrt(2 m E) = {p_max:black} N s: what it hits, moves.",
                  ["The gate's pillars are stone: send the heavy bird at them, or fly over to the castle."],
-                 ["black", "black", "red", "red"], s, (15.0, 21.0))
+                 ["black", "black", "red", "red"], s, (17.5, 21.21))
 
 
 def l2_8():
@@ -158,7 +158,7 @@ def l3_7():
                  "Into a headwind of {wind} m/s the air's drag acts on the bird's speed relative to the wind, which is "
                  "higher than its ground speed: the bird slows sooner and falls short. Aim higher and pull harder.",
                  ["The wind blows against you: a flat shot falls short."],
-                 ["red", "yellow", "red"], s, (30.0, 27.0), environment={"air_density": EARTH_AIR, "wind": [-8, 0]})
+                 ["red", "yellow", "red"], s, (47.5, 30), environment={"air_density": EARTH_AIR, "wind": [-8, 0]})
 
 
 def l3_8():
@@ -178,7 +178,7 @@ def l3_8():
                  "from {gust_t:2} s {gust_wx:2} m/s. A bird feels them through drag, so the late part of a long "
                  "flight bends most.",
                  ["Short flights feel the gusts least: hit the low island first."],
-                 ["red", "blue", "yellow", "red", "red"], s, (30.0, 25.0),
+                 ["red", "blue", "yellow", "red", "red"], s, (27.5, 30),
                  environment={"air_density": EARTH_AIR,
                               "gusts": [{"t": 1.0, "wx": 6, "wy": 0}, {"t": 2.0, "wx": -6, "wy": 0}]})
 
@@ -199,7 +199,7 @@ def l4_6():
                  "{strength:wood} N s for wood. The small blue birds split into a flock and shatter ice that a red "
                  "bird only pushes.",
                  ["Split the blue bird just before it reaches the ice (click in flight)."],
-                 ["blue", "blue", "red"], s, (20.0, 25.0))
+                 ["blue", "blue", "red"], s, (2.5, 48.98))
 
 
 def l4_7():
@@ -230,7 +230,7 @@ def l4_8():
                  "than a red bird at full speed carries ({p_max:red} N s). Knock the walls over instead and let their "
                  "weight fall on the pigs.",
                  ["Stone will not break: hit the top of the keep so it topples."],
-                 ["black", "black", "red", "yellow", "red"], s, (25.0, 20.0))
+                 ["black", "black", "red", "yellow", "red"], s, (60.0, 19.09))
 
 
 # Episode 5: other worlds and the clock -------------------------------------------------------------------------------
@@ -266,7 +266,7 @@ def l5_7():
                  "Mars: g = {g} m/s^2 and thin air ({rho} kg/m^3). At the same speed a bird stays up "
                  "{earth_g / g|1} times as long as on Earth, long enough to drop into the canyon between the cliffs.",
                  ["Drop a bird into the canyon, or push the boulder over its edge."],
-                 ["red", "black", "red", "red"], s, (40.0, 11.0), slingshot={"x": 0, "y": 1.5, "max_force_n": 312.5},
+                 ["red", "black", "red", "red"], s, (60.0, 12.5), slingshot={"x": 0, "y": 1.5, "max_force_n": 312.5},
                  environment={"gravity": 3.71, "air_density": 0.02}, theme="mars")
 
 
@@ -281,7 +281,7 @@ def l5_8():
                  "On Jupiter g = {g} m/s^2, {g / earth_g|1} times Earth's: even a {v_max:red} m/s bird falls fast, "
                  "and a block that tips comes down hard. The flight is short and steep.",
                  ["Aim high: gravity pulls the bird down quickly."],
-                 ["red", "red", "black", "red"], s, (40.0, 50.0), slingshot={"x": 0, "y": 1.5, "max_force_n": 5000},
+                 ["red", "red", "black", "red"], s, (7.5, 50), slingshot={"x": 0, "y": 1.5, "max_force_n": 5000},
                  environment={"gravity": 24.79, "air_density": 0.16}, theme="jupiter")
 
 
@@ -298,7 +298,7 @@ def l6_1():
                  "Everything together: the launch angle sets the range, the bird's mass its momentum, the materials "
                  "how the castle breaks. A flat shot meets the gate; a steep one falls into the keep.",
                  ["The TNT in the keep's first floor brings the keep down."],
-                 ["red", "black", "red", "red"], s, (30.0, 24.0))
+                 ["red", "black", "red", "red"], s, (47.5, 18))
 
 
 def l6_2():
@@ -315,7 +315,7 @@ def l6_2():
                  "Two keeps joined by a bridge: the bridge carries the TNT. A shot that breaks the bridge drops the "
                  "crate between them; a shot at a keep's top tips it onto the other.",
                  ["The bridge is the weak point."],
-                 ["red", "red", "black"], s, (28.0, 26.0))
+                 ["red", "red", "black"], s, (15.0, 30))
 
 
 def l6_3():
@@ -328,7 +328,7 @@ def l6_3():
                  "A fort on a hill in a headwind: the fort stands above the pouch and the "
                  "wind of {wind} m/s pushes the bird back. Range, height and drag at once.",
                  ["Aim higher than the fort: the headwind takes some range."],
-                 ["red", "yellow", "red", "black"], s, (35.0, 28.0),
+                 ["red", "yellow", "red", "black"], s, (47.5, 27),
                  environment={"air_density": EARTH_AIR, "wind": [-4, 0]})
 
 
@@ -382,7 +382,7 @@ def l6_6():
                  "Islands in a gusty sky: from {gust_t:1} s the wind is {gust_wx:1} m/s. The far island needs "
                  "the longest flight and the gust bends it most.",
                  ["Take the low islands first."],
-                 ["red", "yellow", "blue", "red", "red"], s, (30.0, 25.0),
+                 ["red", "yellow", "blue", "red", "red"], s, (30.0, 30),
                  environment={"air_density": EARTH_AIR, "gusts": [{"t": 1.5, "wx": 5, "wy": 0}]})
 
 
@@ -395,7 +395,7 @@ def l6_7():
                  "A fortress of ice: light ({density:ice} kg/m^3) and brittle ({strength:ice} N s). Blue birds split "
                  "into a flock and break more ice than one heavy bird.",
                  ["Split the blue bird at the walls."],
-                 ["blue", "red", "blue", "red", "red"], s, (25.0, 26.0))
+                 ["blue", "red", "blue", "red", "red"], s, (2.5, 48.98))
 
 
 def l6_8():
@@ -408,7 +408,7 @@ def l6_8():
                  "From a cliff {launch_height} m up a bird flies farther and can shoot down at the castle: the best "
                  "angle for range is below 45 degrees here ({vacuum_best_angle:red} degrees).",
                  ["Shots below the horizon reach the castle's walls."],
-                 ["red", "red", "black", "red", "red"], s, (10.0, 20.0), slingshot={"x": 0, "y": 10.5})
+                 ["red", "red", "black", "red", "red"], s, (7.5, 18), slingshot={"x": 0, "y": 10.5})
 
 
 def l6_9():
@@ -422,7 +422,7 @@ def l6_9():
                  "A citadel on the Moon (g = {g} m/s^2): the bird flies {earth_g / g|1} times as far as on Earth at "
                  "the same speed, and the keep falls slowly.",
                  ["A light pull is enough."],
-                 ["red", "red", "black", "red"], s, (35.0, 12.0), slingshot={"x": 0, "y": 1.5, "max_force_n": 400},
+                 ["red", "red", "black", "red"], s, (17.5, 11.31), slingshot={"x": 0, "y": 1.5, "max_force_n": 400},
                  environment={"gravity": 1.62}, theme="moon")
 
 
@@ -438,7 +438,7 @@ def l6_10():
                  "Two stone castles with helmeted pigs: every idea of the campaign at once. Stone does not break, it "
                  "topples; heavy birds carry momentum; TNT between the castles reaches both.",
                  ["The TNT between the castles is within reach of both."],
-                 ["black", "red", "black", "red"], s, (30.0, 21.0))
+                 ["black", "red", "black", "red"], s, (35.0, 21.21))
 
 
 # The builder used by tools/make-levels --------------------------------------------------------------------------------
