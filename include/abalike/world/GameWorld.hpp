@@ -9,6 +9,7 @@
 #include <abalike/world/FirstImpact.hpp>
 #include <array>
 #include <atomic>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -19,6 +20,8 @@ class b2World;
 
 namespace abalike
 {
+
+struct SettledState;
 
 /// Box2D settings of a world; the defaults were chosen by measurement (docs/world-physics.md, "Iterations").
 struct WorldSettings
@@ -58,6 +61,10 @@ struct WorldSettings
     /// whatever struck it keeps the rest of its momentum. false keeps Box2D's impulse as solved, as if the broken
     /// body had been unbreakable for that step (the rule before; tests and `bench feel` compare the two).
     bool breakThrough = true;
+    /// Reuse settle steps (SettleCache): a world whose bodies and settings match one settled before starts from its
+    /// state. Either way the settled state passes through the same restore, so results do not depend on the cache;
+    /// false solves the settle step in place as Box2D leaves it (benchmarks that time it or compare with raw Box2D).
+    bool settleCache = true;
 
     static constexpr int kAutoSettle = -1;
 };
@@ -182,6 +189,9 @@ public:
     /// settle step runs on another thread (the one value safe to read meanwhile).
     int settleSubstepsDone() const { return m_settleSubstepsDone.load(std::memory_order_relaxed); }
     int settleSubstepsPlanned() const { return m_stackSubsteps; }
+    /// True when the settle step was not solved but taken from SettleCache (a world of the same bodies and settings
+    /// settled before, in this process or, once the game set its directory, in an earlier run).
+    bool settleReused() const { return m_settleReused; }
 
     /// Changes the air and gravity while the world runs (the sandbox's live environment): Box2D's gravity at once,
     /// and the launched bird's flight model from its current state on. Split birds and eggs already in the air keep
@@ -271,8 +281,19 @@ private:
         std::unique_ptr<FlightIntegrator> model; ///< evaluates drag and wind for it
     };
 
+    /// A new Box2D world holding the level's bodies as designed (also what a settled state is restored onto).
+    void buildWorld();
     void buildLevel();
     void measureStackDepth();
+    /// The settle step through SettleCache (see WorldSettings::settleCache); false when this world cannot use it.
+    bool settleThroughCache();
+    std::uint64_t settleKey() const;
+    /// The state the settle step left.
+    std::shared_ptr<const SettledState> captureSettled() const;
+    /// Rebuilds the world and puts it in the settled state: bodies, velocities, contact manifolds; every body
+    /// awake. False (and nothing changed) when the state does not fit this world.
+    bool restoreSettled(const SettledState& state);
+    void stepBox2d(bool settle);
     /// The most bodies resting on each other (only awake, unmoving ones with restingOnly), counted up to cap.
     int deepestStack(bool restingOnly, int cap) const;
     int stackSubstepsFor(int depth) const;
@@ -334,6 +355,7 @@ private:
     std::atomic<int> m_settleSubstepsDone{0};
     int m_lastSubsteps = 1;
     int m_stackSubsteps = 1;
+    bool m_settleReused = false;
     int m_restingStackSubsteps = 1;   ///< restingStackSubsteps() at the start of the current step
     double m_lightestBodyKg = 0.0;    ///< lightest block or pig at the start; 0 when there is none
     std::array<double, 3> m_extent{}; ///< left, right, bottom: beyond these a body has left the world

@@ -108,7 +108,9 @@ std::vector<SettleRow> settleTable(const std::vector<LevelDef>& scenes, double s
         SettleRow r;
         r.scene = scene.id.empty() ? scene.title : scene.id;
         r.bodies = static_cast<int>(scene.blocks.size() + scene.pigs.size());
-        GameWorld world(scene, Catalog::builtin());
+        WorldSettings timedSettle;
+        timedSettle.settleCache = false; // the settle step is what this table times
+        GameWorld world(scene, Catalog::builtin(), timedSettle);
         r.depth = world.stackDepth();
         r.substeps = world.stackSubsteps();
         r.iterations = world.settleIterations();

@@ -77,6 +77,7 @@ WallPerf measureWall(int restSteps, int fallSteps)
     {
         WorldSettings settings;
         settings.allowSleep = sleep;
+        settings.settleCache = false; // the settle step is timed and raw Box2D repeats it
         Worlds w{std::make_unique<GameWorld>(level, catalog, settings), nullptr, nullptr};
         w.raw = cloneWorld(w.ours->box2d(), sleep);
         w.plain = cloneWorld(w.ours->box2d(), sleep);

@@ -34,14 +34,9 @@ GameWorld::GameWorld(const LevelDef& level, const Catalog& catalog, const WorldS
         throw std::invalid_argument("world iterations and sub-steps must be >= 1");
     if (!(settings.cornerChamferM >= 0.0 && settings.cornerChamferM < 0.02) || !std::isfinite(settings.contactGapM))
         throw std::invalid_argument("corner chamfer must be 0 to 2 cm and the contact gap finite");
-    m_world = std::make_unique<b2World>(b2Vec2(0.0f, static_cast<float>(-level.environment.gravity)));
-    m_world->SetAllowSleeping(settings.allowSleep);
-    // Forces (drag on birds) are applied once per step and must act in every sub-step of it.
-    m_world->SetAutoClearForces(false);
     m_contacts = std::make_unique<ContactRecorder>(static_cast<float>(catalog.damageSpeedThresholdMps()),
                                                    static_cast<float>(settings.contactGapM));
-    m_world->SetContactListener(m_contacts.get());
-    buildLevel();
+    buildWorld();
     measureStackDepth();
     if (settings.settleIterations == WorldSettings::kAutoSettle)
         m_settleIterations =
@@ -50,6 +45,19 @@ GameWorld::GameWorld(const LevelDef& level, const Catalog& catalog, const WorldS
         m_settleIterations = std::max(0, settings.settleIterations);
     m_stackSubsteps = stackSubstepsFor(m_stackDepth);
     m_restingStackSubsteps = m_stackSubsteps;
+}
+
+void GameWorld::buildWorld()
+{
+    if (m_world)
+        m_world->SetContactListener(nullptr); // the listener must not see the old bodies go
+    m_world = std::make_unique<b2World>(b2Vec2(0.0f, static_cast<float>(-m_level.environment.gravity)));
+    m_world->SetAllowSleeping(m_settings.allowSleep);
+    // Forces (drag on birds) are applied once per step and must act in every sub-step of it.
+    m_world->SetAutoClearForces(false);
+    m_world->SetContactListener(m_contacts.get());
+    m_entities.clear();
+    buildLevel();
 }
 
 void GameWorld::measureStackDepth()
@@ -171,20 +179,8 @@ void GameWorld::step()
     // The settle step solves every stack of the level; later steps only those still at rest.
     m_restingStackSubsteps = m_steps == 0 ? m_stackSubsteps : restingStackSubsteps();
     m_lastSubsteps = substepCount();
-    const auto h = static_cast<float>(m_settings.dtS / m_lastSubsteps);
-    const double rolling = m_settings.rollingResistance ? m_catalog.rollingResistance() : 0.0;
-    for (int i = 0; i < m_lastSubsteps; ++i)
-    {
-        // The first step is the settle step (WorldSettings::settleIterations), in each of its sub-steps.
-        const bool settle = m_steps == 0;
-        m_world->Step(
-            h, settle ? std::max(m_settleIterations, m_settings.velocityIterations) : m_settings.velocityIterations,
-            m_settings.positionIterations);
-        if (rolling > 0.0)
-            resistRolling(m_entities, rolling);
-        if (settle)
-            m_settleSubstepsDone.fetch_add(1, std::memory_order_relaxed);
-    }
+    if (m_steps > 0 || !settleThroughCache())
+        stepBox2d(m_steps == 0);
     ++m_steps;
     m_world->ClearForces();
     m_time += m_settings.dtS;
@@ -196,6 +192,23 @@ void GameWorld::step()
     removeOutOfBounds();
     retireBirds();
     updateCalm();
+}
+
+void GameWorld::stepBox2d(bool settle)
+{
+    const auto h = static_cast<float>(m_settings.dtS / m_lastSubsteps);
+    const double rolling = m_settings.rollingResistance ? m_catalog.rollingResistance() : 0.0;
+    for (int i = 0; i < m_lastSubsteps; ++i)
+    {
+        // The first step is the settle step (WorldSettings::settleIterations), in each of its sub-steps.
+        m_world->Step(
+            h, settle ? std::max(m_settleIterations, m_settings.velocityIterations) : m_settings.velocityIterations,
+            m_settings.positionIterations);
+        if (rolling > 0.0)
+            resistRolling(m_entities, rolling);
+        if (settle)
+            m_settleSubstepsDone.fetch_add(1, std::memory_order_relaxed);
+    }
 }
 
 void GameWorld::updateCalm()

@@ -1,0 +1,205 @@
+#include "world/ContactRecorder.hpp"
+
+#include <abalike/world/GameWorld.hpp>
+#include <abalike/world/SettleCache.hpp>
+#include <array>
+#include <box2d/box2d.h>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+namespace abalike
+{
+
+namespace
+{
+
+/// Version of what a key covers and a state holds; a change to either makes old keys miss.
+constexpr std::uint32_t kSettleFormat = 1;
+
+void addShape(SettleKey& key, const b2Shape& shape)
+{
+    key.add(static_cast<int>(shape.GetType())).add(shape.m_radius);
+    switch (shape.GetType())
+    {
+    case b2Shape::e_circle:
+        key.add(static_cast<const b2CircleShape&>(shape).m_p);
+        break;
+    case b2Shape::e_polygon:
+    {
+        const auto& polygon = static_cast<const b2PolygonShape&>(shape);
+        key.add(polygon.m_count);
+        for (int i = 0; i < polygon.m_count; ++i)
+            key.add(polygon.m_vertices[i]);
+        break;
+    }
+    case b2Shape::e_edge:
+    {
+        const auto& edge = static_cast<const b2EdgeShape&>(shape);
+        key.add(edge.m_vertex0).add(edge.m_vertex1).add(edge.m_vertex2).add(edge.m_vertex3).add(edge.m_oneSided);
+        break;
+    }
+    case b2Shape::e_chain:
+    {
+        const auto& chain = static_cast<const b2ChainShape&>(shape);
+        key.add(chain.m_count);
+        for (int i = 0; i < chain.m_count; ++i)
+            key.add(chain.m_vertices[i]);
+        key.add(chain.m_prevVertex).add(chain.m_nextVertex);
+        break;
+    }
+    default:
+        break;
+    }
+}
+
+std::unordered_map<const b2Body*, std::int32_t> bodyPositions(b2World& world)
+{
+    std::unordered_map<const b2Body*, std::int32_t> positions;
+    std::int32_t index = 0;
+    for (const b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext())
+        positions.emplace(body, index++);
+    return positions;
+}
+
+} // namespace
+
+bool GameWorld::settleThroughCache()
+{
+    // A bird launched before the first step flies through the settle step and may touch something in it: that
+    // step is solved in place, as before the cache.
+    if (!m_settings.settleCache || m_settleIterations <= 0 || m_birdIndex >= 0 || !m_projectiles.empty())
+        return false;
+    const std::uint64_t key = settleKey();
+    SettleCache& cache = SettleCache::shared();
+    std::shared_ptr<const SettledState> state = cache.find(key);
+    m_settleReused = state && restoreSettled(*state);
+    if (m_settleReused)
+        m_settleSubstepsDone.store(m_lastSubsteps, std::memory_order_relaxed);
+    else
+    {
+        stepBox2d(true);
+        state = captureSettled();
+        cache.store(key, state);
+        // The same restore a start from the cache goes through: a new world built from the settled state, so
+        // both start alike to the bit, whatever the settle step did to Box2D's broad phase on the way.
+        restoreSettled(*state);
+    }
+    m_contacts->clearStep(); // the settle step deals no damage
+    return true;
+}
+
+std::uint64_t GameWorld::settleKey() const
+{
+    SettleKey key;
+    key.add(kSettleFormat).add(m_settings.dtS).add(m_settings.velocityIterations).add(m_settings.positionIterations);
+    key.add(m_settleIterations).add(m_lastSubsteps).add(m_settings.contactGapM).add(m_settings.cornerChamferM);
+    key.add(m_settings.rollingResistance ? m_catalog.rollingResistance() : 0.0).add(m_settings.allowSleep);
+    key.add(m_world->GetGravity());
+    for (const Entity& e : m_entities)
+        key.add(static_cast<int>(e.kind))
+            .addText(e.typeName)
+            .add(static_cast<int>(e.shape))
+            .add(e.widthM)
+            .add(e.heightM)
+            .add(e.wallM)
+            .add(e.alive)
+            .add(e.body != nullptr);
+    for (b2Body* body = m_world->GetBodyList(); body != nullptr; body = body->GetNext())
+    {
+        key.add(static_cast<int>(body->GetType())).add(body->GetPosition()).add(body->GetAngle());
+        key.add(body->GetLinearVelocity()).add(body->GetAngularVelocity()).add(body->GetMass()).add(body->GetInertia());
+        key.add(body->GetLocalCenter()).add(body->GetLinearDamping()).add(body->GetAngularDamping());
+        key.add(body->GetGravityScale()).add(body->IsBullet()).add(body->IsFixedRotation()).add(body->IsAwake());
+        key.add(body->IsSleepingAllowed()).add(entityIndexOf(body));
+        for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
+        {
+            addShape(key, *fixture->GetShape());
+            key.add(fixture->GetDensity()).add(fixture->GetFriction()).add(fixture->GetRestitution());
+            key.add(fixture->GetRestitutionThreshold()).add(fixture->IsSensor());
+            const b2Filter& filter = fixture->GetFilterData();
+            key.add(filter.categoryBits).add(filter.maskBits).add(filter.groupIndex);
+        }
+    }
+    const auto positions = bodyPositions(*m_world);
+    for (const b2Contact* contact = m_world->GetContactList(); contact != nullptr; contact = contact->GetNext())
+        key.add(positions.at(contact->GetFixtureA()->GetBody()))
+            .add(positions.at(contact->GetFixtureB()->GetBody()))
+            .add(contact->GetChildIndexA())
+            .add(contact->GetChildIndexB())
+            .add(contact->IsTouching());
+    return key.value();
+}
+
+std::shared_ptr<const SettledState> GameWorld::captureSettled() const
+{
+    auto state = std::make_shared<SettledState>();
+    for (const b2Body* body = m_world->GetBodyList(); body != nullptr; body = body->GetNext())
+    {
+        const b2Vec2 p = body->GetPosition();
+        const b2Vec2 v = body->GetLinearVelocity();
+        state->bodies.push_back({p.x, p.y, body->GetAngle(), v.x, v.y, body->GetAngularVelocity()});
+    }
+    const auto positions = bodyPositions(*m_world);
+    for (const b2Contact* contact = m_world->GetContactList(); contact != nullptr; contact = contact->GetNext())
+    {
+        SettledState::Contact c{positions.at(contact->GetFixtureA()->GetBody()),
+                                positions.at(contact->GetFixtureB()->GetBody()), contact->GetChildIndexA(),
+                                contact->GetChildIndexB(), *contact->GetManifold()};
+        for (int p = c.manifold.pointCount; p < b2_maxManifoldPoints; ++p)
+            c.manifold.points[p] = b2ManifoldPoint{}; // Box2D leaves unused points unset
+        state->contacts.push_back(c);
+    }
+    return state;
+}
+
+bool GameWorld::restoreSettled(const SettledState& state)
+{
+    if (state.bodies.size() != static_cast<std::size_t>(m_world->GetBodyCount()))
+        return false;
+    for (const SettledState::Body& b : state.bodies)
+        if (!std::isfinite(b.x) || !std::isfinite(b.y) || !std::isfinite(b.angle) || !std::isfinite(b.vx) ||
+            !std::isfinite(b.vy) || !std::isfinite(b.spin))
+            return false;
+    for (const SettledState::Contact& c : state.contacts)
+        if (c.manifold.pointCount < 0 || c.manifold.pointCount > b2_maxManifoldPoints)
+            return false;
+
+    buildWorld();
+    std::size_t i = 0;
+    for (b2Body* body = m_world->GetBodyList(); body != nullptr; body = body->GetNext(), ++i)
+        if (body->GetType() == b2_dynamicBody)
+            body->SetTransform(b2Vec2(state.bodies[i].x, state.bodies[i].y), state.bodies[i].angle);
+    // One step without gravity, velocity or iterations finds the contacts at the settled places and moves nothing.
+    // It must last a sub-step: Box2D scales the impulses it warm-starts from by the ratio of this step to the last
+    // one, which a new world's first step with no time would make zero.
+    const b2Vec2 gravity = m_world->GetGravity();
+    m_world->SetGravity(b2Vec2(0.0f, 0.0f));
+    m_world->Step(static_cast<float>(m_settings.dtS / m_lastSubsteps), 0, 0);
+    m_world->SetGravity(gravity);
+    i = 0;
+    for (b2Body* body = m_world->GetBodyList(); body != nullptr; body = body->GetNext(), ++i)
+    {
+        if (body->GetType() != b2_dynamicBody)
+            continue;
+        body->SetLinearVelocity(b2Vec2(state.bodies[i].vx, state.bodies[i].vy));
+        body->SetAngularVelocity(state.bodies[i].spin);
+        body->SetAwake(true); // also restarts its sleep timer
+    }
+    // Each contact takes the manifold it had, with the impulses the next step warm-starts from.
+    std::map<std::array<std::int32_t, 4>, const b2Manifold*> manifolds;
+    for (const SettledState::Contact& c : state.contacts)
+        manifolds.emplace(std::array<std::int32_t, 4>{c.bodyA, c.bodyB, c.childA, c.childB}, &c.manifold);
+    const auto positions = bodyPositions(*m_world);
+    for (b2Contact* contact = m_world->GetContactList(); contact != nullptr; contact = contact->GetNext())
+    {
+        const auto found = manifolds.find({positions.at(contact->GetFixtureA()->GetBody()),
+                                           positions.at(contact->GetFixtureB()->GetBody()), contact->GetChildIndexA(),
+                                           contact->GetChildIndexB()});
+        if (found != manifolds.end())
+            *contact->GetManifold() = *found->second;
+    }
+    return true;
+}
+
+} // namespace abalike
