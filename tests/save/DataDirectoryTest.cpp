@@ -31,5 +31,14 @@ TEST(DataDirectory, NothingKnownGivesEmpty)
     EXPECT_TRUE(dataDirectoryFrom("", "", "").empty());
 }
 
+TEST(CacheDirectory, BesideTheDataWhenAbalikeDataDirIsSetElseXdgCacheHomeElseHome)
+{
+    EXPECT_EQ(cacheDirectoryFrom("/srv/abalike", "/home/p/.c", "/home/p"), "/srv/abalike/cache");
+    EXPECT_EQ(cacheDirectoryFrom(nullptr, "/home/p/.c", "/home/p"), "/home/p/.c/abalike");
+    EXPECT_EQ(cacheDirectoryFrom(nullptr, "relative/c", "/home/p"), "/home/p/.cache/abalike");
+    EXPECT_EQ(cacheDirectoryFrom("", "", "/home/p"), "/home/p/.cache/abalike");
+    EXPECT_TRUE(cacheDirectoryFrom(nullptr, nullptr, nullptr).empty());
+}
+
 } // namespace
 } // namespace abalike

@@ -1,5 +1,7 @@
 #include "cli/DataPaths.hpp"
 
+#include <abalike/world/SettleCache.hpp>
+
 #include <cstdlib>
 #include <filesystem>
 
@@ -54,6 +56,20 @@ std::string levelsDirectory()
 std::string campaignManifest()
 {
     return (fs::path(levelsDirectory()) / "campaign.json").string();
+}
+
+void keepSettledLevelsIn(const std::string& dir)
+{
+    if (dir.empty())
+        return;
+    // A rebuilt program may solve the same level differently: its files must not be taken for this one's.
+    std::error_code ec;
+    const auto size = fs::file_size("/proc/self/exe", ec);
+    const auto written = fs::last_write_time("/proc/self/exe", ec);
+    if (ec)
+        return;
+    SettleCache::shared().setDirectory(dir, "abalike " + std::to_string(size) + " " +
+                                                std::to_string(written.time_since_epoch().count()));
 }
 
 } // namespace abalike::app

@@ -17,4 +17,8 @@ std::string levelsDirectory();
 /// The bundled campaign manifest (levels/campaign.json).
 std::string campaignManifest();
 
+/// Keeps settled levels as files in dir (SettleCache), marked with this build of the program (the executable's size
+/// and time), so the next start loads a big level without its settle step.
+void keepSettledLevelsIn(const std::string& dir);
+
 } // namespace abalike::app

@@ -61,6 +61,8 @@ int runEditCommand(const EditArgs& a)
     // A scripted run never writes the data folder, not even to set a damaged file aside.
     const bool scripted = options.scripted() || !a.window.script.empty();
     store.load(scripted ? SaveStore::Damaged::LeaveAlone : SaveStore::Damaged::SetAside);
+    if (!scripted)
+        keepSettledLevelsIn((defaultCacheDirectory() / "settled").string());
     loadWindowScript(a.window, store, options);
     if (!haveDisplay())
         return kUsageExitCode;

@@ -112,6 +112,8 @@ int runPlayCommand(const PlayArgs& a)
     // A scripted run never writes the data folder, not even to set a damaged file aside.
     const bool scripted = options.scripted() || !a.window.script.empty();
     store.load(scripted ? SaveStore::Damaged::LeaveAlone : SaveStore::Damaged::SetAside);
+    if (!scripted)
+        keepSettledLevelsIn((defaultCacheDirectory() / "settled").string());
     loadWindowScript(a.window, store, options);
     if (!packName.empty())
     {

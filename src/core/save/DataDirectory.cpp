@@ -31,4 +31,20 @@ std::filesystem::path defaultDataDirectory()
     return dataDirectoryFrom(std::getenv("ABALIKE_DATA_DIR"), std::getenv("XDG_DATA_HOME"), std::getenv("HOME"));
 }
 
+std::filesystem::path cacheDirectoryFrom(const char* abalikeDataDir, const char* xdgCacheHome, const char* home)
+{
+    if (isSet(abalikeDataDir))
+        return std::filesystem::path(abalikeDataDir) / "cache";
+    if (isSet(xdgCacheHome) && std::filesystem::path(xdgCacheHome).is_absolute())
+        return std::filesystem::path(xdgCacheHome) / "abalike";
+    if (isSet(home))
+        return std::filesystem::path(home) / ".cache" / "abalike";
+    return {};
+}
+
+std::filesystem::path defaultCacheDirectory()
+{
+    return cacheDirectoryFrom(std::getenv("ABALIKE_DATA_DIR"), std::getenv("XDG_CACHE_HOME"), std::getenv("HOME"));
+}
+
 } // namespace abalike
