@@ -246,7 +246,7 @@ def l5_6():
                  "On the Moon g = {g} m/s^2: a bird at {v_max:red} m/s flies {earth_g / g|1} times as far and as long "
                  "as on Earth, and a falling block lands slowly, so a tower topples in slow motion.",
                  ["Gentle pulls go a long way here."],
-                 ["red", "red", "red", "red"], s, (30.0, 8.0), slingshot={"x": 0, "y": 1.5, "max_force_n": 200},
+                 ["red", "red", "red", "black", "red"], s, (30.0, 8.0), slingshot={"x": 0, "y": 1.5, "max_force_n": 200},
                  environment={"gravity": 1.62}, theme="moon")
 
 
@@ -422,7 +422,7 @@ def l6_9():
                  "A citadel on the Moon (g = {g} m/s^2): the bird flies {earth_g / g|1} times as far as on Earth at "
                  "the same speed, and the keep falls slowly.",
                  ["A light pull is enough."],
-                 ["red", "red", "black", "red"], s, (17.5, 11.31), slingshot={"x": 0, "y": 1.5, "max_force_n": 400},
+                 ["red", "red", "black", "red", "red"], s, (17.5, 11.31), slingshot={"x": 0, "y": 1.5, "max_force_n": 400},
                  environment={"gravity": 1.62}, theme="moon")
 
 
@@ -438,7 +438,7 @@ def l6_10():
                  "Two stone castles with helmeted pigs: every idea of the campaign at once. Stone does not break, it "
                  "topples; heavy birds carry momentum; TNT between the castles reaches both.",
                  ["The TNT between the castles is within reach of both."],
-                 ["black", "red", "black", "red"], s, (35.0, 21.21))
+                 ["black", "red", "black", "red", "red"], s, (35.0, 21.21))
 
 
 # The builder used by tools/make-levels --------------------------------------------------------------------------------
