@@ -80,6 +80,9 @@ HeadOn collide(BlockShape shape, double restitution)
     for (int i = 0; i < 60; ++i)
         world.step();
     result.after = totals(world);
+    // The first step rebuilt the bodies (GameWorld::box2d): take them again.
+    light = world.entities()[1].body;
+    heavy = world.entities()[2].body;
     result.relativeSpeedAfter = heavy->GetLinearVelocity().x - light->GetLinearVelocity().x;
     return result;
 }

@@ -94,7 +94,7 @@ struct Entity
     double health = 0.0; ///< remaining impulse it can absorb (N s)
     double maxHealth = 0.0;
     bool alive = true;
-    b2Body* body = nullptr; ///< null once removed
+    b2Body* body = nullptr; ///< null once removed; built anew by the first step (GameWorld::box2d)
 };
 
 /// What broke a block or defeated a pig: the body that delivered the largest impulse in the step in which its
@@ -263,6 +263,8 @@ public:
     double surfaceBelow(double x, double fromY) const;
     /// The catalog as this level sees it (its material overrides and custom bird applied, see levelCatalog).
     const Catalog& catalog() const { return m_catalog; }
+    /// The Box2D world. The first step (the settle step, SettleCache) builds it anew with every body: pointers to
+    /// bodies, fixtures or contacts taken before it are not valid after it; take them from entities() again.
     b2World& box2d() { return *m_world; }
     const b2World& box2d() const { return *m_world; }
 
