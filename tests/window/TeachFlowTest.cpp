@@ -314,5 +314,58 @@ TEST_F(TeachFlow, AfterTheImpactEveryPanelIsInsideTheWindow)
                            [](const std::string& name) { return name.rfind("First impact", 0) == 0; }),
               names.end());
 }
+
+TEST_F(TeachFlow, AtLargeTextThePanelsAfterAShotNeverOverlapAndTheFeedbackShrinksToOneLine)
+{
+    // 2-1 after its reference shot at 200 % text with the overlay on: the whole feedback card (seven lines) once
+    // covered the status, air and aim panels, the Why panel ran into the hint and the "predicted vs actual" label
+    // sat on the aim readout. In 1280x720 the feedback is now its first sentence on one line; in 1280x400 whatever
+    // has no room is left out. Either way every panel is inside the window and no two overlap.
+    std::ofstream(data() / "settings.json") << R"({"format": 1, "text_scale": 2.0, "teaching_overlay": true})";
+    for (const std::string size : {"1280x720", "1280x400"})
+    {
+        const GameRun run =
+            runGame("play " + sourceFile("levels/2-1-dominoes.json") + " --frames 420 --shot 32.5,12.75 --size " + size,
+                    data());
+        ASSERT_EQ(run.exitCode, 0) << run.err;
+        const nlohmann::json* panels = nullptr;
+        for (const nlohmann::json& line : run.trace)
+            if (line.value("event", "") == "panels")
+                panels = &line;
+        ASSERT_NE(panels, nullptr);
+        const double width = (*panels)["window"][0].get<double>();
+        const double height = (*panels)["window"][1].get<double>();
+        struct Box
+        {
+            std::string name;
+            double x, y, w, h;
+        };
+        std::vector<Box> boxes;
+        for (const nlohmann::json& panel : (*panels)["drawn"])
+            boxes.push_back({panel.value("name", ""), panel["x"].get<double>(), panel["y"].get<double>(),
+                             panel["w"].get<double>(), panel["h"].get<double>()});
+        for (std::size_t i = 0; i < boxes.size(); ++i)
+        {
+            const Box& a = boxes[i];
+            EXPECT_GE(a.x, 0.0) << size << " " << a.name;
+            EXPECT_GE(a.y, 0.0) << size << " " << a.name;
+            EXPECT_LE(a.x + a.w, width + 0.5) << size << " " << a.name;
+            EXPECT_LE(a.y + a.h, height + 0.5) << size << " " << a.name;
+            for (std::size_t j = i + 1; j < boxes.size(); ++j)
+            {
+                const Box& b = boxes[j];
+                const bool apart = a.x + a.w <= b.x || b.x + b.w <= a.x || a.y + a.h <= b.y || b.y + b.h <= a.y;
+                EXPECT_TRUE(apart) << size << ": " << a.name << " overlaps " << b.name;
+            }
+        }
+        if (size == "1280x720")
+        {
+            const auto feedback =
+                std::find_if(boxes.begin(), boxes.end(), [](const Box& box) { return box.name == "feedback"; });
+            ASSERT_NE(feedback, boxes.end());
+            EXPECT_LT(feedback->h, 80.0); // one line of 32 px text and its padding, not seven
+        }
+    }
+}
 } // namespace
 } // namespace abalike::test

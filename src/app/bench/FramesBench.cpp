@@ -163,6 +163,23 @@ double partMedianMs(const SceneFrames& scene, double FrameTimes::*part)
     return percentile(std::move(ms), 0.5);
 }
 
+/// Every frame of every scene with its parts in ms, to find where a scene's slowest frames go.
+std::string framePartsCsv(const std::vector<SceneFrames>& results)
+{
+    std::ostringstream csv;
+    csv << "scene,window,frame,physics ms,preview ms,update ms,draw ms,display ms,total ms\n";
+    for (const SceneFrames& scene : results)
+        for (std::size_t i = 0; i < scene.frames.size(); ++i)
+        {
+            const FrameTimes& t = scene.frames[i];
+            // Frames count from 1 and the first (the load) is not kept.
+            csv << scene.name << ',' << scene.size.width << 'x' << scene.size.height << ',' << i + 2 << ','
+                << 1000.0 * t.physicsS << ',' << 1000.0 * t.previewS << ',' << 1000.0 * t.updateS << ','
+                << 1000.0 * t.drawS << ',' << 1000.0 * t.displayS << ',' << 1000.0 * t.totalS << '\n';
+        }
+    return csv.str();
+}
+
 /// Every campaign level in campaign order, every lesson, and the 1 000-block wall; with quick the busiest level, the
 /// first lesson and the wall.
 std::vector<Scene> framesScenes(const Campaign& campaign, bool quick)
@@ -313,7 +330,8 @@ int runFramesBench(const BenchOptions& options)
        << table.markdown();
     std::cout << "bench frames\n" << table.text() << missed << " targets missed\n";
     const bool written = writeReportFile(options.outDir, "frames.csv", table.csv()) &&
-                         writeReportFile(options.outDir, "frames.md", md.str());
+                         writeReportFile(options.outDir, "frames.md", md.str()) &&
+                         writeReportFile(options.outDir, "frame-parts.csv", framePartsCsv(results));
     return written && !results.empty() ? 0 : 1;
 }
 

@@ -11,7 +11,8 @@
 namespace abalike::app
 {
 
-/// Where each standing block and pig is on screen (window pixels): what labels should not cover.
+/// Where each standing block and pig, the slingshot with its bird and the bird in flight are on screen (window
+/// pixels): what labels and cards should not cover.
 std::vector<sf::FloatRect> structureScreenBoxes(const GameSession& session, const Camera& camera);
 
 /// How much of a rectangle the boxes cover (pixels², overlaps counted once per box).

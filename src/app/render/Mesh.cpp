@@ -116,11 +116,23 @@ void Mesh::addRoundLine(sf::Vector2f a, sf::Vector2f b, float width, sf::Color c
 
 void Mesh::addPolyline(std::span<const sf::Vector2f> points, float width, sf::Color colour)
 {
-    for (std::size_t i = 1; i < points.size(); ++i)
-        addLine(points[i - 1], points[i], width, colour);
+    // Points closer than a fifth of the width to the last one kept add nothing the stroke shows, but a path recorded
+    // once a step piles hundreds of them where a bird rests, each a translucent joint over the same pixels.
+    const float minGap = 0.2f * width;
+    m_polyline.clear();
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+        const bool last = i + 1 == points.size();
+        if (m_polyline.empty() || last)
+            m_polyline.push_back(points[i]);
+        else if (const sf::Vector2f d = points[i] - m_polyline.back(); d.x * d.x + d.y * d.y >= minGap * minGap)
+            m_polyline.push_back(points[i]);
+    }
+    for (std::size_t i = 1; i < m_polyline.size(); ++i)
+        addLine(m_polyline[i - 1], m_polyline[i], width, colour);
     // Small joints fill the notches between segments where the line bends.
-    for (std::size_t i = 1; i + 1 < points.size(); ++i)
-        addCircle(points[i], 0.5f * width, colour, 8);
+    for (std::size_t i = 1; i + 1 < m_polyline.size(); ++i)
+        addCircle(m_polyline[i], 0.5f * width, colour, 8);
 }
 
 void Mesh::addStar(sf::Vector2f centre, float outerRadius, float innerRadius, sf::Color colour)

@@ -5,6 +5,7 @@
 #include <SFML/Graphics/Transform.hpp>
 #include <SFML/Graphics/VertexArray.hpp>
 #include <span>
+#include <vector>
 
 namespace abalike::app
 {
@@ -52,6 +53,7 @@ private:
     void addVertex(sf::Vector2f point, sf::Color colour);
 
     sf::VertexArray m_vertices;
+    std::vector<sf::Vector2f> m_polyline; ///< addPolyline's kept points, reused between calls
     sf::Transform m_local;
 };
 

@@ -172,7 +172,7 @@ void OverlayRenderer::drawShotPaths(sf::RenderTarget& target, const Camera& came
 }
 
 void OverlayRenderer::drawShotMarkers(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot,
-                                      float opacity, std::span<const sf::FloatRect> avoid, float textScale)
+                                      float opacity)
 {
     m_mesh.clear();
     if (shot.ability)
@@ -195,9 +195,15 @@ void OverlayRenderer::drawShotMarkers(sf::RenderTarget& target, const Camera& ca
         }
     }
     m_mesh.draw(target);
+}
 
-    if (m_font == nullptr || !actualAt || !(shot.deviationM || shot.launchedIntoMovingWorld))
+void OverlayRenderer::drawShotLabel(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot,
+                                    float opacity, std::span<const sf::FloatRect> structure, float textScale)
+{
+    if (m_font == nullptr || !shot.actualContact || !(shot.deviationM || shot.launchedIntoMovingWorld))
         return;
+    const std::optional<sf::Vector2f> actualAt =
+        camera.toScreen({static_cast<float>(shot.actualContact->x), static_cast<float>(shot.actualContact->y)});
     // Next to the contact, in free sky: off the structure if there is room, inside the window.
     const float scale = hudScale(camera.windowSize());
     const auto size = static_cast<unsigned>(std::max(9.0f, std::round(16.0f * scale * textScale)));
@@ -206,8 +212,25 @@ void OverlayRenderer::drawShotMarkers(sf::RenderTarget& target, const Camera& ca
                                                  : std::string("launched while blocks moved: no deviation scored"));
     const sf::Vector2f extent = measureText(*m_font, text, size);
     const float pad = 0.4f * static_cast<float>(size);
-    const sf::Vector2f at = placeLabel(*actualAt, extent + sf::Vector2f(2.0f * pad, 2.0f * pad),
-                                       sf::Vector2f(camera.windowSize()), avoid, 18.0f * scale);
+    // Clear of every panel drawn this frame and, where there is room, of the structure; with no spot clear of the
+    // panels inside the window it is left out rather than drawn over them.
+    const sf::Vector2f boxSize = extent + sf::Vector2f(2.0f * pad, 2.0f * pad);
+    const sf::Vector2f window(camera.windowSize());
+    std::vector<sf::FloatRect> panels;
+    for (const ScreenRegion& region : screenLayout())
+        panels.push_back(region.rect);
+    std::vector<sf::FloatRect> avoid(structure.begin(), structure.end());
+    avoid.insert(avoid.end(), panels.begin(), panels.end());
+    const auto clear = [&](sf::Vector2f corner)
+    {
+        return corner.x >= 0.0f && corner.y >= 0.0f && corner.x + boxSize.x <= window.x &&
+               corner.y + boxSize.y <= window.y && coveredArea({corner, boxSize}, panels) <= 0.0f;
+    };
+    sf::Vector2f at = placeLabel(*actualAt, boxSize, window, avoid, 18.0f * scale);
+    if (!clear(at))
+        at = placeLabel(*actualAt, boxSize, window, panels, 18.0f * scale);
+    if (!clear(at))
+        return;
 
     sf::RectangleShape box({extent.x + 2.0f * pad, extent.y + 2.0f * pad});
     box.setPosition(at);

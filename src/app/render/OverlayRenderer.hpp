@@ -27,10 +27,13 @@ public:
     /// The paths of a fired shot, at the given opacity (older shots fade); drawn behind blocks and birds.
     void drawShotPaths(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot, float opacity);
     /// The contact markers and the deviation label of a fired shot; drawn over everything.
-    /// The predicted and actual contact, the ability's impulses, and the "predicted vs actual" label placed next to
-    /// the contact but off the boxes in avoid (the structure's, on screen). textScale is the player's setting.
-    void drawShotMarkers(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot, float opacity,
-                         std::span<const sf::FloatRect> avoid, float textScale);
+    /// The predicted and actual contact and the ability's impulses.
+    void drawShotMarkers(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot, float opacity);
+    /// The "predicted vs actual" label next to the actual contact, drawn after every panel: clear of them
+    /// (ScreenRegions) and, where there is room, of the boxes in structure (on screen); left out when no spot near the
+    /// contact inside the window is clear of the panels. textScale is the player's setting.
+    void drawShotLabel(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot, float opacity,
+                       std::span<const sf::FloatRect> structure, float textScale);
 
 private:
     void addDots(const Camera& camera, std::span<const sf::Vector2f> worldPoints, float radius, float opacity);

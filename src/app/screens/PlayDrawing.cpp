@@ -77,8 +77,7 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
     if (view.aim())
         drawPullLimit(target, camera, session, pulling, view.app().uiScale());
     if (lastShot != nullptr)
-        overlay.drawShotMarkers(target, camera, *lastShot, opacity, structureScreenBoxes(session, camera),
-                                static_cast<float>(view.app().settings().textScale));
+        overlay.drawShotMarkers(target, camera, *lastShot, opacity);
     // The preview setting: the whole path, its first half second (30 steps of 1/60 s), or none.
     const PreviewMode previewMode = view.app().settings().preview;
     if (const PredictedFlight* preview = view.preview(); preview != nullptr && previewMode != PreviewMode::Off)
@@ -91,6 +90,10 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
              PlayToolbar::reservedWidthPx(view.app(), target.getSize()));
     for (const auto& layer : layers)
         layer->drawScreen(target, view);
+    // Last, so that it can keep clear of every panel.
+    if (lastShot != nullptr)
+        overlay.drawShotLabel(target, camera, *lastShot, opacity, structureScreenBoxes(session, camera),
+                              static_cast<float>(view.app().settings().textScale));
 }
 
 bool launchRequested(App& app, GameSession& session, const ScriptedShot& shot)

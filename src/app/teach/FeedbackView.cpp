@@ -57,65 +57,111 @@ void FeedbackView::update(const GameSession& session, const std::optional<AimRea
     }
 }
 
+namespace
+{
+/// The sentence cut at a word so that it fits `width` with an ellipsis after it (whole when it fits).
+std::string oneLine(const sf::Font& font, const std::string& sentence, unsigned size, float width)
+{
+    if (measureText(font, utf8(sentence), size).x <= width)
+        return sentence;
+    std::string line;
+    std::size_t start = 0;
+    while (start < sentence.size())
+    {
+        const std::size_t end = std::min(sentence.find(' ', start), sentence.size());
+        const std::string candidate = sentence.substr(0, end) + "…";
+        if (measureText(font, utf8(candidate), size).x > width)
+            break;
+        line = candidate;
+        start = end + 1;
+    }
+    return line;
+}
+} // namespace
+
 void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bottom, float top,
                         std::span<const sf::FloatRect> avoid, float maxWidth, unsigned rowSize, float scale) const
 {
     if (m_sentences.empty())
         return;
-    std::vector<std::string> lines;
+    const float windowWidth = static_cast<float>(target.getSize().x);
+    const float windowHeight = static_cast<float>(target.getSize().y);
+    const float pad = 8.0f * scale;
+    std::vector<std::string> full;
     for (const std::string& sentence : m_sentences)
         for (std::string& line : wrapText(font, sentence, rowSize, maxWidth))
-            lines.push_back(std::move(line));
-    const float rowHeight = font.getLineSpacing(rowSize);
-    float width = 0.0f;
-    for (const std::string& line : lines)
-        width = std::max(width, measureText(font, utf8(line), rowSize).x);
-    const float pad = 8.0f * scale;
-    const float height = rowHeight * static_cast<float>(lines.size()) + 2.0f * pad;
-    const float centre = 0.5f * static_cast<float>(target.getSize().x);
-    const float windowWidth = static_cast<float>(target.getSize().x);
-    const float w = width + 2.0f * pad;
-    // Candidates in order of preference: above the hint in the middle, then its left and right, then up in the sky
-    // under the panels already drawn (middle, left, right). The first that covers neither a panel nor the
-    // structure wins; when none is free, the one covering least (a panel counting far more than the structure).
-    std::vector<sf::FloatRect> candidates;
-    for (const float x : {centre - 0.5f * w, 12.0f * scale, windowWidth - 12.0f * scale - w})
-        candidates.emplace_back(x, bottom - height, w, height);
-    for (const float x : {centre - 0.5f * w, 12.0f * scale, windowWidth - 12.0f * scale - w})
-        candidates.emplace_back(x, firstFreeTop(x, w, top, height, 6.0f * scale), w, height);
-    // Chosen once per shot's sentences: the card stays put while the structure collapses behind it, and moves only
-    // when a panel drawn before it (a label that appeared later) now takes its spot.
+            full.push_back(std::move(line));
+    // Where the whole card has no room (a small window, large text, many panels), the first sentence on one line.
+    const std::vector<std::string> summary{
+        oneLine(font, m_sentences.front(), rowSize, std::min(maxWidth, windowWidth - 24.0f * scale - 2.0f * pad))};
     std::vector<sf::FloatRect> panels;
     for (const ScreenRegion& region : screenLayout())
         panels.push_back(region.rect);
-    if (m_spot && *m_spot < candidates.size() && coveredArea(candidates[*m_spot], panels) <= 0.0f)
+
+    // Candidates in order of preference: above the hint in the middle, then its left and right, then up in the sky
+    // under the panels already drawn (middle, left, right). The first that covers neither a panel nor the
+    // structure wins; otherwise the one covering least of the structure among those clear of every panel.
+    const auto candidatesFor = [&](const std::vector<std::string>& lines)
     {
-        drawCard(target, font, candidates[*m_spot], lines, rowSize, scale);
-        return;
-    }
-    const float windowHeight = static_cast<float>(target.getSize().y);
-    sf::FloatRect rect = candidates.front();
-    m_spot = 0;
-    float least = -1.0f;
-    for (std::size_t i = 0; i < candidates.size(); ++i)
+        float width = 0.0f;
+        for (const std::string& line : lines)
+            width = std::max(width, measureText(font, utf8(line), rowSize).x);
+        const float w = width + 2.0f * pad;
+        const float height = font.getLineSpacing(rowSize) * static_cast<float>(lines.size()) + 2.0f * pad;
+        const float centre = 0.5f * windowWidth;
+        std::vector<sf::FloatRect> candidates;
+        for (const float x : {centre - 0.5f * w, 12.0f * scale, windowWidth - 12.0f * scale - w})
+            candidates.emplace_back(x, bottom - height, w, height);
+        for (const float x : {centre - 0.5f * w, 12.0f * scale, windowWidth - 12.0f * scale - w})
+            candidates.emplace_back(x, firstFreeTop(x, w, top, height, 6.0f * scale), w, height);
+        return candidates;
+    };
+    const auto fits = [&](const sf::FloatRect& rect)
     {
-        const sf::FloatRect& candidate = candidates[i];
-        const bool inside = candidate.left >= 0.0f && candidate.top >= 0.0f &&
-                            candidate.left + candidate.width <= windowWidth &&
-                            candidate.top + candidate.height <= windowHeight;
-        // Covering a panel is far worse than covering the structure; leaving the window worst of all.
-        const float covered =
-            coveredArea(candidate, avoid) + 100.0f * coveredArea(candidate, panels) + (inside ? 0.0f : 1e9f);
-        if (least < 0.0f || covered < least)
+        return rect.left >= 0.0f && rect.top >= 0.0f && rect.left + rect.width <= windowWidth &&
+               rect.top + rect.height <= windowHeight && coveredArea(rect, panels) <= 0.0f;
+    };
+    // Chosen once per shot's sentences: the card stays put while the structure collapses behind it, and moves only
+    // when a panel drawn before it (a label that appeared later) now takes its spot.
+    if (m_spot)
+    {
+        const std::vector<std::string>& lines = m_collapsed ? summary : full;
+        const std::vector<sf::FloatRect> candidates = candidatesFor(lines);
+        if (*m_spot < candidates.size() && fits(candidates[*m_spot]))
         {
-            least = covered;
-            rect = candidate;
-            m_spot = i;
+            drawCard(target, font, candidates[*m_spot], lines, rowSize, scale);
+            return;
         }
-        if (covered <= 0.0f)
-            break;
     }
-    drawCard(target, font, rect, lines, rowSize, scale);
+    m_spot.reset();
+    for (const bool collapsed : {false, true})
+    {
+        const std::vector<std::string>& lines = collapsed ? summary : full;
+        if (lines.front().empty())
+            continue;
+        const std::vector<sf::FloatRect> candidates = candidatesFor(lines);
+        float least = -1.0f;
+        for (std::size_t i = 0; i < candidates.size(); ++i)
+        {
+            if (!fits(candidates[i]))
+                continue;
+            const float covered = coveredArea(candidates[i], avoid);
+            if (least < 0.0f || covered < least)
+            {
+                least = covered;
+                m_spot = i;
+            }
+            if (covered <= 0.0f)
+                break;
+        }
+        if (m_spot)
+        {
+            m_collapsed = collapsed;
+            drawCard(target, font, candidates[*m_spot], lines, rowSize, scale);
+            return;
+        }
+    }
+    // Not even one line has room clear of the panels: left out this frame rather than drawn over them.
 }
 
 void FeedbackView::drawCard(sf::RenderTarget& target, const sf::Font& font, const sf::FloatRect& rect,

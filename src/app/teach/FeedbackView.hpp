@@ -25,8 +25,10 @@ public:
     const std::vector<std::string>& sentences() const { return m_sentences; }
     /// Draws the sentences wrapped to `maxWidth` on a card: above `bottom` (window pixels) in the middle, else at
     /// its left or right, else from `top` down under the panels already drawn this frame (ScreenRegions), the first
-    /// spot covering neither a panel nor a box of `avoid` (the structure on screen). The spot is chosen once per
-    /// shot's sentences, so the card stays put while the world moves.
+    /// spot inside the window clear of every panel and of the boxes of `avoid` (the structure on screen), else the
+    /// one covering least of them. With no such spot, the first sentence cut to one line in the same way; with none
+    /// for that either, nothing. The spot is chosen once per shot's sentences, so the card stays put while the world
+    /// moves.
     void draw(sf::RenderTarget& target, const sf::Font& font, float bottom, float top,
               std::span<const sf::FloatRect> avoid, float maxWidth, unsigned rowSize, float scale) const;
 
@@ -35,6 +37,7 @@ private:
                   const std::vector<std::string>& lines, unsigned rowSize, float scale) const;
 
     mutable std::optional<std::size_t> m_spot; ///< the candidate spot chosen for the current sentences
+    mutable bool m_collapsed = false;          ///< that spot holds the one-line summary, not the whole card
     std::size_t m_shotsSeen = 0;
     bool m_done = false;
     std::optional<std::pair<double, double>> m_firstAim; ///< angle and speed when the next bird became ready

@@ -116,6 +116,8 @@ sf::FloatRect drawForceLegend(sf::RenderTarget& target, const sf::Font& font, sf
         rows.push_back({"no air: gravity is the only force", "", sf::Color::Transparent, false});
     const TextPanel panel("Forces on the bird (" + formatFixed(bird.massKg, 1) + " kg)", std::move(rows));
     const sf::Vector2f size = panel.measure(font, titleSize, rowSize, scale);
+    if (!panelHasRoom(target, {{topRight.x - size.x, topRight.y}, size}))
+        return {};
     return panel.draw(target, font, {topRight.x - size.x, topRight.y}, titleSize, rowSize, scale);
 }
 
@@ -154,6 +156,8 @@ sf::FloatRect drawEnergyBars(sf::RenderTarget& target, const sf::Font& font, sf:
                                   2.0f * pad + measureText(font, utf8(balance), rowSize).x});
     const float height = 2.0f * pad + titleHeight + rowHeight * 5.2f;
     const sf::FloatRect rect(topRight.x - width, topRight.y, width, height);
+    if (!panelHasRoom(target, rect))
+        return {};
     drawTeachPanel(target, rect, scale, "energy");
     drawLabel(target, font, utf8(title), {rect.left + pad, rect.top + pad}, titleSize, palette::kStar);
 

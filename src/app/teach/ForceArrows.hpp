@@ -14,13 +14,14 @@ namespace abalike::app
 void drawForceArrows(sf::RenderTarget& target, const sf::Font& font, const Camera& camera, const BirdReadout& bird,
                      bool components, unsigned labelSize, float scale);
 
-/// The legend of those arrows with their values in SI units; returns its bounds.
+/// The legend of those arrows with their values in SI units; returns its bounds (empty, nothing drawn, where it has
+/// no room: panelHasRoom).
 sf::FloatRect drawForceLegend(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topRight,
                               const BirdReadout& bird, bool hasDrag, bool hasWind, bool components, unsigned titleSize,
                               unsigned rowSize, float scale);
 
 /// Bars of kinetic, potential and total energy and of the energy drag has taken, against the launch energy;
-/// `at` is the panel's top-right corner. Returns its bounds.
+/// `at` is the panel's top-right corner. Returns its bounds (empty, nothing drawn, where it has no room).
 sf::FloatRect drawEnergyBars(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topRight,
                              const FlightEnergy& energy, bool atContact, unsigned titleSize, unsigned rowSize,
                              float scale);

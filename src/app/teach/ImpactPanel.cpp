@@ -83,7 +83,10 @@ sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf
         rows.push_back({"Momentum is kept; the kinetic energy lost became heat, sound and deformation.", ""});
     const TextPanel panel("First impact: t = " + withUnit(impact.tS, 3, "s"), std::move(rows));
     const sf::Vector2f size = panel.measure(font, titleSize, rowSize, scale);
-    return panel.draw(target, font, {std::max(0.0f, topRight.x - size.x), topRight.y}, titleSize, rowSize, scale);
+    const sf::Vector2f at(std::max(0.0f, topRight.x - size.x), topRight.y);
+    if (!panelHasRoom(target, {at, size}))
+        return {};
+    return panel.draw(target, font, at, titleSize, rowSize, scale);
 }
 
 } // namespace abalike::app

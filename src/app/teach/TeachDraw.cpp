@@ -46,6 +46,18 @@ void drawTeachPanel(sf::RenderTarget& target, sf::FloatRect rect, float scale, s
     target.draw(box);
 }
 
+bool panelHasRoom(const sf::RenderTarget& target, const sf::FloatRect& rect)
+{
+    const sf::Vector2f window(target.getSize());
+    if (rect.left < 0.0f || rect.top < 0.0f || rect.left + rect.width > window.x || rect.top + rect.height > window.y)
+        return false;
+    sf::FloatRect overlap;
+    for (const ScreenRegion& region : screenLayout())
+        if (rect.intersects(region.rect, overlap) && overlap.width > 0.0f && overlap.height > 0.0f)
+            return false;
+    return true;
+}
+
 namespace
 {
 struct PanelMetrics

@@ -39,6 +39,10 @@ void addArrow(Mesh& mesh, sf::Vector2f from, sf::Vector2f to, float width, sf::C
 /// a frame's layout (ScreenRegions).
 void drawTeachPanel(sf::RenderTarget& target, sf::FloatRect rect, float scale, std::string_view name);
 
+/// Whether a panel would lie inside the window and clear of every panel drawn before it this frame (ScreenRegions):
+/// a column's panel with no such room is left out rather than drawn over the others or off the window.
+bool panelHasRoom(const sf::RenderTarget& target, const sf::FloatRect& rect);
+
 /// One row of a text panel: a label on the left, a value on the right, a colour swatch when set.
 struct PanelRow
 {

@@ -58,6 +58,8 @@ sf::FloatRect drawWhyPanel(sf::RenderTarget& target, const sf::Font& font, sf::V
                                : "108 m/s (smaller steps), or by rounding (\u00B5m)",
                     ""});
     const TextPanel panel("Why preview and world can differ", std::move(rows));
+    if (!panelHasRoom(target, {topLeft, panel.measure(font, titleSize, rowSize, scale)}))
+        return {};
     return panel.draw(target, font, topLeft, titleSize, rowSize, scale);
 }
 
