@@ -44,11 +44,32 @@ sf::FloatRect GuideRunner::draw(sf::RenderTarget& target, const sf::Font& font, 
     const std::string progress =
         finished ? "done" : "step " + std::to_string(m_step + 1) + " of " + std::to_string(m_guide->steps.size());
     const float pad = 10.0f * scale;
-    const std::vector<std::string> lines = wrapText(font, text, rowSize, maxWidth - 2.0f * pad);
+    std::vector<std::string> lines = wrapText(font, text, rowSize, maxWidth - 2.0f * pad);
     const float rowHeight = font.getLineSpacing(rowSize);
     const float titleHeight = font.getLineSpacing(titleSize) * 1.15f;
-    const float height = 2.0f * pad + titleHeight + rowHeight * static_cast<float>(lines.size());
-    const sf::FloatRect rect(topLeft, {maxWidth, height});
+    const auto cardWith = [&](std::size_t rows)
+    {
+        return sf::FloatRect(topLeft, {maxWidth, 2.0f * pad + titleHeight + rowHeight * static_cast<float>(rows)});
+    };
+    // In a window too small for the whole step (large text, a low window) the card keeps as many lines as have room
+    // above the panels under it, the last ending in an ellipsis; with no room even for its title it is left out.
+    std::size_t rows = lines.size();
+    while (rows > 0 && !panelHasRoom(target, cardWith(rows)))
+        --rows;
+    if (!panelHasRoom(target, cardWith(rows)))
+        return {};
+    if (rows < lines.size())
+    {
+        lines.resize(rows);
+        if (rows > 0)
+        {
+            std::string& last = lines.back();
+            while (!last.empty() && measureText(font, utf8(last + "\u2026"), rowSize).x > maxWidth - 2.0f * pad)
+                last.resize(last.find_last_of(' ') == std::string::npos ? 0 : last.find_last_of(' '));
+            last += "\u2026";
+        }
+    }
+    const sf::FloatRect rect = cardWith(rows);
     drawTeachPanel(target, rect, scale, "guide");
     drawLabel(target, font, utf8(m_guide->title), {rect.left + pad, rect.top + pad}, titleSize, palette::kStar);
     drawLabel(target, font, utf8(progress), {rect.left + rect.width - pad, rect.top + pad}, rowSize, palette::kTextDim,

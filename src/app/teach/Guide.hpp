@@ -57,7 +57,9 @@ public:
 
     /// Checks the current step (and the next ones: several can be done at once).
     void update(GuideContext context);
-    /// The card: the guide's title, the step's text and how far along it is; `topLeft` its corner. Returns its bounds.
+    /// The card: the guide's title, the step's text and how far along it is; `topLeft` its corner. Where the whole
+    /// card has no room (panelHasRoom) it keeps the lines that fit, the last cut with an ellipsis, and with no room
+    /// for its title it is left out. Returns its bounds (empty when left out).
     sf::FloatRect draw(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topLeft, float maxWidth,
                        unsigned titleSize, unsigned rowSize, float scale) const;
 

@@ -279,7 +279,8 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
         const sf::FloatRect card =
             m_guide.draw(target, *font, {margin, left}, std::min(440.0f * scale, window.x - 2.0f * margin),
                          m_app.textSize(17.0f), m_app.textSize(15.0f), scale);
-        left = card.top + card.height + gap;
+        if (card.height > 0.0f) // left out when it had no room
+            left = card.top + card.height + gap;
         clearLeft();
     }
     if (PredictQuizView::wanted(session.level()) && !m_walkthrough.active())
