@@ -179,18 +179,17 @@ void OverlayRenderer::drawShotMarkers(sf::RenderTarget& target, const Camera& ca
         addAbility(camera, *shot.ability, opacity);
     if (shot.predictedContact)
         addPredictedContact(camera, *shot.predictedContact, opacity);
-    std::optional<sf::Vector2f> actualAt;
     if (shot.actualContact)
     {
-        actualAt =
+        const sf::Vector2f actualAt =
             camera.toScreen({static_cast<float>(shot.actualContact->x), static_cast<float>(shot.actualContact->y)});
         constexpr float kArm = 6.0f;
         for (const float width : {5.0f, 3.0f})
         {
             const sf::Color colour = width > 4.0f ? sf::Color(255, 255, 255) : palette::kActualContact;
-            m_mesh.addLine(*actualAt + sf::Vector2f(-kArm, -kArm), *actualAt + sf::Vector2f(kArm, kArm), width,
+            m_mesh.addLine(actualAt + sf::Vector2f(-kArm, -kArm), actualAt + sf::Vector2f(kArm, kArm), width,
                            faded(colour, opacity));
-            m_mesh.addLine(*actualAt + sf::Vector2f(-kArm, kArm), *actualAt + sf::Vector2f(kArm, -kArm), width,
+            m_mesh.addLine(actualAt + sf::Vector2f(-kArm, kArm), actualAt + sf::Vector2f(kArm, -kArm), width,
                            faded(colour, opacity));
         }
     }
@@ -202,7 +201,7 @@ void OverlayRenderer::drawShotLabel(sf::RenderTarget& target, const Camera& came
 {
     if (m_font == nullptr || !shot.actualContact || !(shot.deviationM || shot.launchedIntoMovingWorld))
         return;
-    const std::optional<sf::Vector2f> actualAt =
+    const sf::Vector2f actualAt =
         camera.toScreen({static_cast<float>(shot.actualContact->x), static_cast<float>(shot.actualContact->y)});
     // Next to the contact, in free sky: off the structure if there is room, inside the window.
     const float scale = hudScale(camera.windowSize());
@@ -226,9 +225,9 @@ void OverlayRenderer::drawShotLabel(sf::RenderTarget& target, const Camera& came
         return corner.x >= 0.0f && corner.y >= 0.0f && corner.x + boxSize.x <= window.x &&
                corner.y + boxSize.y <= window.y && coveredArea({corner, boxSize}, panels) <= 0.0f;
     };
-    sf::Vector2f at = placeLabel(*actualAt, boxSize, window, avoid, 18.0f * scale);
+    sf::Vector2f at = placeLabel(actualAt, boxSize, window, avoid, 18.0f * scale);
     if (!clear(at))
-        at = placeLabel(*actualAt, boxSize, window, panels, 18.0f * scale);
+        at = placeLabel(actualAt, boxSize, window, panels, 18.0f * scale);
     if (!clear(at))
         return;
 
