@@ -315,6 +315,67 @@ TEST_F(TeachFlow, AfterTheImpactEveryPanelIsInsideTheWindow)
               names.end());
 }
 
+/// A panel of the last "panels" event of a run's trace: its name and rectangle in window pixels.
+struct PanelBox
+{
+    std::string name;
+    double x, y, w, h;
+};
+
+/// The panels of the run's last frame, and the window's size; fails the test when none were recorded.
+std::vector<PanelBox> lastPanels(const GameRun& run, double& width, double& height)
+{
+    const nlohmann::json* panels = nullptr;
+    for (const nlohmann::json& line : run.trace)
+        if (line.value("event", "") == "panels")
+            panels = &line;
+    std::vector<PanelBox> boxes;
+    EXPECT_NE(panels, nullptr);
+    if (panels == nullptr)
+        return boxes;
+    width = (*panels)["window"][0].get<double>();
+    height = (*panels)["window"][1].get<double>();
+    for (const nlohmann::json& panel : (*panels)["drawn"])
+        boxes.push_back({panel.value("name", ""), panel["x"].get<double>(), panel["y"].get<double>(),
+                         panel["w"].get<double>(), panel["h"].get<double>()});
+    return boxes;
+}
+
+/// Every panel inside the window and no two overlapping.
+void expectApartAndInside(const std::vector<PanelBox>& boxes, double width, double height, const std::string& what)
+{
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+    {
+        const PanelBox& a = boxes[i];
+        EXPECT_GE(a.x, 0.0) << what << " " << a.name;
+        EXPECT_GE(a.y, 0.0) << what << " " << a.name;
+        EXPECT_LE(a.x + a.w, width + 0.5) << what << " " << a.name;
+        EXPECT_LE(a.y + a.h, height + 0.5) << what << " " << a.name;
+        for (std::size_t j = i + 1; j < boxes.size(); ++j)
+        {
+            const PanelBox& b = boxes[j];
+            const bool apart = a.x + a.w <= b.x || b.x + b.w <= a.x || a.y + a.h <= b.y || b.y + b.h <= a.y;
+            EXPECT_TRUE(apart) << what << ": " << a.name << " overlaps " << b.name;
+        }
+    }
+}
+
+TEST_F(TeachFlow, AtLargeTextALessonsGuideKeepsTheLinesThatFitAboveTheHint)
+{
+    // lesson-drag while aiming at 200 % text in 1280x720: the guide's card once ran into the hint at the bottom.
+    // Now it keeps the lines that fit, and every panel stays apart.
+    std::ofstream(data() / "settings.json") << R"({"format": 1, "text_scale": 2.0, "teaching_overlay": false})";
+    const GameRun run =
+        runGame("play " + sourceFile("levels/lessons/lesson-drag.json") + " --frames 20 --size 1280x720", data());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    double width = 0.0;
+    double height = 0.0;
+    const std::vector<PanelBox> boxes = lastPanels(run, width, height);
+    expectApartAndInside(boxes, width, height, "lesson-drag 1280x720");
+    EXPECT_NE(std::find_if(boxes.begin(), boxes.end(), [](const PanelBox& box) { return box.name == "guide"; }),
+              boxes.end());
+}
+
 TEST_F(TeachFlow, AtLargeTextThePanelsAfterAShotNeverOverlapAndTheFeedbackShrinksToOneLine)
 {
     // 2-1 after its reference shot at 200 % text with the overlay on: the whole feedback card (seven lines) once
@@ -328,40 +389,14 @@ TEST_F(TeachFlow, AtLargeTextThePanelsAfterAShotNeverOverlapAndTheFeedbackShrink
             runGame("play " + sourceFile("levels/2-1-dominoes.json") + " --frames 420 --shot 32.5,12.75 --size " + size,
                     data());
         ASSERT_EQ(run.exitCode, 0) << run.err;
-        const nlohmann::json* panels = nullptr;
-        for (const nlohmann::json& line : run.trace)
-            if (line.value("event", "") == "panels")
-                panels = &line;
-        ASSERT_NE(panels, nullptr);
-        const double width = (*panels)["window"][0].get<double>();
-        const double height = (*panels)["window"][1].get<double>();
-        struct Box
-        {
-            std::string name;
-            double x, y, w, h;
-        };
-        std::vector<Box> boxes;
-        for (const nlohmann::json& panel : (*panels)["drawn"])
-            boxes.push_back({panel.value("name", ""), panel["x"].get<double>(), panel["y"].get<double>(),
-                             panel["w"].get<double>(), panel["h"].get<double>()});
-        for (std::size_t i = 0; i < boxes.size(); ++i)
-        {
-            const Box& a = boxes[i];
-            EXPECT_GE(a.x, 0.0) << size << " " << a.name;
-            EXPECT_GE(a.y, 0.0) << size << " " << a.name;
-            EXPECT_LE(a.x + a.w, width + 0.5) << size << " " << a.name;
-            EXPECT_LE(a.y + a.h, height + 0.5) << size << " " << a.name;
-            for (std::size_t j = i + 1; j < boxes.size(); ++j)
-            {
-                const Box& b = boxes[j];
-                const bool apart = a.x + a.w <= b.x || b.x + b.w <= a.x || a.y + a.h <= b.y || b.y + b.h <= a.y;
-                EXPECT_TRUE(apart) << size << ": " << a.name << " overlaps " << b.name;
-            }
-        }
+        double width = 0.0;
+        double height = 0.0;
+        const std::vector<PanelBox> boxes = lastPanels(run, width, height);
+        expectApartAndInside(boxes, width, height, size);
         if (size == "1280x720")
         {
             const auto feedback =
-                std::find_if(boxes.begin(), boxes.end(), [](const Box& box) { return box.name == "feedback"; });
+                std::find_if(boxes.begin(), boxes.end(), [](const PanelBox& box) { return box.name == "feedback"; });
             ASSERT_NE(feedback, boxes.end());
             EXPECT_LT(feedback->h, 80.0); // one line of 32 px text and its padding, not seven
         }
