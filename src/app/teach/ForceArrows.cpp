@@ -117,7 +117,14 @@ sf::FloatRect drawForceLegend(sf::RenderTarget& target, const sf::Font& font, sf
     const TextPanel panel("Forces on the bird (" + formatFixed(bird.massKg, 1) + " kg)", std::move(rows));
     const sf::Vector2f size = panel.measure(font, titleSize, rowSize, scale);
     if (!panelHasRoom(target, {{topRight.x - size.x, topRight.y}, size}))
-        return {};
+    {
+        std::string summary = "Forces: v " + withUnit(std::hypot(bird.state[2], bird.state[3]), 1, "m/s") + ", a " +
+                              withUnit(length(bird.accelerationMps2), 2, "m/s\u00B2") + ", m g " +
+                              withUnit(length(bird.gravityN), 1, "N");
+        if (hasDrag)
+            summary += ", drag " + withUnit(length(bird.dragN), 1, "N");
+        return drawPanelSummary(target, font, topRight, true, summary, rowSize, scale, "forces");
+    }
     return panel.draw(target, font, {topRight.x - size.x, topRight.y}, titleSize, rowSize, scale);
 }
 
@@ -157,7 +164,12 @@ sf::FloatRect drawEnergyBars(sf::RenderTarget& target, const sf::Font& font, sf:
     const float height = 2.0f * pad + titleHeight + rowHeight * 5.2f;
     const sf::FloatRect rect(topRight.x - width, topRight.y, width, height);
     if (!panelHasRoom(target, rect))
-        return {};
+        return drawPanelSummary(target, font, topRight, true,
+                                std::string(atContact ? "Energy at contact: " : "Energy: ") + "kinetic " +
+                                    formatFixed(energy.kineticJ, 0) + " J + potential " +
+                                    formatFixed(energy.potentialJ, 0) + " J + drag " +
+                                    formatFixed(energy.dragLossJ, 0) + " J = " + formatFixed(launch, 0) + " J",
+                                rowSize, scale, "energy");
     drawTeachPanel(target, rect, scale, "energy");
     drawLabel(target, font, utf8(title), {rect.left + pad, rect.top + pad}, titleSize, palette::kStar);
 

@@ -85,7 +85,10 @@ sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf
     const sf::Vector2f size = panel.measure(font, titleSize, rowSize, scale);
     const sf::Vector2f at(std::max(0.0f, topRight.x - size.x), topRight.y);
     if (!panelHasRoom(target, {at, size}))
-        return {};
+        return drawPanelSummary(target, font, topRight, true,
+                                "First impact: bird " + withUnit(speed(impact.birdBefore), 1, "") + "\u2192 " +
+                                    withUnit(speed(impact.birdAfter), 1, "m/s") + ", " + damage + " taken",
+                                rowSize, scale, "first impact");
     return panel.draw(target, font, at, titleSize, rowSize, scale);
 }
 

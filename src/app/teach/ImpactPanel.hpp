@@ -10,7 +10,7 @@ namespace abalike::app
 /// The first impact in numbers: momentum and kinetic energy of the bird and of what it hit, just before and just
 /// after, what went into damage and the coefficient of restitution. topRight: where its top right corner goes (it is
 /// as wide as its numbers need; a panel wider than that much room starts at the window's left edge). Returns its
-/// bounds (empty, nothing drawn, where it has no room: panelHasRoom).
+/// bounds; where it has no room (panelHasRoom), a one-line summary (drawPanelSummary) or nothing.
 sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topRight,
                               const FirstImpact& impact, double bodyStrengthNs, unsigned titleSize, unsigned rowSize,
                               float scale);

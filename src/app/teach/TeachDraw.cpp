@@ -58,6 +58,30 @@ bool panelHasRoom(const sf::RenderTarget& target, const sf::FloatRect& rect)
     return true;
 }
 
+sf::FloatRect drawPanelSummary(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f corner, bool fromRight,
+                               const std::string& text, unsigned rowSize, float scale, std::string_view name)
+{
+    const float pad = 8.0f * scale;
+    const float room =
+        fromRight ? corner.x - 2.0f * pad : static_cast<float>(target.getSize().x) - corner.x - 2.0f * pad;
+    std::string line = text;
+    while (!line.empty() && measureText(font, utf8(line), rowSize).x > room)
+    {
+        const std::size_t space = line.find_last_of(' ', line.size() - 2);
+        line = space == std::string::npos ? std::string() : line.substr(0, space) + "\u2026";
+    }
+    if (line.empty())
+        return {};
+    const sf::Vector2f size(measureText(font, utf8(line), rowSize).x + 2.0f * pad,
+                            font.getLineSpacing(rowSize) + 2.0f * pad);
+    const sf::FloatRect rect({fromRight ? corner.x - size.x : corner.x, corner.y}, size);
+    if (!panelHasRoom(target, rect))
+        return {};
+    drawTeachPanel(target, rect, scale, name);
+    drawLabel(target, font, utf8(line), {rect.left + pad, rect.top + pad}, rowSize, palette::kText);
+    return rect;
+}
+
 namespace
 {
 struct PanelMetrics

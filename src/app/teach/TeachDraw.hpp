@@ -40,8 +40,15 @@ void addArrow(Mesh& mesh, sf::Vector2f from, sf::Vector2f to, float width, sf::C
 void drawTeachPanel(sf::RenderTarget& target, sf::FloatRect rect, float scale, std::string_view name);
 
 /// Whether a panel would lie inside the window and clear of every panel drawn before it this frame (ScreenRegions):
-/// a column's panel with no such room is left out rather than drawn over the others or off the window.
+/// a column's panel with no such room shrinks to a one-line summary or is left out, never drawn over the others or
+/// off the window.
 bool panelHasRoom(const sf::RenderTarget& target, const sf::FloatRect& rect);
+
+/// A panel's one-line summary, for where the whole panel has no room: `text` on one line (cut at a word with an
+/// ellipsis to fit the window), its top corner at `corner` (the top-right one when `fromRight`). Drawn only where it
+/// has room (panelHasRoom); returns its bounds, empty when left out too. `name` is its name in ScreenRegions.
+sf::FloatRect drawPanelSummary(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f corner, bool fromRight,
+                               const std::string& text, unsigned rowSize, float scale, std::string_view name);
 
 /// One row of a text panel: a label on the left, a value on the right, a colour swatch when set.
 struct PanelRow

@@ -59,7 +59,15 @@ sf::FloatRect drawWhyPanel(sf::RenderTarget& target, const sf::Font& font, sf::V
                     ""});
     const TextPanel panel("Why preview and world can differ", std::move(rows));
     if (!panelHasRoom(target, {topLeft, panel.measure(font, titleSize, rowSize, scale)}))
-        return {};
+    {
+        const ShotRecord* last = session.shots().empty() ? nullptr : &session.shots().back();
+        return drawPanelSummary(target, font, topLeft, false,
+                                last != nullptr && last->deviationM
+                                    ? "Preview and world: the last shot's contact " +
+                                          formatDistance(*last->deviationM) + " apart"
+                                    : std::string("Preview and world fly the same steps until a contact"),
+                                rowSize, scale, "why");
+    }
     return panel.draw(target, font, topLeft, titleSize, rowSize, scale);
 }
 
