@@ -65,23 +65,6 @@ std::optional<float> topSlot(float width, sf::Vector2u size, float left, float r
         return std::nullopt;
     return std::clamp(0.5f * (static_cast<float>(size.x) - width), left, right - width);
 }
-
-/// The text shortened with an ellipsis to fit maxWidth.
-sf::String fitted(const sf::Font& font, const std::string& text, unsigned size, float maxWidth)
-{
-    if (measureText(font, utf8(text), size).x <= maxWidth)
-        return utf8(text);
-    std::string cut = text;
-    while (!cut.empty() && measureText(font, utf8(cut + "\u2026"), size).x > maxWidth)
-    {
-        cut.pop_back();
-        while (!cut.empty() && (static_cast<unsigned char>(cut.back()) & 0xC0) == 0x80)
-            cut.pop_back(); // never split a UTF-8 sequence
-        if (!cut.empty() && static_cast<unsigned char>(cut.back()) >= 0xC0)
-            cut.pop_back();
-    }
-    return utf8(cut + "\u2026");
-}
 } // namespace
 
 sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float scale,
@@ -91,8 +74,8 @@ sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float
     const unsigned titleSize = scaled(scale, 24.0f);
     const unsigned lineSize = scaled(scale, 19.0f);
     // A long title is cut short rather than run under the aim readout.
-    const sf::String title =
-        fitted(*m_font, "Level " + level.id + ": " + level.title, titleSize, 0.4f * static_cast<float>(size.x));
+    const sf::String title = utf8(fitToWidth(*m_font, "Level " + level.id + ": " + level.title, titleSize,
+                                             0.4f * static_cast<float>(size.x), Cut::AtCharacter));
     const sf::String score = utf8("Score  " + formatPoints(session.score().total()));
     const sf::String counts = utf8("Birds left  " + std::to_string(session.birdsRemaining()) + "     Pigs left  " +
                                    std::to_string(session.pigsRemaining()));

@@ -106,6 +106,33 @@ std::vector<std::string> wrapText(const sf::Font& font, std::string_view text, u
     return lines;
 }
 
+std::string fitToWidth(const sf::Font& font, std::string_view text, unsigned size, float maxWidth, Cut cut)
+{
+    const auto fits = [&](std::string_view line)
+    {
+        return measureText(font, utf8(line), size).x <= maxWidth;
+    };
+    if (fits(text))
+        return std::string(text);
+    const auto isCut = [&](std::size_t end)
+    {
+        if (cut == Cut::AtWord)
+            return text[end] == ' ';
+        return (static_cast<unsigned char>(text[end]) & 0xC0) != 0x80; // not a UTF-8 continuation byte
+    };
+    std::string best = cut == Cut::AtCharacter ? "\u2026" : "";
+    for (std::size_t end = 1; end < text.size(); ++end)
+    {
+        if (!isCut(end))
+            continue;
+        std::string candidate = std::string(text.substr(0, end)) + "\u2026";
+        if (!fits(candidate))
+            break; // widths only grow with the text
+        best = std::move(candidate);
+    }
+    return best;
+}
+
 namespace
 {
 std::vector<std::string>* g_drawnTextSink = nullptr;

@@ -28,6 +28,17 @@ sf::Vector2f measureText(const sf::Font& font, const sf::String& text, unsigned 
 /// own).
 std::vector<std::string> wrapText(const sf::Font& font, std::string_view text, unsigned size, float maxWidth);
 
+/// Where fitToWidth may cut a line that is too wide.
+enum class Cut
+{
+    AtWord,      ///< at a space: a sentence keeps whole words
+    AtCharacter, ///< between any two characters (never inside a UTF-8 sequence): a title keeps as much as it can
+};
+
+/// The UTF-8 text whole when it fits maxWidth, else its longest start that fits with an ellipsis after it. With nothing
+/// that fits, empty (AtWord: not even the first word) or the ellipsis alone (AtCharacter).
+std::string fitToWidth(const sf::Font& font, std::string_view text, unsigned size, float maxWidth, Cut cut);
+
 /// Draws one line of text with a soft shadow; `position` is the top of the line at the aligned point.
 /// Returns the bounds it covers.
 /// While set, every text drawLabel draws is also appended here (the trace's record of what one frame shows).

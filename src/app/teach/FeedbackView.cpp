@@ -57,28 +57,6 @@ void FeedbackView::update(const GameSession& session, const std::optional<AimRea
     }
 }
 
-namespace
-{
-/// The sentence cut at a word so that it fits `width` with an ellipsis after it (whole when it fits).
-std::string oneLine(const sf::Font& font, const std::string& sentence, unsigned size, float width)
-{
-    if (measureText(font, utf8(sentence), size).x <= width)
-        return sentence;
-    std::string line;
-    std::size_t start = 0;
-    while (start < sentence.size())
-    {
-        const std::size_t end = std::min(sentence.find(' ', start), sentence.size());
-        const std::string candidate = sentence.substr(0, end) + "…";
-        if (measureText(font, utf8(candidate), size).x > width)
-            break;
-        line = candidate;
-        start = end + 1;
-    }
-    return line;
-}
-} // namespace
-
 void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bottom, float top,
                         std::span<const sf::FloatRect> avoid, float maxWidth, unsigned rowSize, float scale) const
 {
@@ -92,8 +70,8 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
         for (std::string& line : wrapText(font, sentence, rowSize, maxWidth))
             full.push_back(std::move(line));
     // Where the whole card has no room (a small window, large text, many panels), the first sentence on one line.
-    const std::vector<std::string> summary{
-        oneLine(font, m_sentences.front(), rowSize, std::min(maxWidth, windowWidth - 24.0f * scale - 2.0f * pad))};
+    const std::vector<std::string> summary{fitToWidth(
+        font, m_sentences.front(), rowSize, std::min(maxWidth, windowWidth - 24.0f * scale - 2.0f * pad), Cut::AtWord)};
     std::vector<sf::FloatRect> panels;
     for (const ScreenRegion& region : screenLayout())
         panels.push_back(region.rect);

@@ -61,13 +61,8 @@ sf::FloatRect GuideRunner::draw(sf::RenderTarget& target, const sf::Font& font, 
     if (rows < lines.size())
     {
         lines.resize(rows);
-        if (rows > 0)
-        {
-            std::string& last = lines.back();
-            while (!last.empty() && measureText(font, utf8(last + "\u2026"), rowSize).x > maxWidth - 2.0f * pad)
-                last.resize(last.find_last_of(' ') == std::string::npos ? 0 : last.find_last_of(' '));
-            last += "\u2026";
-        }
+        if (rows > 0) // the ellipsis says the step goes on
+            lines.back() = fitToWidth(font, lines.back() + "\u2026", rowSize, maxWidth - 2.0f * pad, Cut::AtWord);
     }
     const sf::FloatRect rect = cardWith(rows);
     drawTeachPanel(target, rect, scale, "guide");

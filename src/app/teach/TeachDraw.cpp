@@ -64,12 +64,7 @@ sf::FloatRect drawPanelSummary(sf::RenderTarget& target, const sf::Font& font, s
     const float pad = 8.0f * scale;
     const float room =
         fromRight ? corner.x - 2.0f * pad : static_cast<float>(target.getSize().x) - corner.x - 2.0f * pad;
-    std::string line = text;
-    while (!line.empty() && measureText(font, utf8(line), rowSize).x > room)
-    {
-        const std::size_t space = line.find_last_of(' ', line.size() - 2);
-        line = space == std::string::npos ? std::string() : line.substr(0, space) + "\u2026";
-    }
+    const std::string line = fitToWidth(font, text, rowSize, room, Cut::AtWord);
     if (line.empty())
         return {};
     const sf::Vector2f size(measureText(font, utf8(line), rowSize).x + 2.0f * pad,
