@@ -1,8 +1,11 @@
 #include <abalike/level/Campaign.hpp>
 
+#include "design/ParallelFor.hpp"
+
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <optional>
 
 namespace abalike
 {
@@ -46,37 +49,61 @@ Campaign loadCampaignLevels(const std::string& manifestPath, const Catalog& cata
             throw LevelLoadError(std::move(issues));
         }
     }
-    std::map<std::string, std::string> idAt; // level id -> manifest pointer of the level that has it
-    for (std::size_t e = 0; e < campaign.episodes.size(); ++e)
+    // Every level is read and checked on its own (the reach check flies a fan of launches: most of a campaign's
+    // load), so the levels load in parallel; what follows takes them in the manifest's order, as before.
+    struct Entry
     {
-        const CampaignEpisode& episode = campaign.episodes[e];
-        for (std::size_t l = 0; l < episode.levelPaths.size(); ++l)
+        std::size_t episode;
+        std::size_t index;
+        std::optional<LevelDef> level;
+        std::vector<LevelIssue> issues;
+    };
+    std::vector<Entry> entries;
+    for (std::size_t e = 0; e < campaign.episodes.size(); ++e)
+        for (std::size_t l = 0; l < campaign.episodes[e].levelPaths.size(); ++l)
+            entries.push_back({e, l, std::nullopt, {}});
+    parallelFor(
+        entries.size(), workerCount(0),
+        [&](std::size_t i)
         {
-            const LevelIssue& place = episode.levelPlaces[l];
-            const auto atEntry = [&](const std::string& message)
-            {
-                LevelIssue issue = place;
-                issue.message = message;
-                issues.push_back(std::move(issue));
-            };
+            Entry& entry = entries[i];
             try
             {
-                LevelDef level = loadLevel(episode.levelPaths[l], catalog);
-                if (level.episode != episode.id && !level.sandbox) // a sandbox scene is reported as one above
-                    atEntry("the level says \"episode\": \"" + level.episode + "\" but is listed in episode \"" +
-                            episode.id + "\" (expected them to agree)");
-                const auto [first, fresh] = idAt.emplace(level.id, place.pointer);
-                if (!fresh)
-                    atEntry("id \"" + level.id + "\" is already used by the level at " + first->second +
-                            " (expected every id once: progress is saved by id)");
-                const std::string key = level.id;
-                campaign.levels.push_back({episode.levelPaths[l], e, std::move(level), key, ""});
+                entry.level = loadLevel(campaign.episodes[entry.episode].levelPaths[entry.index], catalog);
             }
             catch (const LevelLoadError& error)
             {
-                issues.insert(issues.end(), error.issues().begin(), error.issues().end());
+                entry.issues = error.issues();
             }
+        },
+        [](std::size_t) {});
+
+    std::map<std::string, std::string> idAt; // level id -> manifest pointer of the level that has it
+    for (Entry& entry : entries)
+    {
+        const CampaignEpisode& episode = campaign.episodes[entry.episode];
+        const LevelIssue& place = episode.levelPlaces[entry.index];
+        const auto atEntry = [&](const std::string& message)
+        {
+            LevelIssue issue = place;
+            issue.message = message;
+            issues.push_back(std::move(issue));
+        };
+        if (!entry.level)
+        {
+            issues.insert(issues.end(), entry.issues.begin(), entry.issues.end());
+            continue;
         }
+        LevelDef& level = *entry.level;
+        if (level.episode != episode.id && !level.sandbox) // a sandbox scene is reported as one above
+            atEntry("the level says \"episode\": \"" + level.episode + "\" but is listed in episode \"" + episode.id +
+                    "\" (expected them to agree)");
+        const auto [first, fresh] = idAt.emplace(level.id, place.pointer);
+        if (!fresh)
+            atEntry("id \"" + level.id + "\" is already used by the level at " + first->second +
+                    " (expected every id once: progress is saved by id)");
+        const std::string key = level.id;
+        campaign.levels.push_back({episode.levelPaths[entry.index], entry.episode, std::move(level), key, ""});
     }
     if (!issues.empty())
         throw LevelLoadError(std::move(issues));
