@@ -322,8 +322,9 @@ struct PanelBox
     double x, y, w, h;
 };
 
-/// The panels of the run's last frame, and the window's size; fails the test when none were recorded.
-std::vector<PanelBox> lastPanels(const GameRun& run, double& width, double& height)
+/// The panels of the run's last frame ("drawn"; "keep_visible": what they should leave visible), and the window's
+/// size; fails the test when none were recorded.
+std::vector<PanelBox> lastPanels(const GameRun& run, double& width, double& height, const char* list = "drawn")
 {
     const nlohmann::json* panels = nullptr;
     for (const nlohmann::json& line : run.trace)
@@ -335,7 +336,7 @@ std::vector<PanelBox> lastPanels(const GameRun& run, double& width, double& heig
         return boxes;
     width = (*panels)["window"][0].get<double>();
     height = (*panels)["window"][1].get<double>();
-    for (const nlohmann::json& panel : (*panels)["drawn"])
+    for (const nlohmann::json& panel : (*panels)[list])
         boxes.push_back({panel.value("name", ""), panel["x"].get<double>(), panel["y"].get<double>(),
                          panel["w"].get<double>(), panel["h"].get<double>()});
     return boxes;
@@ -374,6 +375,37 @@ TEST_F(TeachFlow, AtLargeTextALessonsGuideKeepsTheLinesThatFitAboveTheHint)
     expectApartAndInside(boxes, width, height, "lesson-drag 1280x720");
     EXPECT_NE(std::find_if(boxes.begin(), boxes.end(), [](const PanelBox& box) { return box.name == "guide"; }),
               boxes.end());
+}
+
+TEST_F(TeachFlow, AtLargeTextTheKeysAndTheHintLeaveTheSlingshotInView)
+{
+    // At 200 % text the keys line and a level's hint wrap to two lines each and reach above the ground line's usual
+    // place: they covered the slingshot and the birds waiting by it. The camera now lifts the ground above them.
+    std::ofstream(data() / "settings.json") << R"({"format": 1, "text_scale": 2.0, "teaching_overlay": true})";
+    for (const std::string level : {"levels/1-3-hilltop.json", "levels/6-5-citadel.json"})
+    {
+        // 240 frames: past the opening pan of a wide level, back at the slingshot.
+        const GameRun run = runGame("play " + sourceFile(level) + " --frames 240 --size 1280x720", data());
+        ASSERT_EQ(run.exitCode, 0) << run.err;
+        double width = 0.0;
+        double height = 0.0;
+        const std::vector<PanelBox> panels = lastPanels(run, width, height);
+        const std::vector<PanelBox> keep = lastPanels(run, width, height, "keep_visible");
+        const auto slingshot =
+            std::find_if(keep.begin(), keep.end(), [](const PanelBox& box) { return box.name == "slingshot"; });
+        ASSERT_NE(slingshot, keep.end()) << level;
+        EXPECT_GE(slingshot->x, 0.0) << level;
+        EXPECT_LE(slingshot->y + slingshot->h, height) << level;
+        std::size_t bottomText = 0;
+        for (const PanelBox& panel : panels)
+            if (panel.name == "keys" || panel.name == "hint")
+            {
+                ++bottomText;
+                EXPECT_GE(panel.y, slingshot->y + slingshot->h)
+                    << level << ": the " << panel.name << " covers the slingshot";
+            }
+        EXPECT_EQ(bottomText, 2u) << level;
+    }
 }
 
 TEST_F(TeachFlow, AtLargeTextThePanelsAfterAShotNeverOverlapAndTheFeedbackShrinksToOneLine)

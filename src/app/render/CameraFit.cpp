@@ -52,19 +52,20 @@ WorldBox levelHomeBox(const LevelDef& level, const Catalog& catalog)
     return {slingX - kSideMarginM, static_cast<float>(level.groundY), furthest + kSideMarginM, top + kTopMarginM};
 }
 
-CameraView fitBox(const WorldBox& box, float groundY, sf::Vector2u windowSize, float topReserved)
+CameraView fitBox(const WorldBox& box, float groundY, sf::Vector2u windowSize, float topReserved,
+                  float groundFromBottom)
 {
     using namespace camera_limits;
     const sf::Vector2f window = windowPixels(windowSize);
     // While the box stands on the ground, the ground keeps its place near the bottom edge so the horizon does not
     // bob as the camera follows; a box reaching below the ground gets the same margin under its own bottom.
     const float base = std::min(box.bottom, groundY);
-    const float heightNeeded = std::max(box.top - base, 0.01f) / (1.0f - kGroundFromBottom - topReserved);
+    const float heightNeeded = std::max(box.top - base, 0.01f) / (1.0f - groundFromBottom - topReserved);
     const float widthNeeded = std::max(box.width(), 0.01f);
     const float ppm =
         std::clamp(std::min(window.x / widthNeeded, window.y / heightNeeded), kMinPixelsPerMetre, kMaxPixelsPerMetre);
     const float visibleHeight = window.y / ppm;
-    const float bottom = base - kGroundFromBottom * visibleHeight;
+    const float bottom = base - groundFromBottom * visibleHeight;
     return {{box.centre().x, bottom + 0.5f * visibleHeight}, ppm};
 }
 

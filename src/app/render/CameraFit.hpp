@@ -31,9 +31,11 @@ WorldBox levelHomeBox(const LevelDef& level, const Catalog& catalog);
 
 /// The closest view (within the scale limits) that shows the whole box in a window of this size, uniformly scaled,
 /// centred across, with the ground line kept kGroundFromBottom up the window while the box stands on the ground.
-/// topReserved: the fraction of the window's top kept clear for panels (the HUD; more with the teaching overlay).
+/// topReserved: the fraction of the window's top kept clear for panels (the HUD; more with the teaching overlay);
+/// groundFromBottom: where the ground line sits, as a fraction of the window up from its bottom.
 CameraView fitBox(const WorldBox& box, float groundY, sf::Vector2u windowSize,
-                  float topReserved = camera_limits::kTopReserved);
+                  float topReserved = camera_limits::kTopReserved,
+                  float groundFromBottom = camera_limits::kGroundFromBottom);
 
 /// The part of the world a view shows in a window of this size.
 WorldBox visibleBox(const CameraView& view, sf::Vector2u windowSize);

@@ -28,6 +28,9 @@ struct CameraFocus
     std::vector<WorldBox> action;                    ///< the moving bodies and the pigs near them
     std::vector<WorldBox> actionPigs;                ///< of those, the live pigs: they must stay inside the window
     float topReserved = camera_limits::kTopReserved; ///< the window's top fraction panels cover
+    /// Where the ground line sits, as a fraction of the window up from its bottom: higher when the text at the bottom
+    /// (the keys, the hint) reaches above the usual place, at large text sizes.
+    float groundFromBottom = camera_limits::kGroundFromBottom;
     /// The smallest pig of the level as designed (its diameter): the view while aiming never draws it under
     /// kMinPigPx, showing the slingshot and as much of the level as fits instead of all of it.
     float smallestPigM = 0.0f;

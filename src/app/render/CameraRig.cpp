@@ -58,7 +58,8 @@ CameraView CameraRig::target(const CameraFocus& focus) const
         WorldBox action = focus.action.front();
         for (const WorldBox& box : focus.action)
             action = action.united(box);
-        return fitBox(action.expanded(kStructureMarginM), focus.groundY, m_window, focus.topReserved);
+        return fitBox(action.expanded(kStructureMarginM), focus.groundY, m_window, focus.topReserved,
+                      focus.groundFromBottom);
     }
     if (focus.birds.empty() && !focus.structure)
         return homeView(focus);
@@ -77,13 +78,13 @@ CameraView CameraRig::target(const CameraFocus& focus) const
         }
         box = box ? box->united(bird) : bird;
     }
-    CameraView view = fitBox(*box, focus.groundY, m_window, focus.topReserved);
+    CameraView view = fitBox(*box, focus.groundY, m_window, focus.topReserved, focus.groundFromBottom);
     if (focus.birdDiameterM > 0.0f && view.pixelsPerMetre * focus.birdDiameterM < kMinBirdPx && !focus.birds.empty())
     {
         // The structure is too far to keep in view with the bird drawn at a visible size: follow the bird.
         WorldBox lead = focus.birds[0].expanded(kBirdMarginM);
         lead = lead.united(WorldBox::around(focus.birds[0].centre() + focus.birdVelocityMps * kLeadS, kBirdMarginM));
-        view = fitBox(lead, focus.groundY, m_window, focus.topReserved);
+        view = fitBox(lead, focus.groundY, m_window, focus.topReserved, focus.groundFromBottom);
         view.pixelsPerMetre = std::max(view.pixelsPerMetre, kMinBirdPx / focus.birdDiameterM);
     }
     return view;
@@ -214,7 +215,7 @@ void CameraRig::recentre()
 
 CameraView CameraRig::homeView(const CameraFocus& focus) const
 {
-    const CameraView whole = fitBox(focus.home, focus.groundY, m_window, focus.topReserved);
+    const CameraView whole = fitBox(focus.home, focus.groundY, m_window, focus.topReserved, focus.groundFromBottom);
     if (!homeLeavesLevelOut(focus))
         return whole;
     // The scale that draws the smallest pig kMinPigPx tall, the slingshot's end of the level at the left edge, the
@@ -225,15 +226,14 @@ CameraView CameraRig::homeView(const CameraFocus& focus) const
     const float visibleWidth = window.x / ppm;
     const float visibleHeight = window.y / ppm;
     const float base = std::min(focus.home.bottom, focus.groundY);
-    return {{focus.home.left + 0.5f * visibleWidth, base + (0.5f - camera_limits::kGroundFromBottom) * visibleHeight},
-            ppm};
+    return {{focus.home.left + 0.5f * visibleWidth, base + (0.5f - focus.groundFromBottom) * visibleHeight}, ppm};
 }
 
 bool CameraRig::homeLeavesLevelOut(const CameraFocus& focus) const
 {
     if (focus.smallestPigM <= 0.0f)
         return false;
-    const CameraView whole = fitBox(focus.home, focus.groundY, m_window, focus.topReserved);
+    const CameraView whole = fitBox(focus.home, focus.groundY, m_window, focus.topReserved, focus.groundFromBottom);
     return whole.pixelsPerMetre * focus.smallestPigM < kMinPigPx;
 }
 

@@ -173,34 +173,53 @@ void Hud::drawAbilityPrompt(sf::RenderTarget& target, sf::Vector2u size, float s
     drawLabel(target, *m_font, text, {centre, top + pad}, textSize, palette::kStar, Align::Centre);
 }
 
+std::vector<Hud::BottomText> Hud::bottomText(sf::Vector2u size, float scale, const LevelDef& level) const
+{
+    const float maxWidth = static_cast<float>(size.x) - 24.0f * scale;
+    std::vector<BottomText> texts;
+    const auto add = [&](const std::string& text, unsigned textSize, sf::Color colour, const char* name)
+    {
+        texts.push_back({wrapText(*m_font, text, textSize, maxWidth), textSize, colour, name});
+    };
+    add("Mouse: drag the bird back   \u00B7   Keys: \u2191\u2193 angle, \u2190\u2192 power, Space launch   \u00B7   "
+        "R restart   \u00B7   Esc pause   \u00B7   F1 help",
+        scaled(scale, 14.0f), palette::kTextDim, "keys");
+    if (!level.hints.empty())
+        add(filledHint(level), scaled(scale, 18.0f), palette::kText, "hint");
+    return texts;
+}
+
+float Hud::bottomTextHeight(sf::Vector2u size, const LevelDef& level, float textScale) const
+{
+    if (m_font == nullptr)
+        return 0.0f;
+    const float scale = hudScale(size) * textScale;
+    float height = 8.0f * scale;
+    for (const BottomText& text : bottomText(size, scale, level))
+        height += m_font->getLineSpacing(text.textSize) * static_cast<float>(text.lines.size());
+    return height;
+}
+
 void Hud::drawHint(sf::RenderTarget& target, sf::Vector2u size, float scale, const LevelDef& level) const
 {
-    const unsigned hintSize = scaled(scale, 18.0f);
-    const unsigned keysSize = scaled(scale, 14.0f);
     const float centre = 0.5f * static_cast<float>(size.x);
-    const float maxWidth = static_cast<float>(size.x) - 24.0f * scale;
     float bottom = static_cast<float>(size.y) - 8.0f * scale;
     // Bottom up: the keys, then the level's hint, each wrapped to the window at large text sizes.
-    const auto block = [&](const std::string& text, unsigned textSize, sf::Color colour, std::string_view name)
+    for (const BottomText& text : bottomText(size, scale, level))
     {
-        const std::vector<std::string> lines = wrapText(*m_font, text, textSize, maxWidth);
-        const float lineHeight = m_font->getLineSpacing(textSize);
-        bottom -= lineHeight * static_cast<float>(lines.size());
+        const float lineHeight = m_font->getLineSpacing(text.textSize);
+        bottom -= lineHeight * static_cast<float>(text.lines.size());
         float y = bottom;
         float widest = 0.0f;
-        for (const std::string& line : lines)
+        for (const std::string& line : text.lines)
         {
             widest = std::max(
-                widest, drawLabel(target, *m_font, utf8(line), {centre, y}, textSize, colour, Align::Centre).width);
+                widest,
+                drawLabel(target, *m_font, utf8(line), {centre, y}, text.textSize, text.colour, Align::Centre).width);
             y += lineHeight;
         }
-        recordScreenRegion(name, {centre - 0.5f * widest, bottom, widest, y - bottom});
-    };
-    block("Mouse: drag the bird back   \u00B7   Keys: \u2191\u2193 angle, \u2190\u2192 power, Space launch   \u00B7   "
-          "R restart   \u00B7   Esc pause   \u00B7   F1 help",
-          keysSize, palette::kTextDim, "keys");
-    if (!level.hints.empty())
-        block(filledHint(level), hintSize, palette::kText, "hint");
+        recordScreenRegion(text.name, {centre - 0.5f * widest, bottom, widest, y - bottom});
+    }
 }
 
 const std::string& Hud::filledHint(const LevelDef& level) const

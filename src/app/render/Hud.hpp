@@ -7,6 +7,7 @@
 #include <abalike/game/GameSession.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace abalike::app
 {
@@ -23,7 +24,21 @@ public:
     void draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session,
               const std::optional<AimReadout>& aim, float textScale = 1.0f, float reservedRightPx = 0.0f) const;
 
+    /// How far up from the window's bottom the keys line and the level's hint reach (pixels), as draw lays them out
+    /// at this text size: the camera keeps the ground line above them, so that at large text they cover no slingshot.
+    float bottomTextHeight(sf::Vector2u size, const LevelDef& level, float textScale = 1.0f) const;
+
 private:
+    /// One of the lines at the bottom (the keys, the hint), wrapped to the window.
+    struct BottomText
+    {
+        std::vector<std::string> lines;
+        unsigned textSize;
+        sf::Color colour;
+        const char* name;
+    };
+    /// The keys line, then the level's hint: drawn bottom up in that order.
+    std::vector<BottomText> bottomText(sf::Vector2u size, float scale, const LevelDef& level) const;
     /// Returns the panel it drew.
     sf::FloatRect drawStatus(sf::RenderTarget& target, sf::Vector2u size, float scale,
                              const GameSession& session) const;

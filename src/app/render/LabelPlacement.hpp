@@ -1,5 +1,7 @@
 #pragma once
 
+#include "render/ScreenRegions.hpp"
+
 #include "render/Camera.hpp"
 
 #include <SFML/Graphics/Rect.hpp>
@@ -14,6 +16,10 @@ namespace abalike::app
 /// Where each standing block and pig, the slingshot with its bird and the bird in flight are on screen (window
 /// pixels): what labels and cards should not cover.
 std::vector<sf::FloatRect> structureScreenBoxes(const GameSession& session, const Camera& camera);
+
+/// What the panels over the world should leave visible, in window pixels: the slingshot with the bird it holds
+/// ("slingshot"), the bird in flight ("bird") and every live pig ("pig").
+std::vector<ScreenRegion> keepVisibleBoxes(const GameSession& session, const Camera& camera);
 
 /// How much of a rectangle the boxes cover (pixels², overlaps counted once per box).
 float coveredArea(const sf::FloatRect& rect, std::span<const sf::FloatRect> boxes);

@@ -8,6 +8,7 @@ namespace abalike::app
 namespace
 {
 std::vector<ScreenRegion>* g_sink = nullptr;
+std::vector<ScreenRegion>* g_keepVisibleSink = nullptr;
 std::vector<ScreenRegion> g_frame;
 } // namespace
 
@@ -45,6 +46,16 @@ float firstFreeTop(float left, float width, float top, float height, float gap)
 void setScreenRegionSink(std::vector<ScreenRegion>* sink)
 {
     g_sink = sink;
+}
+
+void setKeepVisibleSink(std::vector<ScreenRegion>* sink)
+{
+    g_keepVisibleSink = sink;
+}
+
+std::vector<ScreenRegion>* keepVisibleSink()
+{
+    return g_keepVisibleSink;
 }
 
 void recordScreenRegion(std::string_view name, const sf::FloatRect& rect)

@@ -23,6 +23,11 @@ void setScreenRegionSink(std::vector<ScreenRegion>* sink);
 /// Records one panel when a sink is set; panels call it where they draw their background.
 void recordScreenRegion(std::string_view name, const sf::FloatRect& rect);
 
+/// While set, the play screen writes here what its panels should leave visible in the frame it draws (the slingshot,
+/// the flying bird, live pigs: keepVisibleBoxes in render/LabelPlacement): the trace's record for the layout tests.
+void setKeepVisibleSink(std::vector<ScreenRegion>* sink);
+std::vector<ScreenRegion>* keepVisibleSink();
+
 /// Starts a frame's layout: the panels recorded from now on are what later panels of the frame keep clear of.
 void beginScreenLayout();
 

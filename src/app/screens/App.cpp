@@ -190,20 +190,29 @@ int App::run()
         m_screens.finishBackgroundWork();
         std::vector<std::string> texts;
         std::vector<ScreenRegion> regions;
+        std::vector<ScreenRegion> keepVisible;
         setDrawnTextSink(&texts);
         setScreenRegionSink(&regions);
+        setKeepVisibleSink(&keepVisible);
         drawFrame();
         setDrawnTextSink(nullptr);
         setScreenRegionSink(nullptr);
+        setKeepVisibleSink(nullptr);
         m_trace.write("texts", {{"shown", texts}});
-        nlohmann::json panels = nlohmann::json::array();
-        for (const ScreenRegion& region : regions)
-            panels.push_back({{"name", region.name},
-                              {"x", region.rect.left},
-                              {"y", region.rect.top},
-                              {"w", region.rect.width},
-                              {"h", region.rect.height}});
-        m_trace.write("panels", {{"drawn", panels}, {"window", {windowSize().x, windowSize().y}}});
+        const auto rectangles = [](const std::vector<ScreenRegion>& list)
+        {
+            nlohmann::json out = nlohmann::json::array();
+            for (const ScreenRegion& region : list)
+                out.push_back({{"name", region.name},
+                               {"x", region.rect.left},
+                               {"y", region.rect.top},
+                               {"w", region.rect.width},
+                               {"h", region.rect.height}});
+            return out;
+        };
+        m_trace.write("panels", {{"drawn", rectangles(regions)},
+                                 {"keep_visible", rectangles(keepVisible)},
+                                 {"window", {windowSize().x, windowSize().y}}});
         if (!m_options.screenshotPath.empty() && !saveScreenshot(m_window, m_options.screenshotPath))
             exitCode = exitCode == 0 ? 2 : exitCode;
     }

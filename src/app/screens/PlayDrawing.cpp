@@ -94,6 +94,8 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
     if (lastShot != nullptr)
         overlay.drawShotLabel(target, camera, *lastShot, opacity, structureScreenBoxes(session, camera),
                               static_cast<float>(view.app().settings().textScale));
+    if (std::vector<ScreenRegion>* keep = keepVisibleSink())
+        *keep = keepVisibleBoxes(session, camera);
 }
 
 bool launchRequested(App& app, GameSession& session, const ScriptedShot& shot)

@@ -427,6 +427,16 @@ CameraFocus PlayScreen::cameraFocus() const
     // The teaching overlay's panels reach down about 40 % of the window: keep the flight below them.
     if (m_app.settings().teachingOverlay)
         focus.topReserved = kTeachingTopReserved;
+    // At large text the keys and the hint at the bottom reach above the ground line's usual place: the ground goes
+    // above them, so that they cover neither the slingshot nor the birds waiting by it.
+    const sf::Vector2u size = m_app.windowSize();
+    if (size.y > 0)
+    {
+        const float text =
+            m_hud.bottomTextHeight(size, m_session->level(), static_cast<float>(m_app.settings().textScale));
+        const float lifted = (text + 4.0f * hudScale(size)) / static_cast<float>(size.y);
+        focus.groundFromBottom = std::clamp(lifted, camera_limits::kGroundFromBottom, kMostGroundFromBottom);
+    }
     return focus;
 }
 

@@ -95,6 +95,8 @@ private:
     /// What the camera should keep in view now, below the panels on screen.
     CameraFocus cameraFocus() const;
     static constexpr float kTeachingTopReserved = 0.4f;
+    /// The ground line never rises above this fraction of the window, however large the text at the bottom.
+    static constexpr float kMostGroundFromBottom = 0.3f;
     /// Forgets the aim, any pending launch and the preview (new level or restart).
     void resetAim();
     void handleKey(const sf::Event::KeyEvent& key);
