@@ -23,6 +23,7 @@ void FeedbackView::reset()
 void FeedbackView::update(const GameSession& session, const std::optional<AimReadout>& aim)
 {
     const std::vector<ShotRecord>& shots = session.shots();
+    m_shotOver = session.phase() == Phase::Aiming;
     if (shots.size() != m_shotsSeen)
     {
         // A new shot (or a restart): the last shot's words go until this one has something to say.
@@ -100,13 +101,22 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
                rect.top + rect.height <= windowHeight && coveredArea(rect, panels) <= 0.0f;
     };
     // Chosen once per shot's sentences: the card stays put while the structure collapses behind it, and moves only
-    // when a panel drawn before it (a label that appeared later) now takes its spot.
+    // when a panel drawn before it (a label that appeared later) now takes its spot, or after the shot (below).
     if (m_spot)
     {
         const std::vector<std::string>& lines = m_collapsed ? summary : full;
         const std::vector<sf::FloatRect> candidates = candidatesFor(lines);
         if (*m_spot < candidates.size() && fits(candidates[*m_spot]))
         {
+            // Once the next bird is ready the camera returns to the slingshot: a card that now covers the slingshot,
+            // a pig or a block takes the first spot that covers none, if there is one.
+            if (m_shotOver && coveredArea(candidates[*m_spot], avoid) > 0.0f)
+                for (std::size_t i = 0; i < candidates.size(); ++i)
+                    if (fits(candidates[i]) && coveredArea(candidates[i], avoid) <= 0.0f)
+                    {
+                        m_spot = i;
+                        break;
+                    }
             drawCard(target, font, candidates[*m_spot], lines, rowSize, scale);
             return;
         }

@@ -28,7 +28,7 @@ public:
     /// spot inside the window clear of every panel and of the boxes of `avoid` (the structure on screen), else the
     /// one covering least of them. With no such spot, the first sentence cut to one line in the same way; with none
     /// for that either, nothing. The spot is chosen once per shot's sentences, so the card stays put while the world
-    /// moves.
+    /// moves; once the next bird is ready it leaves a spot over the world's boxes for one clear of them, if any.
     void draw(sf::RenderTarget& target, const sf::Font& font, float bottom, float top,
               std::span<const sf::FloatRect> avoid, float maxWidth, unsigned rowSize, float scale) const;
 
@@ -38,6 +38,7 @@ private:
 
     mutable std::optional<std::size_t> m_spot; ///< the candidate spot chosen for the current sentences
     mutable bool m_collapsed = false;          ///< that spot holds the one-line summary, not the whole card
+    bool m_shotOver = false; ///< the next bird is ready: the card may leave a spot the world now fills
     std::size_t m_shotsSeen = 0;
     bool m_done = false;
     std::optional<std::pair<double, double>> m_firstAim; ///< angle and speed when the next bird became ready
