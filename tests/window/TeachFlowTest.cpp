@@ -342,6 +342,12 @@ std::vector<PanelBox> lastPanels(const GameRun& run, double& width, double& heig
     return boxes;
 }
 
+/// The first box of that name, or boxes.end().
+std::vector<PanelBox>::const_iterator findBox(const std::vector<PanelBox>& boxes, const std::string& name)
+{
+    return std::find_if(boxes.begin(), boxes.end(), [&name](const PanelBox& box) { return box.name == name; });
+}
+
 /// Every panel inside the window and no two overlapping.
 void expectApartAndInside(const std::vector<PanelBox>& boxes, double width, double height, const std::string& what)
 {
@@ -391,8 +397,7 @@ TEST_F(TeachFlow, AtLargeTextTheKeysAndTheHintLeaveTheSlingshotInView)
         double height = 0.0;
         const std::vector<PanelBox> panels = lastPanels(run, width, height);
         const std::vector<PanelBox> keep = lastPanels(run, width, height, "keep_visible");
-        const auto slingshot =
-            std::find_if(keep.begin(), keep.end(), [](const PanelBox& box) { return box.name == "slingshot"; });
+        const auto slingshot = findBox(keep, "slingshot");
         ASSERT_NE(slingshot, keep.end()) << level;
         EXPECT_GE(slingshot->x, 0.0) << level;
         EXPECT_LE(slingshot->y + slingshot->h, height) << level;
@@ -425,8 +430,7 @@ TEST_F(TeachFlow, OnceTheNextBirdIsReadyTheFeedbackLeavesTheSlingshotAndThePigsI
         double height = 0.0;
         const std::vector<PanelBox> panels = lastPanels(run, width, height);
         const std::vector<PanelBox> keep = lastPanels(run, width, height, "keep_visible");
-        const auto feedback =
-            std::find_if(panels.begin(), panels.end(), [](const PanelBox& box) { return box.name == "feedback"; });
+        const auto feedback = findBox(panels, "feedback");
         ASSERT_NE(feedback, panels.end()) << level;
         ASSERT_FALSE(keep.empty()) << level;
         for (const PanelBox& thing : keep)

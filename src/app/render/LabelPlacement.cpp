@@ -9,6 +9,40 @@
 namespace abalike::app
 {
 
+namespace
+{
+/// Calls visit(name, rect) for the slingshot with the bird it holds, the bird in flight and, with pigs, every live pig:
+/// one walk for both the per-frame placement boxes (which list pigs with the blocks) and the trace's named boxes.
+template <class Visit>
+void forEachKeepVisible(const GameSession& session, const Camera& camera, bool pigs, Visit&& visit)
+{
+    const auto box = [&camera, &visit](const char* name, double left, double top, double right, double bottom)
+    {
+        const sf::Vector2f topLeft = camera.toScreen({static_cast<float>(left), static_cast<float>(top)});
+        const sf::Vector2f bottomRight = camera.toScreen({static_cast<float>(right), static_cast<float>(bottom)});
+        visit(name, sf::FloatRect(topLeft, bottomRight - topLeft));
+    };
+    // The slingshot with the bird it holds: its pouch and a post's length under it.
+    const std::array<double, 2> pouch = session.launchPoint();
+    box("slingshot", pouch[0] - 0.8, pouch[1] + 0.8, pouch[0] + 0.8, pouch[1] - 1.6);
+    if (const Entity* bird = session.world().bird(); bird != nullptr && bird->body != nullptr)
+    {
+        const b2Vec2 p = bird->body->GetPosition();
+        const double r = 0.5 * bird->widthM;
+        box("bird", p.x - r, p.y + r, p.x + r, p.y - r);
+    }
+    if (!pigs)
+        return;
+    for (const Entity& pig : session.world().entities())
+        if (pig.alive && pig.body != nullptr && pig.kind == EntityKind::Pig)
+        {
+            const b2Vec2 p = pig.body->GetPosition();
+            const double r = 0.5 * pig.widthM;
+            box("pig", p.x - r, p.y + r, p.x + r, p.y - r);
+        }
+}
+} // namespace
+
 std::vector<sf::FloatRect> structureScreenBoxes(const GameSession& session, const Camera& camera)
 {
     std::vector<sf::FloatRect> boxes;
@@ -24,37 +58,18 @@ std::vector<sf::FloatRect> structureScreenBoxes(const GameSession& session, cons
         const sf::Vector2f bottomRight = camera.toScreen({p.x + half, p.y - half});
         boxes.emplace_back(topLeft, bottomRight - topLeft);
     }
-    for (const ScreenRegion& region : keepVisibleBoxes(session, camera))
-        if (region.name != "pig")
-            boxes.push_back(region.rect);
+    forEachKeepVisible(session, camera, false,
+                       [&boxes](const char*, const sf::FloatRect& rect) { boxes.push_back(rect); });
     return boxes;
 }
 
 std::vector<ScreenRegion> keepVisibleBoxes(const GameSession& session, const Camera& camera)
 {
     std::vector<ScreenRegion> boxes;
-    const auto box = [&camera, &boxes](const char* name, double left, double top, double right, double bottom)
-    {
-        const sf::Vector2f topLeft = camera.toScreen({static_cast<float>(left), static_cast<float>(top)});
-        const sf::Vector2f bottomRight = camera.toScreen({static_cast<float>(right), static_cast<float>(bottom)});
-        boxes.push_back({name, {topLeft, bottomRight - topLeft}});
-    };
-    // The slingshot with the bird it holds: its pouch and a post's length under it.
-    const std::array<double, 2> pouch = session.launchPoint();
-    box("slingshot", pouch[0] - 0.8, pouch[1] + 0.8, pouch[0] + 0.8, pouch[1] - 1.6);
-    if (const Entity* bird = session.world().bird(); bird != nullptr && bird->body != nullptr)
-    {
-        const b2Vec2 p = bird->body->GetPosition();
-        const double r = 0.5 * bird->widthM;
-        box("bird", p.x - r, p.y + r, p.x + r, p.y - r);
-    }
-    for (const Entity& pig : session.world().entities())
-        if (pig.alive && pig.body != nullptr && pig.kind == EntityKind::Pig)
-        {
-            const b2Vec2 p = pig.body->GetPosition();
-            const double r = 0.5 * pig.widthM;
-            box("pig", p.x - r, p.y + r, p.x + r, p.y - r);
-        }
+    forEachKeepVisible(session, camera, true,
+                       [&boxes](const char* name, const sf::FloatRect& rect) {
+                           boxes.push_back({name, rect});
+                       });
     return boxes;
 }
 
