@@ -1,6 +1,8 @@
 #include "render/Label.hpp"
 
-#include <SFML/Graphics/VertexArray.hpp>
+#include "render/FontMetrics.hpp"
+
+#include <SFML/Graphics/Vertex.hpp>
 #include <algorithm>
 #include <cmath>
 
@@ -20,8 +22,9 @@ namespace
 template <class Visit>
 float layoutGlyphs(const sf::Font& font, const sf::String& text, unsigned size, Visit&& visit)
 {
+    FontMetrics& metrics = FontMetrics::of(font);
     const float whitespace = font.getGlyph(U' ', size, false).advance;
-    const float lineSpacing = font.getLineSpacing(size);
+    const float lineSpacing = metrics.lineSpacing(size);
     float x = 0.0f;
     auto y = static_cast<float>(size);
     float right = 0.0f;
@@ -30,7 +33,7 @@ float layoutGlyphs(const sf::Font& font, const sf::String& text, unsigned size, 
     {
         if (current == U'\r')
             continue;
-        x += font.getKerning(previous, current, size);
+        x += metrics.kerning(previous, current, size);
         previous = current;
         if (current == U' ' || current == U'\t' || current == U'\n')
         {
@@ -56,7 +59,7 @@ float layoutGlyphs(const sf::Font& font, const sf::String& text, unsigned size, 
 
 /// Two triangles for a glyph with a pixel of padding around it, as sf::Text draws them (the padding keeps the
 /// glyph's antialiased edge).
-void appendGlyphQuad(sf::VertexArray& vertices, sf::Vector2f pen, const sf::Glyph& glyph, sf::Color colour)
+void appendGlyphQuad(std::vector<sf::Vertex>& vertices, sf::Vector2f pen, const sf::Glyph& glyph, sf::Color colour)
 {
     constexpr float kPadding = 1.0f;
     const float left = pen.x + glyph.bounds.left - kPadding;
@@ -67,19 +70,19 @@ void appendGlyphQuad(sf::VertexArray& vertices, sf::Vector2f pen, const sf::Glyp
     const float v1 = static_cast<float>(glyph.textureRect.top) - kPadding;
     const float u2 = static_cast<float>(glyph.textureRect.left + glyph.textureRect.width) + kPadding;
     const float v2 = static_cast<float>(glyph.textureRect.top + glyph.textureRect.height) + kPadding;
-    vertices.append(sf::Vertex({left, top}, colour, {u1, v1}));
-    vertices.append(sf::Vertex({right, top}, colour, {u2, v1}));
-    vertices.append(sf::Vertex({left, bottom}, colour, {u1, v2}));
-    vertices.append(sf::Vertex({left, bottom}, colour, {u1, v2}));
-    vertices.append(sf::Vertex({right, top}, colour, {u2, v1}));
-    vertices.append(sf::Vertex({right, bottom}, colour, {u2, v2}));
+    vertices.emplace_back(sf::Vector2f(left, top), colour, sf::Vector2f(u1, v1));
+    vertices.emplace_back(sf::Vector2f(right, top), colour, sf::Vector2f(u2, v1));
+    vertices.emplace_back(sf::Vector2f(left, bottom), colour, sf::Vector2f(u1, v2));
+    vertices.emplace_back(sf::Vector2f(left, bottom), colour, sf::Vector2f(u1, v2));
+    vertices.emplace_back(sf::Vector2f(right, top), colour, sf::Vector2f(u2, v1));
+    vertices.emplace_back(sf::Vector2f(right, bottom), colour, sf::Vector2f(u2, v2));
 }
 } // namespace
 
 sf::Vector2f measureText(const sf::Font& font, const sf::String& text, unsigned size)
 {
     const float right = layoutGlyphs(font, text, size, [](const sf::Glyph&, sf::Vector2f) {});
-    return {right, font.getLineSpacing(size)};
+    return {right, FontMetrics::of(font).lineSpacing(size)};
 }
 
 std::vector<std::string> wrapText(const sf::Font& font, std::string_view text, unsigned size, float maxWidth)
@@ -171,7 +174,7 @@ sf::FloatRect drawLabel(sf::RenderTarget& target, const sf::Font& font, const sf
     position = {std::round(position.x), std::round(position.y)};
 
     // The shadow and the text in one batch and one draw call, every shadow first (below every glyph).
-    static sf::VertexArray vertices(sf::Triangles);
+    static std::vector<sf::Vertex> vertices;
     vertices.clear();
     const float shadowOffset = std::max(1.0f, static_cast<float>(size) / 14.0f);
     const sf::Vector2f shadowAt = position + sf::Vector2f(shadowOffset, shadowOffset);
@@ -180,13 +183,13 @@ sf::FloatRect drawLabel(sf::RenderTarget& target, const sf::Font& font, const sf
         appendGlyphQuad(vertices, shadowAt + g.pen, *g.glyph, shadow);
     for (const PlacedGlyph& g : placed)
         appendGlyphQuad(vertices, position + g.pen, *g.glyph, colour);
-    if (vertices.getVertexCount() > 0)
+    if (!vertices.empty())
     {
         sf::RenderStates states;
         states.texture = &font.getTexture(size); // after the layout: new glyphs may have grown the texture
-        target.draw(vertices, states);
+        target.draw(vertices.data(), vertices.size(), sf::Triangles, states);
     }
-    return {position, {width, font.getLineSpacing(size)}};
+    return {position, {width, FontMetrics::of(font).lineSpacing(size)}};
 }
 
 } // namespace abalike::app

@@ -1,5 +1,6 @@
 #include "render/Mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -9,6 +10,10 @@ namespace abalike::app
 namespace
 {
 constexpr float kTwoPi = 2.0f * std::numbers::pi_v<float>;
+/// How far (in pixels) a chord of a curve may fall inside its arc: under a fifth of a pixel, the few edge pixels whose
+/// centres it moves past change colour and nothing else does.
+constexpr float kChordTolerancePx = 0.2f;
+constexpr int kFewestSegments = 6;
 
 sf::Vector2f unitNormal(sf::Vector2f a, sf::Vector2f b)
 {
@@ -20,17 +25,31 @@ sf::Vector2f unitNormal(sf::Vector2f a, sf::Vector2f b)
 }
 } // namespace
 
-Mesh::Mesh() : m_vertices(sf::Triangles) {}
+Mesh::Mesh() = default;
 
 void Mesh::clear()
 {
     m_vertices.clear();
-    m_local = sf::Transform::Identity;
+    resetLocalTransform();
+}
+
+void Mesh::setLocalTransform(const sf::Transform& transform)
+{
+    // sf::Transform keeps a 4x4 column-major matrix; a 2D affine transform uses six of its entries.
+    const float* m = transform.getMatrix();
+    m_a = m[0];
+    m_b = m[4];
+    m_c = m[12];
+    m_d = m[1];
+    m_e = m[5];
+    m_f = m[13];
 }
 
 void Mesh::addVertex(sf::Vector2f point, sf::Color colour)
 {
-    m_vertices.append(sf::Vertex(m_local.transformPoint(point), colour));
+    // The same arithmetic as sf::Transform::transformPoint, so the vertices are bit for bit what they were.
+    m_vertices.emplace_back(sf::Vector2f(m_a * point.x + m_b * point.y + m_c, m_d * point.x + m_e * point.y + m_f),
+                            colour);
 }
 
 void Mesh::addTriangle(sf::Vector2f a, sf::Vector2f b, sf::Vector2f c, sf::Color colour)
@@ -56,6 +75,20 @@ void Mesh::addGradientRect(sf::Vector2f min, sf::Vector2f max, sf::Color atMinY,
     addVertex({min.x, max.y}, atMaxY);
 }
 
+int Mesh::segmentsFor(float radius, int asked) const
+{
+    if (m_pixelSize <= 0.0f || asked <= kFewestSegments)
+        return asked;
+    const float radiusPx = std::abs(radius) / m_pixelSize;
+    // A chord of angle 2*pi/n falls r * (1 - cos(pi/n)) inside the arc.
+    if (radiusPx <= kChordTolerancePx)
+        return kFewestSegments;
+    const float cosine = 1.0f - kChordTolerancePx / radiusPx;
+    const int needed = static_cast<int>(std::ceil(std::numbers::pi_v<float> / std::acos(cosine)));
+    const int even = needed + needed % 2;
+    return std::clamp(even, kFewestSegments, asked);
+}
+
 void Mesh::addCircle(sf::Vector2f centre, float radius, sf::Color colour, int segments)
 {
     addEllipse(centre, radius, radius, colour, segments);
@@ -63,6 +96,7 @@ void Mesh::addCircle(sf::Vector2f centre, float radius, sf::Color colour, int se
 
 void Mesh::addEllipse(sf::Vector2f centre, float radiusX, float radiusY, sf::Color colour, int segments)
 {
+    segments = segmentsFor(std::max(std::abs(radiusX), std::abs(radiusY)), segments);
     sf::Vector2f previous = centre + sf::Vector2f(radiusX, 0.0f);
     for (int i = 1; i <= segments; ++i)
     {
@@ -75,6 +109,7 @@ void Mesh::addEllipse(sf::Vector2f centre, float radiusX, float radiusY, sf::Col
 
 void Mesh::addUpperHalfEllipse(sf::Vector2f centre, float radiusX, float radiusY, sf::Color colour, int segments)
 {
+    segments = segmentsFor(std::max(std::abs(radiusX), std::abs(radiusY)), segments);
     sf::Vector2f previous = centre + sf::Vector2f(radiusX, 0.0f);
     for (int i = 1; 2 * i <= segments; ++i)
     {
@@ -89,6 +124,7 @@ void Mesh::addRing(sf::Vector2f centre, float radius, float width, sf::Color col
 {
     const float inner = radius - 0.5f * width;
     const float outer = radius + 0.5f * width;
+    segments = segmentsFor(outer, segments);
     for (int i = 0; i < segments; ++i)
     {
         const float a0 = kTwoPi * static_cast<float>(i) / static_cast<float>(segments);
@@ -152,12 +188,12 @@ void Mesh::addStar(sf::Vector2f centre, float outerRadius, float innerRadius, sf
 
 void Mesh::draw(sf::RenderTarget& target, const sf::Transform& transform, const sf::BlendMode& blend) const
 {
-    if (m_vertices.getVertexCount() == 0)
+    if (m_vertices.empty())
         return;
     sf::RenderStates states;
     states.transform = transform;
     states.blendMode = blend;
-    target.draw(m_vertices, states);
+    target.draw(m_vertices.data(), m_vertices.size(), sf::Triangles, states);
 }
 
 } // namespace abalike::app

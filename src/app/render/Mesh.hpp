@@ -3,7 +3,7 @@
 #include <SFML/Graphics/Color.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <SFML/Graphics/Transform.hpp>
-#include <SFML/Graphics/VertexArray.hpp>
+#include <SFML/Graphics/Vertex.hpp>
 #include <span>
 #include <vector>
 
@@ -19,8 +19,12 @@ public:
 
     void clear();
     /// Transform applied to every point added from now on (identity by default).
-    void setLocalTransform(const sf::Transform& transform) { m_local = transform; }
-    void resetLocalTransform() { m_local = sf::Transform::Identity; }
+    void setLocalTransform(const sf::Transform& transform);
+    void resetLocalTransform() { setLocalTransform(sf::Transform::Identity); }
+    /// The size of a screen pixel in the units points are given in (metres per pixel for a world mesh). With it,
+    /// curves get only the segments their size on the screen needs (never more than asked for): a pig's 2-pixel
+    /// nostril is not cut into 24 triangles. 0, the default, keeps every segment asked for. Kept by clear().
+    void setPixelSize(float unitsPerPixel) { m_pixelSize = unitsPerPixel; }
 
     void addTriangle(sf::Vector2f a, sf::Vector2f b, sf::Vector2f c, sf::Color colour);
     /// A convex polygon, as a triangle fan.
@@ -47,14 +51,21 @@ public:
     void draw(sf::RenderTarget& target, const sf::Transform& transform = sf::Transform::Identity,
               const sf::BlendMode& blend = sf::BlendAlpha) const;
     /// Vertices added so far (three per triangle).
-    std::size_t vertexCount() const { return m_vertices.getVertexCount(); }
+    std::size_t vertexCount() const { return m_vertices.size(); }
 
 private:
     void addVertex(sf::Vector2f point, sf::Color colour);
+    /// Segments for a curve of this radius: as asked, or fewer where each chord stays within kChordTolerancePx of
+    /// the arc on the screen (see setPixelSize); always even, so that half an ellipse closes on its axis.
+    int segmentsFor(float radius, int asked) const;
 
-    sf::VertexArray m_vertices;
+    /// A plain vector rather than sf::VertexArray: a frame adds tens of thousands of vertices, and appending through
+    /// SFML's library calls (and sf::Transform::transformPoint's) took a tenth of the frame's drawing.
+    std::vector<sf::Vertex> m_vertices;
     std::vector<sf::Vector2f> m_polyline; ///< addPolyline's kept points, reused between calls
-    sf::Transform m_local;
+    /// The local transform's 2D part: x' = a x + b y + c, y' = d x + e y + f.
+    float m_a = 1.0f, m_b = 0.0f, m_c = 0.0f, m_d = 0.0f, m_e = 1.0f, m_f = 0.0f;
+    float m_pixelSize = 0.0f;
 };
 
 } // namespace abalike::app

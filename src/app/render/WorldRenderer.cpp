@@ -63,6 +63,8 @@ void WorldRenderer::drawBackground(sf::RenderTarget& target, const Camera& camer
     const auto groundY = static_cast<float>(session.level().groundY);
     m_base.clear();
     m_mesh.clear();
+    m_base.setPixelSize(camera.metresPerPixel());
+    m_mesh.setPixelSize(camera.metresPerPixel());
     const Scenery& scenery = sceneryOf(levelTheme(session.level()));
     m_surface = scenery.surface; // the terrain's top edges wear the world's surface too
     Backdrop::paint(m_base, m_mesh, camera, groundY, scenery);
@@ -88,6 +90,7 @@ void WorldRenderer::drawForeground(sf::RenderTarget& target, const Camera& camer
     const float pixelM = camera.metresPerPixel();
     const std::vector<Entity>& entities = session.world().entities();
     m_mesh.clear();
+    m_mesh.setPixelSize(pixelM);
 
     // The slingshot and the bird it holds.
     const std::array<double, 2> pouch = session.launchPoint();
