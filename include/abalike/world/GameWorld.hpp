@@ -361,6 +361,10 @@ private:
     int m_restingStackSubsteps = 1;   ///< restingStackSubsteps() at the start of the current step
     double m_lightestBodyKg = 0.0;    ///< lightest block or pig at the start; 0 when there is none
     std::array<double, 3> m_extent{}; ///< left, right, bottom: beyond these a body has left the world
+    /// deepestStack's breadth-first search, kept between steps so that a step allocates nothing for it.
+    mutable std::vector<int> m_stackDepthOf;
+    mutable std::vector<int> m_stackFrontier;
+    mutable std::vector<int> m_stackNext;
 
     int m_birdIndex = -1;
     BirdType m_birdType;

@@ -63,7 +63,7 @@ void FxLayer::afterStep(PlayView& view)
             // append, not "+" + to_string(): GCC 12 warns falsely (-Wrestrict) on operator+ with a temporary.
             std::string text = "+";
             text.append(std::to_string(event.points));
-            m_popUps.push_back({std::move(text), at, 0.0f, event.kind == EntityKind::Pig});
+            m_popUps.push_back({std::move(text), at, 0.0f, event.kind == EntityKind::Pig, {}});
         }
     }
     m_seen = destroyed.size();
@@ -130,13 +130,17 @@ void FxLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     if (font == nullptr)
         return;
     const bool reduced = view.app().settings().reducedMotion;
-    for (const PopUp& popUp : m_popUps)
+    for (PopUp& popUp : m_popUps)
     {
         const float along = popUp.ageS / kPopUpLifeS;
         sf::Vector2f at = popUp.positionM;
         if (!reduced)
             at.y += kPopUpRiseMps * popUp.ageS;
-        sf::Text text(popUp.text, *font, view.app().textSize(popUp.pig ? 26.0f : 18.0f));
+        sf::Text& text = popUp.label;
+        if (text.getString().isEmpty())
+            text.setString(popUp.text);
+        text.setFont(*font);
+        text.setCharacterSize(view.app().textSize(popUp.pig ? 26.0f : 18.0f));
         text.setStyle(sf::Text::Bold);
         const float alpha = std::clamp((1.0f - along) / 0.3f, 0.0f, 1.0f);
         text.setFillColor(faded(popUp.pig ? palette::kStar : palette::kText, alpha));

@@ -4,6 +4,7 @@
 #include "fx/Particles.hpp"
 #include "screens/PlayLayer.hpp"
 
+#include <SFML/Graphics/Text.hpp>
 #include <SFML/System/Vector2.hpp>
 #include <string>
 #include <vector>
@@ -32,6 +33,9 @@ private:
         sf::Vector2f positionM;
         float ageS = 0.0f;
         bool pig = false;
+        /// Kept from frame to frame: sf::Text lays its glyphs out again (asking FreeType for every pair's kerning)
+        /// only when its string, font or size changes, not when it fades or rises.
+        sf::Text label;
     };
 
     Particles m_particles;

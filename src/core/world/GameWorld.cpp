@@ -79,8 +79,11 @@ int GameWorld::deepestStack(bool restingOnly, int cap) const
         return body->IsAwake() && body->GetLinearVelocity().LengthSquared() <= kRestingSpeedMps * kRestingSpeedMps &&
                std::abs(body->GetAngularVelocity()) <= kRestingSpinRadPerS;
     };
-    std::vector<int> depth(m_entities.size(), -1);
-    std::vector<int> frontier;
+    std::vector<int>& depth = m_stackDepthOf;
+    std::vector<int>& frontier = m_stackFrontier;
+    std::vector<int>& next = m_stackNext;
+    depth.assign(m_entities.size(), -1);
+    frontier.clear();
     for (std::size_t i = 0; i < m_entities.size(); ++i)
         if (m_entities[i].body != nullptr && m_entities[i].body->GetType() == b2_staticBody)
         {
@@ -88,7 +91,6 @@ int GameWorld::deepestStack(bool restingOnly, int cap) const
             frontier.push_back(static_cast<int>(i));
         }
     int deepest = 0;
-    std::vector<int> next;
     while (!frontier.empty() && deepest < cap)
     {
         next.clear();
