@@ -349,6 +349,23 @@ std::vector<PanelBox>::const_iterator findBox(const std::vector<PanelBox>& boxes
 }
 
 /// Every panel inside the window and no two overlapping.
+/// The last "panels" event of a run: the window, the panels drawn and what they should leave visible.
+struct Layout
+{
+    double width = 0.0;
+    double height = 0.0;
+    std::vector<PanelBox> panels;
+    std::vector<PanelBox> keep;
+};
+
+Layout lastLayout(const GameRun& run)
+{
+    Layout layout;
+    layout.panels = lastPanels(run, layout.width, layout.height);
+    layout.keep = lastPanels(run, layout.width, layout.height, "keep_visible");
+    return layout;
+}
+
 void expectApartAndInside(const std::vector<PanelBox>& boxes, double width, double height, const std::string& what)
 {
     for (std::size_t i = 0; i < boxes.size(); ++i)
@@ -393,10 +410,7 @@ TEST_F(TeachFlow, AtLargeTextTheKeysAndTheHintLeaveTheSlingshotInView)
         // 240 frames: past the opening pan of a wide level, back at the slingshot.
         const GameRun run = runGame("play " + sourceFile(level) + " --frames 240 --size 1280x720", data());
         ASSERT_EQ(run.exitCode, 0) << run.err;
-        double width = 0.0;
-        double height = 0.0;
-        const std::vector<PanelBox> panels = lastPanels(run, width, height);
-        const std::vector<PanelBox> keep = lastPanels(run, width, height, "keep_visible");
+        const auto [width, height, panels, keep] = lastLayout(run);
         const auto slingshot = findBox(keep, "slingshot");
         ASSERT_NE(slingshot, keep.end()) << level;
         EXPECT_GE(slingshot->x, 0.0) << level;
@@ -413,6 +427,25 @@ TEST_F(TeachFlow, AtLargeTextTheKeysAndTheHintLeaveTheSlingshotInView)
     }
 }
 
+/// Seven seconds into a run of the level with the shot (the next bird ready, the camera back at the slingshot), the
+/// feedback card covers none of what panels should leave visible (the trace's keep_visible).
+void expectFeedbackLeavesInView(const std::filesystem::path& data, const std::string& level, const std::string& shot,
+                                const std::string& size)
+{
+    const GameRun run = runGame("play " + sourceFile(level) + " --shot " + shot + " --frames 420 --size " + size, data);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto [width, height, panels, keep] = lastLayout(run);
+    const auto feedback = findBox(panels, "feedback");
+    ASSERT_NE(feedback, panels.end()) << level;
+    ASSERT_FALSE(keep.empty()) << level;
+    for (const PanelBox& thing : keep)
+    {
+        const bool apart = feedback->x + feedback->w <= thing.x || thing.x + thing.w <= feedback->x ||
+                           feedback->y + feedback->h <= thing.y || thing.y + thing.h <= feedback->y;
+        EXPECT_TRUE(apart) << level << ": the feedback covers the " << thing.name;
+    }
+}
+
 TEST_F(TeachFlow, OnceTheNextBirdIsReadyTheFeedbackLeavesTheSlingshotAndThePigsInView)
 {
     // 1-1 and 5-1, seven seconds into a run with the reference shot, 1280x720 at 100 % text with the overlay on: the
@@ -420,26 +453,19 @@ TEST_F(TeachFlow, OnceTheNextBirdIsReadyTheFeedbackLeavesTheSlingshotAndThePigsI
     // shot ended, clear of the structure as the camera framed it then, and covered a pig (tools/layout-sweep). Now
     // it moves to a spot clear of the world once the shot is over.
     std::ofstream(data() / "settings.json") << R"({"format": 1, "text_scale": 1.0, "teaching_overlay": true})";
-    for (const auto& [level, shot] :
-         {std::pair{"levels/1-1-first-flight.json", "30,18"}, std::pair{"levels/5-1-titan.json", "5,30"}})
-    {
-        const GameRun run =
-            runGame("play " + sourceFile(level) + " --shot " + shot + " --frames 420 --size 1280x720", data());
-        ASSERT_EQ(run.exitCode, 0) << run.err;
-        double width = 0.0;
-        double height = 0.0;
-        const std::vector<PanelBox> panels = lastPanels(run, width, height);
-        const std::vector<PanelBox> keep = lastPanels(run, width, height, "keep_visible");
-        const auto feedback = findBox(panels, "feedback");
-        ASSERT_NE(feedback, panels.end()) << level;
-        ASSERT_FALSE(keep.empty()) << level;
-        for (const PanelBox& thing : keep)
-        {
-            const bool apart = feedback->x + feedback->w <= thing.x || thing.x + thing.w <= feedback->x ||
-                               feedback->y + feedback->h <= thing.y || thing.y + thing.h <= feedback->y;
-            EXPECT_TRUE(apart) << level << ": the feedback covers the " << thing.name;
-        }
-    }
+    expectFeedbackLeavesInView(data(), "levels/1-1-first-flight.json", "30,18", "1280x720");
+    expectFeedbackLeavesInView(data(), "levels/5-1-titan.json", "5,30", "1280x720");
+}
+
+TEST_F(TeachFlow, WhenNoSpotIsClearOfTheWorldTheFeedbackStillLeavesTheSlingshotInView)
+{
+    // 1-1 and 6-4 in a wide, low window (1280x400) at 150 % text, seven seconds into a run with the reference shot:
+    // no spot for the feedback card is clear of every block, and it kept the one it took when the shot ended, over
+    // the slingshot the camera has returned to (tools/layout-sweep). Now it moves to a spot that leaves the slingshot
+    // and the pigs in view, over blocks if it must.
+    std::ofstream(data() / "settings.json") << R"({"format": 1, "text_scale": 1.5, "teaching_overlay": true})";
+    expectFeedbackLeavesInView(data(), "levels/1-1-first-flight.json", "30,18", "1280x400");
+    expectFeedbackLeavesInView(data(), "levels/6-4-powder-kegs.json", "22,22", "1280x400");
 }
 
 TEST_F(TeachFlow, AtLargeTextThePanelsAfterAShotNeverOverlapAndTheFeedbackShrinksToOneLine)

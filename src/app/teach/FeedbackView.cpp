@@ -8,6 +8,8 @@
 
 #include <abalike/teach/ShotFeedback.hpp>
 #include <algorithm>
+#include <optional>
+#include <utility>
 
 namespace abalike::app
 {
@@ -59,7 +61,8 @@ void FeedbackView::update(const GameSession& session, const std::optional<AimRea
 }
 
 void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bottom, float top,
-                        std::span<const sf::FloatRect> avoid, float maxWidth, unsigned rowSize, float scale) const
+                        std::span<const sf::FloatRect> avoid, std::span<const sf::FloatRect> keep, float maxWidth,
+                        unsigned rowSize, float scale) const
 {
     if (m_sentences.empty())
         return;
@@ -79,7 +82,8 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
 
     // Candidates in order of preference: above the hint in the middle, then its left and right, then up in the sky
     // under the panels already drawn (middle, left, right). The first that covers neither a panel nor the
-    // structure wins; otherwise the one covering least of the structure among those clear of every panel.
+    // structure wins; otherwise, among those clear of every panel, the one covering least of what must stay in
+    // view (the slingshot, the flying bird, the pigs), then least of the structure.
     const auto candidatesFor = [&](const std::vector<std::string>& lines)
     {
         float width = 0.0f;
@@ -109,14 +113,27 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
         if (*m_spot < candidates.size() && fits(candidates[*m_spot]))
         {
             // Once the next bird is ready the camera returns to the slingshot: a card that now covers the slingshot,
-            // a pig or a block takes the first spot that covers none, if there is one.
+            // a pig or a block takes the first spot that covers none, if there is one; one that covers the
+            // slingshot or a pig, else the first spot that covers neither of those.
             if (m_shotOver && coveredArea(candidates[*m_spot], avoid) > 0.0f)
+            {
+                const bool coversKeep = coveredArea(candidates[*m_spot], keep) > 0.0f;
+                std::optional<std::size_t> clearOfKeep;
                 for (std::size_t i = 0; i < candidates.size(); ++i)
-                    if (fits(candidates[i]) && coveredArea(candidates[i], avoid) <= 0.0f)
+                {
+                    if (!fits(candidates[i]) || coveredArea(candidates[i], keep) > 0.0f)
+                        continue;
+                    if (!clearOfKeep)
+                        clearOfKeep = i;
+                    if (coveredArea(candidates[i], avoid) <= 0.0f)
                     {
-                        m_spot = i;
+                        clearOfKeep = i;
                         break;
                     }
+                }
+                if (clearOfKeep && (coversKeep || coveredArea(candidates[*clearOfKeep], avoid) <= 0.0f))
+                    m_spot = clearOfKeep;
+            }
             drawCard(target, font, candidates[*m_spot], lines, rowSize, scale);
             return;
         }
@@ -128,18 +145,18 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
         if (lines.front().empty())
             continue;
         const std::vector<sf::FloatRect> candidates = candidatesFor(lines);
-        float least = -1.0f;
+        std::optional<std::pair<float, float>> least; // covered of `keep`, then of `avoid`
         for (std::size_t i = 0; i < candidates.size(); ++i)
         {
             if (!fits(candidates[i]))
                 continue;
-            const float covered = coveredArea(candidates[i], avoid);
-            if (least < 0.0f || covered < least)
+            const std::pair<float, float> covered{coveredArea(candidates[i], keep), coveredArea(candidates[i], avoid)};
+            if (!least || covered < *least)
             {
                 least = covered;
                 m_spot = i;
             }
-            if (covered <= 0.0f)
+            if (covered.second <= 0.0f)
                 break;
         }
         if (m_spot)

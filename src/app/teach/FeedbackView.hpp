@@ -26,11 +26,14 @@ public:
     /// Draws the sentences wrapped to `maxWidth` on a card: above `bottom` (window pixels) in the middle, else at
     /// its left or right, else from `top` down under the panels already drawn this frame (ScreenRegions), the first
     /// spot inside the window clear of every panel and of the boxes of `avoid` (the structure on screen), else the
-    /// one covering least of them. With no such spot, the first sentence cut to one line in the same way; with none
-    /// for that either, nothing. The spot is chosen once per shot's sentences, so the card stays put while the world
-    /// moves; once the next bird is ready it leaves a spot over the world's boxes for one clear of them, if any.
+    /// one covering least of `keep` (the slingshot, the flying bird and the pigs: what the player must see), and of
+    /// those the one covering least of `avoid`. With no such spot, the first sentence cut to one line in the same
+    /// way; with none for that either, nothing. The spot is chosen once per shot's sentences, so the card stays put
+    /// while the world moves; once the next bird is ready it leaves a spot over the world's boxes for one clear of
+    /// them, or, when it covers the slingshot or a pig, for one clear of those, if any.
     void draw(sf::RenderTarget& target, const sf::Font& font, float bottom, float top,
-              std::span<const sf::FloatRect> avoid, float maxWidth, unsigned rowSize, float scale) const;
+              std::span<const sf::FloatRect> avoid, std::span<const sf::FloatRect> keep, float maxWidth,
+              unsigned rowSize, float scale) const;
 
 private:
     void drawCard(sf::RenderTarget& target, const sf::Font& font, const sf::FloatRect& rect,
