@@ -63,7 +63,10 @@ void FxLayer::afterStep(PlayView& view)
             // append, not "+" + to_string(): GCC 12 warns falsely (-Wrestrict) on operator+ with a temporary.
             std::string text = "+";
             text.append(std::to_string(event.points));
-            m_popUps.push_back({std::move(text), at, 0.0f, event.kind == EntityKind::Pig, {}});
+            PopUp& popUp = m_popUps.emplace_back(PopUp{at, 0.0f, event.kind == EntityKind::Pig, sf::Text()});
+            popUp.label.setString(text);
+            popUp.label.setStyle(sf::Text::Bold);
+            popUp.label.setOutlineThickness(2.0f);
         }
     }
     m_seen = destroyed.size();
@@ -137,15 +140,11 @@ void FxLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
         if (!reduced)
             at.y += kPopUpRiseMps * popUp.ageS;
         sf::Text& text = popUp.label;
-        if (text.getString().isEmpty())
-            text.setString(popUp.text);
         text.setFont(*font);
         text.setCharacterSize(view.app().textSize(popUp.pig ? 26.0f : 18.0f));
-        text.setStyle(sf::Text::Bold);
         const float alpha = std::clamp((1.0f - along) / 0.3f, 0.0f, 1.0f);
         text.setFillColor(faded(popUp.pig ? palette::kStar : palette::kText, alpha));
         text.setOutlineColor(faded(sf::Color(30, 24, 16), alpha));
-        text.setOutlineThickness(2.0f);
         const sf::FloatRect bounds = text.getLocalBounds();
         text.setOrigin(bounds.left + bounds.width / 2.0f, bounds.top + bounds.height / 2.0f);
         const sf::Vector2f screen = camera.toScreen(at);

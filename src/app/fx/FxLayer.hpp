@@ -29,12 +29,11 @@ public:
 private:
     struct PopUp
     {
-        std::string text;
         sf::Vector2f positionM;
         float ageS = 0.0f;
         bool pig = false;
-        /// Kept from frame to frame: sf::Text lays its glyphs out again (asking FreeType for every pair's kerning)
-        /// only when its string, font or size changes, not when it fades or rises.
+        /// The points, bold and outlined, made with the pop-up and kept: sf::Text lays its glyphs out again (asking
+        /// FreeType for every pair's kerning) only when its string, font or size changes, not when it fades or rises.
         sf::Text label;
     };
 

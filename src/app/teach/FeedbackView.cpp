@@ -117,22 +117,19 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
             // slingshot or a pig, else the first spot that covers neither of those.
             if (m_shotOver && coveredArea(candidates[*m_spot], avoid) > 0.0f)
             {
-                const bool coversKeep = coveredArea(candidates[*m_spot], keep) > 0.0f;
-                std::optional<std::size_t> clearOfKeep;
-                for (std::size_t i = 0; i < candidates.size(); ++i)
+                const auto firstClearOf = [&](std::span<const sf::FloatRect> boxes) -> std::optional<std::size_t>
                 {
-                    if (!fits(candidates[i]) || coveredArea(candidates[i], keep) > 0.0f)
-                        continue;
-                    if (!clearOfKeep)
-                        clearOfKeep = i;
-                    if (coveredArea(candidates[i], avoid) <= 0.0f)
-                    {
-                        clearOfKeep = i;
-                        break;
-                    }
-                }
-                if (clearOfKeep && (coversKeep || coveredArea(candidates[*clearOfKeep], avoid) <= 0.0f))
-                    m_spot = clearOfKeep;
+                    for (std::size_t i = 0; i < candidates.size(); ++i)
+                        if (fits(candidates[i]) && coveredArea(candidates[i], boxes) <= 0.0f)
+                            return i;
+                    return std::nullopt;
+                };
+                // `avoid` holds the slingshot, the bird and (larger) the pigs too: clear of it is clear of `keep`.
+                if (const std::optional<std::size_t> clear = firstClearOf(avoid))
+                    m_spot = clear;
+                else if (coveredArea(candidates[*m_spot], keep) > 0.0f)
+                    if (const std::optional<std::size_t> clearOfKeep = firstClearOf(keep))
+                        m_spot = clearOfKeep;
             }
             drawCard(target, font, candidates[*m_spot], lines, rowSize, scale);
             return;

@@ -299,15 +299,10 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
         m_walkthrough.drawPanel(target, *font, 152.0f * scale, titleSize, rowSize, scale);
 
     // Feedback on the last shot, above the level's hint and the app's notices at the bottom.
-    if (!m_walkthrough.active())
-    {
-        std::vector<sf::FloatRect> keep;
-        for (const ScreenRegion& region : keepVisibleBoxes(session, view.camera()))
-            keep.push_back(region.rect);
+    if (!m_walkthrough.active() && !m_feedback.sentences().empty())
         m_feedback.draw(target, *font, window.y - 96.0f * scale, 160.0f * scale,
-                        structureScreenBoxes(session, view.camera()), keep, std::min(window.x - 40.0f, 900.0f * scale),
-                        m_app.textSize(16.0f), scale);
-    }
+                        structureScreenBoxes(session, view.camera()), keepVisibleRects(session, view.camera()),
+                        std::min(window.x - 40.0f, 900.0f * scale), m_app.textSize(16.0f), scale);
 
     // The measuring tools last: what the player points at reads over everything.
     if (overlayOn() || m_guide.active())
