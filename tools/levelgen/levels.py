@@ -1,8 +1,8 @@
 """The campaign's levels built from prefabs: each function returns one level (its fields but stars, which
 tools/balance-campaign sets from the model player). Levels of the first round that are not here are hand-written."""
 
-from prefabs import (Scene, ball, cage, castle, column, double_frame, frame, gate, hill, island, plateau, pyramid,
-                     roof, tnt, tower)
+from prefabs import (Scene, ball, cage, castle, column, double_frame, fortress, frame, gate, hill, island, plateau,
+                     pyramid, roof, tnt, tower)
 
 EARTH_AIR = 1.2
 
@@ -428,12 +428,14 @@ def l6_9():
 
 def l6_10():
     s = Scene()
-    hill(s, 22, 52, 1.5, 0.85)
-    castle(s, 31, 1.5, 4, "stone", "wood", ("helmet", "large", "helmet", "medium"), "stone")
-    castle(s, 43, 1.5, 3, "stone", "wood", ("large", "helmet", "small"), "stone")
-    for x, pig in ((25.8, "small"), (37, "small"), (48.2, None)):
-        cage(s, x, 1.5, 1.0, "wood", pig)
+    hill(s, 21, 53, 1.5, 0.85)
+    fortress(s, 30, 1.5, "stone", "wood", ("helmet", None, "large", "medium"), ("small", "small"))
+    fortress(s, 44, 1.5, "stone", "wood", (None, "helmet", "medium", "large"), ("small", "small"))
+    cage(s, 37, 1.5, 1.0, "wood", "small")
     tnt(s, 37, 2.5)
+    gate(s, 15, 0, 2.4, 3, 0.6, "stone", "wood", "helmet")
+    top = pyramid(s, 57, 0, 4, 0.8, "wood")
+    s.pig("small", 57, top)
     return level("6-10", "The Last Fortress",
                  "Two stone castles with helmeted pigs: every idea of the campaign at once. Stone does not break, it "
                  "topples; heavy birds carry momentum; TNT between the castles reaches both.",

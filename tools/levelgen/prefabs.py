@@ -153,6 +153,37 @@ def castle(s, x, y, keep_storeys=3, material="stone", planks="wood", pigs=("medi
     return top
 
 
+def keep(s, x, y, storeys, bay=2.0, height=3.0, post="stone", plank="wood", pigs=()):
+    """Storeys of three posts under one plank: two bays side by side; storey i's pigs are pigs[2i] (left bay) and
+    pigs[2i + 1] (right bay), None for an empty bay. Returns the top."""
+    for i in range(storeys):
+        for dx in (-bay, 0, bay):
+            s.block(post, x + dx, y + height / 2, POST, height)
+        s.block(plank, x, y + height + PLANK / 2, 2 * bay + 0.6, PLANK)
+        for j, dx in enumerate((-bay / 2, bay / 2)):
+            pig = pigs[2 * i + j] if 2 * i + j < len(pigs) else None
+            if pig:
+                s.pig(pig, x + dx, y)
+        y += height + PLANK
+    return y
+
+
+def fortress(s, x, y, material="stone", planks="wood", keep_pigs=(), side_pigs=("small", "small"), roof_mat="stone",
+             height=3.0):
+    """A keep of two bays and two tall storeys between two one-storey towers, each under a roof, and an empty cage
+    in each gap: a castle as wide as a tall one but never more than five bodies deep, so Box2D solves it in one
+    step (GameWorld's stack sub-steps start at six). Returns the keep's top."""
+    top = keep(s, x, y, 2, 2.0, height, material, planks, keep_pigs)
+    roof(s, x, top, 3.0, roof_mat)
+    for side in (-1, 1):  # merlons beside the roof
+        s.block(material, x + side * 1.95, top + 0.25, 0.5, 0.5)
+    for side, pig in zip((-1, 1), side_pigs):
+        t = frame(s, x + side * 4.4, y, 1.6, height, material, planks, pig)
+        roof(s, x + side * 4.4, t, 2.2, roof_mat)
+        cage(s, x + side * 2.8, y, 0.8, "wood", None)
+    return top
+
+
 # Terrain -------------------------------------------------------------------------------------------------------------
 
 
