@@ -430,9 +430,11 @@ TEST_F(TeachFlow, AtLargeTextTheKeysAndTheHintLeaveTheSlingshotInView)
 /// Seven seconds into a run of the level with the shot (the next bird ready, the camera back at the slingshot), the
 /// feedback card covers none of what panels should leave visible (the trace's keep_visible).
 void expectFeedbackLeavesInView(const std::filesystem::path& data, const std::string& level, const std::string& shot,
-                                const std::string& size)
+                                const std::string& size, int frames = 420)
 {
-    const GameRun run = runGame("play " + sourceFile(level) + " --shot " + shot + " --frames 420 --size " + size, data);
+    const GameRun run = runGame("play " + sourceFile(level) + " --shot " + shot + " --frames " +
+                                    std::to_string(frames) + " --size " + size,
+                                data);
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const auto [width, height, panels, keep] = lastLayout(run);
     const auto feedback = findBox(panels, "feedback");
@@ -457,6 +459,16 @@ TEST_F(TeachFlow, OnceTheNextBirdIsReadyTheFeedbackLeavesTheSlingshotAndThePigsI
     expectFeedbackLeavesInView(data(), "levels/5-1-titan.json", "5,30", "1280x720");
 }
 
+TEST_F(TeachFlow, WhenTheCameraTurnsToTheStructureTheFeedbackLeavesItsPigInView)
+{
+    // 1-2's long shot, 280 frames in (the README's after-impact picture): the card took its spot at the first contact
+    // while the camera still followed the bird, at the bottom in the middle; the camera then framed the struck frame
+    // and its pig, which came to sit under the card. Now a card that comes to cover the slingshot, the bird or a pig
+    // during the shot moves once to a spot clear of them.
+    std::ofstream(data() / "settings.json") << R"({"format": 1, "text_scale": 1.0, "teaching_overlay": false})";
+    expectFeedbackLeavesInView(data(), "levels/1-2-the-long-shot.json", "37.4,22.5", "1280x720", 280);
+}
+
 TEST_F(TeachFlow, WhenNoSpotIsClearOfTheWorldTheFeedbackStillLeavesTheSlingshotInView)
 {
     // 1-1 and 6-4 in a wide, low window (1280x400) at 150 % text, seven seconds into a run with the reference shot:
@@ -466,6 +478,43 @@ TEST_F(TeachFlow, WhenNoSpotIsClearOfTheWorldTheFeedbackStillLeavesTheSlingshotI
     std::ofstream(data() / "settings.json") << R"({"format": 1, "text_scale": 1.5, "teaching_overlay": true})";
     expectFeedbackLeavesInView(data(), "levels/1-1-first-flight.json", "30,18", "1280x400");
     expectFeedbackLeavesInView(data(), "levels/6-4-powder-kegs.json", "22,22", "1280x400");
+}
+
+TEST_F(TeachFlow, AtLargeTextTheTeachingPanelsShrinkRatherThanCoverTheSlingshotTheBirdOrAPig)
+{
+    // 1-1 at 150 % text in 1280x720 with the overlay on: the world has little room under the columns. In flight the
+    // Why panel covered the slingshot, and after the first contact the impact panel covered the struck frame's pig.
+    // Now a column's panel that would cover the slingshot, the flying bird or a live pig takes its one-line summary
+    // (until the next aim, so that it does not flick as the camera moves), and no panel covers them.
+    std::ofstream(data() / "settings.json") << R"({"format": 1, "text_scale": 1.5, "teaching_overlay": true})";
+    const auto summaryShown = [](const std::vector<PanelBox>& panels, const std::string& name)
+    {
+        const auto box = findBox(panels, name);
+        return box != panels.end() && box->h < 80.0; // one line of 20 px text and its padding
+    };
+    for (const int frames : {60, 200})
+    {
+        const GameRun run = runGame("play " + sourceFile("levels/1-1-first-flight.json") +
+                                        " --shot 30,18 --size 1280x720 --frames " + std::to_string(frames),
+                                    data());
+        ASSERT_EQ(run.exitCode, 0) << run.err;
+        const auto [width, height, panels, keep] = lastLayout(run);
+        const std::string what = "1-1 after " + std::to_string(frames) + " frames";
+        expectApartAndInside(panels, width, height, what);
+        ASSERT_FALSE(keep.empty()) << what;
+        for (const PanelBox& thing : keep)
+            for (const PanelBox& panel : panels)
+            {
+                const bool apart = panel.x + panel.w <= thing.x || thing.x + thing.w <= panel.x ||
+                                   panel.y + panel.h <= thing.y || thing.y + thing.h <= panel.y;
+                EXPECT_TRUE(apart) << what << ": the " << panel.name << " panel covers the " << thing.name;
+            }
+        EXPECT_TRUE(summaryShown(panels, "why")) << what;
+        if (frames == 200)
+        {
+            EXPECT_TRUE(summaryShown(panels, "first impact")) << what;
+        }
+    }
 }
 
 TEST_F(TeachFlow, AtLargeTextThePanelsAfterAShotNeverOverlapAndTheFeedbackShrinksToOneLine)

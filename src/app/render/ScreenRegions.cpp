@@ -10,11 +10,40 @@ namespace
 std::vector<ScreenRegion>* g_sink = nullptr;
 std::vector<ScreenRegion>* g_keepVisibleSink = nullptr;
 std::vector<ScreenRegion> g_frame;
+std::vector<sf::FloatRect> g_keepInView;
+std::vector<std::string> g_shrunk;
 } // namespace
 
 void beginScreenLayout()
 {
     g_frame.clear();
+    g_keepInView.clear();
+}
+
+void setKeepInView(std::vector<sf::FloatRect> rects)
+{
+    g_keepInView = std::move(rects);
+}
+
+const std::vector<sf::FloatRect>& keepInView()
+{
+    return g_keepInView;
+}
+
+bool panelShrunk(std::string_view name)
+{
+    return std::find(g_shrunk.begin(), g_shrunk.end(), name) != g_shrunk.end();
+}
+
+void markPanelShrunk(std::string_view name)
+{
+    if (!panelShrunk(name))
+        g_shrunk.emplace_back(name);
+}
+
+void forgetShrunkPanels()
+{
+    g_shrunk.clear();
 }
 
 const std::vector<ScreenRegion>& screenLayout()

@@ -29,7 +29,20 @@ void setKeepVisibleSink(std::vector<ScreenRegion>* sink);
 std::vector<ScreenRegion>* keepVisibleSink();
 
 /// Starts a frame's layout: the panels recorded from now on are what later panels of the frame keep clear of.
+/// What must stay in view (setKeepInView) is cleared with it.
 void beginScreenLayout();
+
+/// What the large panels drawn from now on in this frame must leave in view (window pixels: the slingshot, the flying
+/// bird, live pigs); a panel with no room clear of them shrinks to its summary (teach/TeachDraw's fullPanelFits).
+void setKeepInView(std::vector<sf::FloatRect> rects);
+const std::vector<sf::FloatRect>& keepInView();
+
+/// The panels that shrank to their summary because they would have covered what must stay in view: they stay
+/// summaries until forgetShrunkPanels() (the next aim), so that a panel does not flick between its two forms as the
+/// camera and the bird move under it.
+bool panelShrunk(std::string_view name);
+void markPanelShrunk(std::string_view name);
+void forgetShrunkPanels();
 
 /// The panels drawn so far in this frame's layout.
 const std::vector<ScreenRegion>& screenLayout();

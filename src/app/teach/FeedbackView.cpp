@@ -25,7 +25,7 @@ void FeedbackView::reset()
 void FeedbackView::update(const GameSession& session, const std::optional<AimReadout>& aim)
 {
     const std::vector<ShotRecord>& shots = session.shots();
-    m_shotOver = session.phase() == Phase::Aiming;
+    m_shotOver = session.phase() != Phase::Flying;
     if (shots.size() != m_shotsSeen)
     {
         // A new shot (or a restart): the last shot's words go until this one has something to say.
@@ -53,6 +53,7 @@ void FeedbackView::update(const GameSession& session, const std::optional<AimRea
     {
         m_sentences = shotFeedback(session.level(), session.catalog(), shot, session.world().dt());
         m_spot.reset();
+        m_movedDuringShot = false;
     }
     catch (const std::exception&)
     {
@@ -83,7 +84,8 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
     // Candidates in order of preference: above the hint in the middle, then its left and right, then up in the sky
     // under the panels already drawn (middle, left, right). The first that covers neither a panel nor the
     // structure wins; otherwise, among those clear of every panel, the one covering least of what must stay in
-    // view (the slingshot, the flying bird, the pigs), then least of the structure.
+    // view (the slingshot, the flying bird, the pigs), then least of the structure; where even that covers some of
+    // what must stay in view, the first sentence on one line if it covers less.
     const auto candidatesFor = [&](const std::vector<std::string>& lines)
     {
         float width = 0.0f;
@@ -104,66 +106,96 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
         return rect.left >= 0.0f && rect.top >= 0.0f && rect.left + rect.width <= windowWidth &&
                rect.top + rect.height <= windowHeight && coveredArea(rect, panels) <= 0.0f;
     };
+    const auto firstClearOf = [&](const std::vector<sf::FloatRect>& candidates,
+                                  std::span<const sf::FloatRect> boxes) -> std::optional<std::size_t>
+    {
+        for (std::size_t i = 0; i < candidates.size(); ++i)
+            if (fits(candidates[i]) && coveredArea(candidates[i], boxes) <= 0.0f)
+                return i;
+        return std::nullopt;
+    };
+    const auto draw = [&](std::size_t spot, bool collapsed)
+    {
+        m_spot = spot;
+        m_collapsed = collapsed;
+        const std::vector<std::string>& lines = collapsed ? summary : full;
+        drawCard(target, font, candidatesFor(lines)[spot], lines, rowSize, scale);
+    };
     // Chosen once per shot's sentences: the card stays put while the structure collapses behind it, and moves only
-    // when a panel drawn before it (a label that appeared later) now takes its spot, or after the shot (below).
+    // when a panel drawn before it (a label that appeared later) now takes its spot, or as below.
     if (m_spot)
     {
-        const std::vector<std::string>& lines = m_collapsed ? summary : full;
-        const std::vector<sf::FloatRect> candidates = candidatesFor(lines);
+        const std::vector<sf::FloatRect> candidates = candidatesFor(m_collapsed ? summary : full);
         if (*m_spot < candidates.size() && fits(candidates[*m_spot]))
         {
-            // Once the next bird is ready the camera returns to the slingshot: a card that now covers the slingshot,
-            // a pig or a block takes the first spot that covers none, if there is one; one that covers the
-            // slingshot or a pig, else the first spot that covers neither of those.
-            if (m_shotOver && coveredArea(candidates[*m_spot], avoid) > 0.0f)
+            // Once the next bird is ready (or the level is over) the camera returns to the slingshot: a card that
+            // now covers the slingshot, a pig or a block takes the first spot that covers none, if there is one;
+            // one that covers the slingshot or a pig, else the first spot that covers neither of those, else its
+            // one-line summary where that covers neither. During the shot the camera turns from the bird to the
+            // struck structure after the card took its spot: a card that now covers the slingshot, the bird or a
+            // pig moves the same way, once.
+            const bool coversKeep = coveredArea(candidates[*m_spot], keep) > 0.0f;
+            if ((m_shotOver && coveredArea(candidates[*m_spot], avoid) > 0.0f) ||
+                (!m_shotOver && !m_movedDuringShot && coversKeep))
             {
-                const auto firstClearOf = [&](std::span<const sf::FloatRect> boxes) -> std::optional<std::size_t>
-                {
-                    for (std::size_t i = 0; i < candidates.size(); ++i)
-                        if (fits(candidates[i]) && coveredArea(candidates[i], boxes) <= 0.0f)
-                            return i;
-                    return std::nullopt;
-                };
+                const std::size_t spot = *m_spot;
+                const bool collapsed = m_collapsed;
                 // `avoid` holds the slingshot, the bird and (larger) the pigs too: clear of it is clear of `keep`.
-                if (const std::optional<std::size_t> clear = firstClearOf(avoid))
+                if (const std::optional<std::size_t> clear = firstClearOf(candidates, avoid))
                     m_spot = clear;
-                else if (coveredArea(candidates[*m_spot], keep) > 0.0f)
-                    if (const std::optional<std::size_t> clearOfKeep = firstClearOf(keep))
+                else if (coversKeep)
+                {
+                    if (const std::optional<std::size_t> clearOfKeep = firstClearOf(candidates, keep))
                         m_spot = clearOfKeep;
+                    else if (!m_collapsed && !summary.front().empty())
+                        if (const std::optional<std::size_t> line = firstClearOf(candidatesFor(summary), keep))
+                        {
+                            m_spot = line;
+                            m_collapsed = true;
+                        }
+                }
+                if (!m_shotOver && (*m_spot != spot || m_collapsed != collapsed))
+                    m_movedDuringShot = true;
             }
-            drawCard(target, font, candidates[*m_spot], lines, rowSize, scale);
+            draw(*m_spot, m_collapsed);
             return;
         }
     }
     m_spot.reset();
-    for (const bool collapsed : {false, true})
+    // The first spot: the one covering least of what must stay in view, then of the structure (the first that covers
+    // neither wins); the whole card, or its first sentence on one line where that covers less of what must stay in
+    // view (or the whole card has no room clear of the panels).
+    struct Choice
     {
-        const std::vector<std::string>& lines = collapsed ? summary : full;
+        std::size_t spot = 0;
+        std::pair<float, float> covered; // of `keep`, then of `avoid`
+    };
+    const auto leastCovering = [&](const std::vector<std::string>& lines) -> std::optional<Choice>
+    {
         if (lines.front().empty())
-            continue;
+            return std::nullopt;
         const std::vector<sf::FloatRect> candidates = candidatesFor(lines);
-        std::optional<std::pair<float, float>> least; // covered of `keep`, then of `avoid`
+        std::optional<Choice> least;
         for (std::size_t i = 0; i < candidates.size(); ++i)
         {
             if (!fits(candidates[i]))
                 continue;
             const std::pair<float, float> covered{coveredArea(candidates[i], keep), coveredArea(candidates[i], avoid)};
-            if (!least || covered < *least)
-            {
-                least = covered;
-                m_spot = i;
-            }
+            if (!least || covered < least->covered)
+                least = Choice{i, covered};
             if (covered.second <= 0.0f)
                 break;
         }
-        if (m_spot)
-        {
-            m_collapsed = collapsed;
-            drawCard(target, font, candidates[*m_spot], lines, rowSize, scale);
-            return;
-        }
-    }
-    // Not even one line has room clear of the panels: left out this frame rather than drawn over them.
+        return least;
+    };
+    const std::optional<Choice> whole = leastCovering(full);
+    const std::optional<Choice> line =
+        !whole || whole->covered.first > 0.0f ? leastCovering(summary) : std::optional<Choice>{};
+    if (line && (!whole || line->covered.first < whole->covered.first))
+        draw(line->spot, true);
+    else if (whole)
+        draw(whole->spot, false);
+    // Otherwise not even one line has room clear of the panels: left out this frame rather than drawn over them.
 }
 
 void FeedbackView::drawCard(sf::RenderTarget& target, const sf::Font& font, const sf::FloatRect& rect,

@@ -41,7 +41,11 @@ private:
 
     mutable std::optional<std::size_t> m_spot; ///< the candidate spot chosen for the current sentences
     mutable bool m_collapsed = false;          ///< that spot holds the one-line summary, not the whole card
-    bool m_shotOver = false; ///< the next bird is ready: the card may leave a spot the world now fills
+    /// The next bird is ready, or the level is over: the card may leave a spot the world now fills.
+    bool m_shotOver = false;
+    /// The card left a spot during the shot because the camera had moved the slingshot, the bird or a pig under it:
+    /// it does so once a shot, so that it never jumps to and fro while a structure collapses.
+    mutable bool m_movedDuringShot = false;
     std::size_t m_shotsSeen = 0;
     bool m_done = false;
     std::optional<std::pair<double, double>> m_firstAim; ///< angle and speed when the next bird became ready

@@ -116,7 +116,7 @@ sf::FloatRect drawForceLegend(sf::RenderTarget& target, const sf::Font& font, sf
         rows.push_back({"no air: gravity is the only force", "", sf::Color::Transparent, false});
     const TextPanel panel("Forces on the bird (" + formatFixed(bird.massKg, 1) + " kg)", std::move(rows));
     const sf::Vector2f size = panel.measure(font, titleSize, rowSize, scale);
-    if (!panelHasRoom(target, {{topRight.x - size.x, topRight.y}, size}))
+    if (!fullPanelFits(target, {{topRight.x - size.x, topRight.y}, size}, "forces"))
     {
         std::string summary = "Forces: v " + withUnit(std::hypot(bird.state[2], bird.state[3]), 1, "m/s") + ", a " +
                               withUnit(length(bird.accelerationMps2), 2, "m/s\u00B2") + ", m g " +
@@ -163,7 +163,7 @@ sf::FloatRect drawEnergyBars(sf::RenderTarget& target, const sf::Font& font, sf:
                                   2.0f * pad + measureText(font, utf8(balance), rowSize).x});
     const float height = 2.0f * pad + titleHeight + rowHeight * 5.2f;
     const sf::FloatRect rect(topRight.x - width, topRight.y, width, height);
-    if (!panelHasRoom(target, rect))
+    if (!fullPanelFits(target, rect, "energy"))
         return drawPanelSummary(target, font, topRight, true,
                                 std::string(atContact ? "Energy at contact: " : "Energy: ") + "kinetic " +
                                     formatFixed(energy.kineticJ, 0) + " J + potential " +

@@ -84,7 +84,7 @@ sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf
     const TextPanel panel("First impact: t = " + withUnit(impact.tS, 3, "s"), std::move(rows));
     const sf::Vector2f size = panel.measure(font, titleSize, rowSize, scale);
     const sf::Vector2f at(std::max(0.0f, topRight.x - size.x), topRight.y);
-    if (!panelHasRoom(target, {at, size}))
+    if (!fullPanelFits(target, {at, size}, "first impact"))
         return drawPanelSummary(target, font, topRight, true,
                                 "First impact: bird " + withUnit(speed(impact.birdBefore), 1, "") + "\u2192 " +
                                     withUnit(speed(impact.birdAfter), 1, "m/s") + ", " + damage + " taken",

@@ -58,6 +58,20 @@ bool panelHasRoom(const sf::RenderTarget& target, const sf::FloatRect& rect)
     return true;
 }
 
+bool fullPanelFits(const sf::RenderTarget& target, const sf::FloatRect& rect, std::string_view name)
+{
+    if (panelShrunk(name) || !panelHasRoom(target, rect))
+        return false;
+    sf::FloatRect overlap;
+    for (const sf::FloatRect& thing : keepInView())
+        if (rect.intersects(thing, overlap) && overlap.width > 0.0f && overlap.height > 0.0f)
+        {
+            markPanelShrunk(name);
+            return false;
+        }
+    return true;
+}
+
 sf::FloatRect drawPanelSummary(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f corner, bool fromRight,
                                const std::string& text, unsigned rowSize, float scale, std::string_view name)
 {

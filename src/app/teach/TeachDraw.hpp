@@ -44,6 +44,12 @@ void drawTeachPanel(sf::RenderTarget& target, sf::FloatRect rect, float scale, s
 /// off the window.
 bool panelHasRoom(const sf::RenderTarget& target, const sf::FloatRect& rect);
 
+/// Whether the whole of a column's panel called `name` may be drawn at `rect`: it has room (panelHasRoom) and covers
+/// nothing that must stay in view this frame (ScreenRegions' keepInView: the slingshot, the flying bird, live pigs).
+/// One that would cover them is marked shrunk and takes its summary until the next aim (forgetShrunkPanels), so that it
+/// does not flick between its two forms while the camera and the bird move under it.
+bool fullPanelFits(const sf::RenderTarget& target, const sf::FloatRect& rect, std::string_view name);
+
 /// A panel's one-line summary, for where the whole panel has no room: `text` on one line (cut at a word with an
 /// ellipsis to fit the window), its top corner at `corner` (the top-right one when `fromRight`). Drawn only where it
 /// has room (panelHasRoom); returns its bounds, empty when left out too. `name` is its name in ScreenRegions.

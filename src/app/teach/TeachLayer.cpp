@@ -8,6 +8,7 @@
 #include "teach/BandGraph.hpp"
 #include "teach/ForceArrows.hpp"
 #include "teach/ImpactPanel.hpp"
+#include "teach/TeachDraw.hpp"
 #include "teach/WhyPanel.hpp"
 
 #include <abalike/save/AtomicWrite.hpp>
@@ -152,12 +153,17 @@ void TeachLayer::onLevelStart(PlayView& view)
     m_paths.onLevelStart();
     m_feedback.reset();
     m_quiz.reset();
+    forgetShrunkPanels();
 }
 
 void TeachLayer::frameUpdate(PlayView& view, double frameS)
 {
     (void)frameS;
     const GameSession& session = view.session();
+    const bool aiming = session.phase() == Phase::Aiming;
+    if (aiming && !m_aimingBefore)
+        forgetShrunkPanels();
+    m_aimingBefore = aiming;
     m_feedback.update(session, view.aim());
     m_quiz.update(session, view.aim());
     m_comparison.update(session, view.preview());
@@ -203,6 +209,11 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     const float gap = 6.0f * scale;
     const sf::Vector2f window(target.getSize());
     const bool aiming = session.phase() == Phase::Aiming;
+    // The columns' large panels leave the slingshot, the flying bird and live pigs in view, or shrink to a line.
+    const std::vector<sf::FloatRect> keep = overlayOn() || !m_feedback.sentences().empty()
+                                                ? keepVisibleRects(session, view.camera())
+                                                : std::vector<sf::FloatRect>{};
+    setKeepInView(keep);
 
     // Right column: the flying bird's forces and energy, or after its first contact the impact; while aiming, the
     // chart and the comparison.
@@ -255,10 +266,11 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     if (aiming && overlayOn())
         if (const std::optional<AimReadout> aim = view.aim())
         {
-            // Its own size is known: it goes where all of it is clear, or (no room left) is left out.
+            // Its own size is known: it goes where all of it is clear, or (no room left, or it would cover the
+            // slingshot or a pig) is left out.
             const sf::Vector2f size = BandGraph::measure(*font, titleSize, rowSize, scale);
             const float top = firstFreeTop(right.x - size.x, size.x, right.y, size.y, gap);
-            if (top + size.y <= window.y)
+            if (fullPanelFits(target, {{right.x - size.x, top}, size}, "aim graph"))
                 below(BandGraph::draw(target, *font, {right.x, top}, *aim, titleSize, rowSize, scale));
         }
     if (m_showChart && aiming)
@@ -301,8 +313,8 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     // Feedback on the last shot, above the level's hint and the app's notices at the bottom.
     if (!m_walkthrough.active() && !m_feedback.sentences().empty())
         m_feedback.draw(target, *font, window.y - 96.0f * scale, 160.0f * scale,
-                        structureScreenBoxes(session, view.camera()), keepVisibleRects(session, view.camera()),
-                        std::min(window.x - 40.0f, 900.0f * scale), m_app.textSize(16.0f), scale);
+                        structureScreenBoxes(session, view.camera()), keep, std::min(window.x - 40.0f, 900.0f * scale),
+                        m_app.textSize(16.0f), scale);
 
     // The measuring tools last: what the player points at reads over everything.
     if (overlayOn() || m_guide.active())

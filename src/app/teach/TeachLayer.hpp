@@ -46,6 +46,8 @@ private:
     PredictQuizView m_quiz;
     GuideRunner m_guide;
     std::string m_guideLevel; ///< the level the guide was started for: a restart keeps its progress
+    /// The last frame's phase was aiming: the panels that shrank during a shot grow back on the next aim.
+    bool m_aimingBefore = true;
     bool m_showChart = false;
     bool m_components = false; ///< vx and vy arrows beside v (key V)
 };

@@ -58,7 +58,7 @@ sf::FloatRect drawWhyPanel(sf::RenderTarget& target, const sf::Font& font, sf::V
                                : "108 m/s (smaller steps), or by rounding (\u00B5m)",
                     ""});
     const TextPanel panel("Why preview and world can differ", std::move(rows));
-    if (!panelHasRoom(target, {topLeft, panel.measure(font, titleSize, rowSize, scale)}))
+    if (!fullPanelFits(target, {topLeft, panel.measure(font, titleSize, rowSize, scale)}, "why"))
     {
         const ShotRecord* last = session.shots().empty() ? nullptr : &session.shots().back();
         return drawPanelSummary(target, font, topLeft, false,
