@@ -366,6 +366,12 @@ Layout lastLayout(const GameRun& run)
     return layout;
 }
 
+/// Whether two boxes share no area (boxes that only touch are apart).
+bool apart(const PanelBox& a, const PanelBox& b)
+{
+    return a.x + a.w <= b.x || b.x + b.w <= a.x || a.y + a.h <= b.y || b.y + b.h <= a.y;
+}
+
 void expectApartAndInside(const std::vector<PanelBox>& boxes, double width, double height, const std::string& what)
 {
     for (std::size_t i = 0; i < boxes.size(); ++i)
@@ -378,8 +384,7 @@ void expectApartAndInside(const std::vector<PanelBox>& boxes, double width, doub
         for (std::size_t j = i + 1; j < boxes.size(); ++j)
         {
             const PanelBox& b = boxes[j];
-            const bool apart = a.x + a.w <= b.x || b.x + b.w <= a.x || a.y + a.h <= b.y || b.y + b.h <= a.y;
-            EXPECT_TRUE(apart) << what << ": " << a.name << " overlaps " << b.name;
+            EXPECT_TRUE(apart(a, b)) << what << ": " << a.name << " overlaps " << b.name;
         }
     }
 }
@@ -442,9 +447,7 @@ void expectFeedbackLeavesInView(const std::filesystem::path& data, const std::st
     ASSERT_FALSE(keep.empty()) << level;
     for (const PanelBox& thing : keep)
     {
-        const bool apart = feedback->x + feedback->w <= thing.x || thing.x + thing.w <= feedback->x ||
-                           feedback->y + feedback->h <= thing.y || thing.y + thing.h <= feedback->y;
-        EXPECT_TRUE(apart) << level << ": the feedback covers the " << thing.name;
+        EXPECT_TRUE(apart(*feedback, thing)) << level << ": the feedback covers the " << thing.name;
     }
 }
 
@@ -504,11 +507,8 @@ TEST_F(TeachFlow, AtLargeTextTheTeachingPanelsShrinkRatherThanCoverTheSlingshotT
         ASSERT_FALSE(keep.empty()) << what;
         for (const PanelBox& thing : keep)
             for (const PanelBox& panel : panels)
-            {
-                const bool apart = panel.x + panel.w <= thing.x || thing.x + thing.w <= panel.x ||
-                                   panel.y + panel.h <= thing.y || thing.y + thing.h <= panel.y;
-                EXPECT_TRUE(apart) << what << ": the " << panel.name << " panel covers the " << thing.name;
-            }
+                EXPECT_TRUE(apart(panel, thing))
+                    << what << ": the " << panel.name << " panel covers the " << thing.name;
         EXPECT_TRUE(summaryShown(panels, "why")) << what;
         if (frames == 200)
         {

@@ -155,7 +155,8 @@ def castle(s, x, y, keep_storeys=3, material="stone", planks="wood", pigs=("medi
 
 def keep(s, x, y, storeys, bay=2.0, height=3.0, post="stone", plank="wood", pigs=()):
     """Storeys of three posts under one plank: two bays side by side; storey i's pigs are pigs[2i] (left bay) and
-    pigs[2i + 1] (right bay), None for an empty bay. Returns the top."""
+    pigs[2i + 1] (right bay), None for an empty bay. Returns the top. (double_frame's two planks end short of its
+    outer posts, so a storey cannot stand on it.)"""
     for i in range(storeys):
         for dx in (-bay, 0, bay):
             s.block(post, x + dx, y + height / 2, POST, height)

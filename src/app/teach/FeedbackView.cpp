@@ -114,12 +114,11 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
                 return i;
         return std::nullopt;
     };
-    const auto draw = [&](std::size_t spot, bool collapsed)
+    const auto draw = [&](const sf::FloatRect& rect, std::size_t spot, bool collapsed)
     {
         m_spot = spot;
         m_collapsed = collapsed;
-        const std::vector<std::string>& lines = collapsed ? summary : full;
-        drawCard(target, font, candidatesFor(lines)[spot], lines, rowSize, scale);
+        drawCard(target, font, rect, collapsed ? summary : full, rowSize, scale);
     };
     // Chosen once per shot's sentences: the card stays put while the structure collapses behind it, and moves only
     // when a panel drawn before it (a label that appeared later) now takes its spot, or as below.
@@ -139,7 +138,6 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
                 (!m_shotOver && !m_movedDuringShot && coversKeep))
             {
                 const std::size_t spot = *m_spot;
-                const bool collapsed = m_collapsed;
                 // `avoid` holds the slingshot, the bird and (larger) the pigs too: clear of it is clear of `keep`.
                 if (const std::optional<std::size_t> clear = firstClearOf(candidates, avoid))
                     m_spot = clear;
@@ -148,16 +146,21 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
                     if (const std::optional<std::size_t> clearOfKeep = firstClearOf(candidates, keep))
                         m_spot = clearOfKeep;
                     else if (!m_collapsed && !summary.front().empty())
-                        if (const std::optional<std::size_t> line = firstClearOf(candidatesFor(summary), keep))
+                    {
+                        const std::vector<sf::FloatRect> oneLine = candidatesFor(summary);
+                        if (const std::optional<std::size_t> line = firstClearOf(oneLine, keep))
                         {
-                            m_spot = line;
-                            m_collapsed = true;
+                            draw(oneLine[*line], *line, true);
+                            if (!m_shotOver)
+                                m_movedDuringShot = true;
+                            return;
                         }
+                    }
                 }
-                if (!m_shotOver && (*m_spot != spot || m_collapsed != collapsed))
+                if (!m_shotOver && *m_spot != spot)
                     m_movedDuringShot = true;
             }
-            draw(*m_spot, m_collapsed);
+            draw(candidates[*m_spot], *m_spot, m_collapsed);
             return;
         }
     }
@@ -168,6 +171,7 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
     struct Choice
     {
         std::size_t spot = 0;
+        sf::FloatRect rect;
         std::pair<float, float> covered; // of `keep`, then of `avoid`
     };
     const auto leastCovering = [&](const std::vector<std::string>& lines) -> std::optional<Choice>
@@ -182,7 +186,7 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
                 continue;
             const std::pair<float, float> covered{coveredArea(candidates[i], keep), coveredArea(candidates[i], avoid)};
             if (!least || covered < least->covered)
-                least = Choice{i, covered};
+                least = Choice{i, candidates[i], covered};
             if (covered.second <= 0.0f)
                 break;
         }
@@ -192,9 +196,9 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
     const std::optional<Choice> line =
         !whole || whole->covered.first > 0.0f ? leastCovering(summary) : std::optional<Choice>{};
     if (line && (!whole || line->covered.first < whole->covered.first))
-        draw(line->spot, true);
+        draw(line->rect, line->spot, true);
     else if (whole)
-        draw(whole->spot, false);
+        draw(whole->rect, whole->spot, false);
     // Otherwise not even one line has room clear of the panels: left out this frame rather than drawn over them.
 }
 
