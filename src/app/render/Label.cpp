@@ -1,6 +1,7 @@
 #include "render/Label.hpp"
 
 #include "render/FontMetrics.hpp"
+#include "render/ScreenRegions.hpp"
 
 #include <SFML/Graphics/Vertex.hpp>
 #include <algorithm>
@@ -81,8 +82,10 @@ void appendGlyphQuad(std::vector<sf::Vertex>& vertices, sf::Vector2f pen, const 
 
 sf::Vector2f measureText(const sf::Font& font, const sf::String& text, unsigned size)
 {
-    const float right = layoutGlyphs(font, text, size, [](const sf::Glyph&, sf::Vector2f) {});
-    return {right, FontMetrics::of(font).lineSpacing(size)};
+    FontMetrics& metrics = FontMetrics::of(font);
+    const float right = metrics.width(
+        text, size, [&] { return layoutGlyphs(font, text, size, [](const sf::Glyph&, sf::Vector2f) {}); });
+    return {right, metrics.lineSpacing(size)};
 }
 
 std::vector<std::string> wrapText(const sf::Font& font, std::string_view text, unsigned size, float maxWidth)
@@ -172,6 +175,8 @@ sf::FloatRect drawLabel(sf::RenderTarget& target, const sf::Font& font, const sf
         position.x -= width;
     // Whole pixels keep glyphs sharp.
     position = {std::round(position.x), std::round(position.y)};
+    if (!drawingPixels())
+        return {position, {width, FontMetrics::of(font).lineSpacing(size)}};
 
     // The shadow and the text in one batch and one draw call, every shadow first (below every glyph).
     static std::vector<sf::Vertex> vertices;

@@ -73,14 +73,6 @@ std::vector<ScreenRegion> keepVisibleBoxes(const GameSession& session, const Cam
     return boxes;
 }
 
-std::vector<sf::FloatRect> keepVisibleRects(const GameSession& session, const Camera& camera)
-{
-    std::vector<sf::FloatRect> boxes;
-    forEachKeepVisible(session, camera, true,
-                       [&boxes](const char*, const sf::FloatRect& rect) { boxes.push_back(rect); });
-    return boxes;
-}
-
 float coveredArea(const sf::FloatRect& rect, std::span<const sf::FloatRect> boxes)
 {
     float area = 0.0f;

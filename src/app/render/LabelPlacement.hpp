@@ -20,8 +20,6 @@ std::vector<sf::FloatRect> structureScreenBoxes(const GameSession& session, cons
 /// What the panels over the world should leave visible, in window pixels: the slingshot with the bird it holds
 /// ("slingshot"), the bird in flight ("bird") and every live pig ("pig").
 std::vector<ScreenRegion> keepVisibleBoxes(const GameSession& session, const Camera& camera);
-/// The same boxes without their names, for placing a panel clear of them.
-std::vector<sf::FloatRect> keepVisibleRects(const GameSession& session, const Camera& camera);
 
 /// How much of a rectangle the boxes cover (pixels², overlaps counted once per box).
 float coveredArea(const sf::FloatRect& rect, std::span<const sf::FloatRect> boxes);

@@ -1,5 +1,7 @@
 #include "render/Mesh.hpp"
 
+#include "render/ScreenRegions.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -188,7 +190,7 @@ void Mesh::addStar(sf::Vector2f centre, float outerRadius, float innerRadius, sf
 
 void Mesh::draw(sf::RenderTarget& target, const sf::Transform& transform, const sf::BlendMode& blend) const
 {
-    if (m_vertices.empty())
+    if (m_vertices.empty() || !drawingPixels())
         return;
     sf::RenderStates states;
     states.transform = transform;

@@ -7,12 +7,23 @@ namespace abalike::app
 
 namespace
 {
+bool g_drawingPixels = true;
 std::vector<ScreenRegion>* g_sink = nullptr;
 std::vector<ScreenRegion>* g_keepVisibleSink = nullptr;
 std::vector<ScreenRegion> g_frame;
-std::vector<sf::FloatRect> g_keepInView;
-std::vector<std::string> g_shrunk;
+std::vector<ScreenRegion> g_keepInView;
+std::vector<std::pair<std::string, std::size_t>> g_shrunk; ///< name, rows kept
 } // namespace
+
+void setDrawingPixels(bool drawing)
+{
+    g_drawingPixels = drawing;
+}
+
+bool drawingPixels()
+{
+    return g_drawingPixels;
+}
 
 void beginScreenLayout()
 {
@@ -20,25 +31,38 @@ void beginScreenLayout()
     g_keepInView.clear();
 }
 
-void setKeepInView(std::vector<sf::FloatRect> rects)
+void setKeepInView(std::vector<ScreenRegion> things)
 {
-    g_keepInView = std::move(rects);
+    g_keepInView = std::move(things);
 }
 
-const std::vector<sf::FloatRect>& keepInView()
+const std::vector<ScreenRegion>& keepInView()
 {
     return g_keepInView;
 }
 
-bool panelShrunk(std::string_view name)
+std::optional<std::size_t> shrunkRows(std::string_view name)
 {
-    return std::find(g_shrunk.begin(), g_shrunk.end(), name) != g_shrunk.end();
+    const auto found =
+        std::find_if(g_shrunk.begin(), g_shrunk.end(), [name](const auto& s) { return s.first == name; });
+    if (found == g_shrunk.end())
+        return std::nullopt;
+    return found->second;
 }
 
-void markPanelShrunk(std::string_view name)
+bool panelShrunk(std::string_view name)
 {
-    if (!panelShrunk(name))
-        g_shrunk.emplace_back(name);
+    return shrunkRows(name).has_value();
+}
+
+void markPanelShrunk(std::string_view name, std::size_t rowsKept)
+{
+    const auto found =
+        std::find_if(g_shrunk.begin(), g_shrunk.end(), [name](const auto& s) { return s.first == name; });
+    if (found == g_shrunk.end())
+        g_shrunk.emplace_back(name, rowsKept);
+    else
+        found->second = std::min(found->second, rowsKept);
 }
 
 void forgetShrunkPanels()

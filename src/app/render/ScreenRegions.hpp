@@ -1,6 +1,7 @@
 #pragma once
 
 #include <SFML/Graphics/Rect.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,20 +29,28 @@ void recordScreenRegion(std::string_view name, const sf::FloatRect& rect);
 void setKeepVisibleSink(std::vector<ScreenRegion>* sink);
 std::vector<ScreenRegion>* keepVisibleSink();
 
+/// False while a frame is only laid out, not drawn (the layout tests, AppOptions::onLayout): every panel still finds
+/// its place and measures its text, but labels and meshes skip their draw calls and the world's picture is left out.
+void setDrawingPixels(bool drawing);
+bool drawingPixels();
+
 /// Starts a frame's layout: the panels recorded from now on are what later panels of the frame keep clear of.
 /// What must stay in view (setKeepInView) is cleared with it.
 void beginScreenLayout();
 
-/// What the large panels drawn from now on in this frame must leave in view (window pixels: the slingshot, the flying
-/// bird, live pigs); a panel with no room clear of them shrinks to its summary (teach/TeachDraw's fullPanelFits).
-void setKeepInView(std::vector<sf::FloatRect> rects);
-const std::vector<sf::FloatRect>& keepInView();
+/// What the large panels drawn from now on in this frame must leave in view (window pixels, named: the slingshot, the
+/// flying bird, live pigs); a panel with no room clear of them shrinks to its summary (teach/TeachDraw's
+/// fullPanelFits).
+void setKeepInView(std::vector<ScreenRegion> things);
+const std::vector<ScreenRegion>& keepInView();
 
 /// The panels that shrank to their summary because they would have covered what must stay in view: they stay
 /// summaries until forgetShrunkPanels() (the next aim), so that a panel does not flick between its two forms as the
-/// camera and the bird move under it.
+/// camera and the bird move under it. A panel that shrinks row by row (a lesson's step) keeps the rows it was left.
 bool panelShrunk(std::string_view name);
-void markPanelShrunk(std::string_view name);
+void markPanelShrunk(std::string_view name, std::size_t rowsKept = 0);
+/// The rows a shrunk panel kept; none when it has not shrunk since the last aim.
+std::optional<std::size_t> shrunkRows(std::string_view name);
 void forgetShrunkPanels();
 
 /// The panels drawn so far in this frame's layout.

@@ -12,6 +12,7 @@
 #include <abalike/level/SafeText.hpp>
 
 #include <SFML/Graphics/RectangleShape.hpp>
+#include <SFML/OpenGL.hpp>
 #include <SFML/System/Clock.hpp>
 #include <algorithm>
 #include <cmath>
@@ -48,7 +49,8 @@ constexpr std::size_t kMaxNotices = 4;
 
 App::App(AppOptions options, Campaign campaign, SaveStore store, std::unique_ptr<sf::Font> font)
     : m_options(std::move(options)), m_campaign(std::move(campaign)), m_font(std::move(font)),
-      m_script(m_options.script), m_store(std::move(store))
+      m_window(m_options.window != nullptr ? *m_options.window : m_ownWindow), m_script(m_options.script),
+      m_store(std::move(store))
 {
     // Scripted runs read the player's files (tests point ABALIKE_DATA_DIR at a fixture) but never write them.
     m_settings = m_store->settings();
@@ -67,6 +69,12 @@ App::App(AppOptions options, Campaign campaign, SaveStore store, std::unique_ptr
 
 void App::openWindow()
 {
+    if (m_options.window != nullptr)
+    {
+        // A lent window: as it is, with the view of its whole size.
+        m_window.setView(m_window.getDefaultView());
+        return;
+    }
     // --size wins over the saved size, and a size asked for on the command line is a window, not full screen.
     const bool sizeGiven = m_options.width.has_value();
     const unsigned width = sizeGiven ? *m_options.width : m_settings.windowWidth;
@@ -84,7 +92,7 @@ void App::openWindow()
 void App::reopenWindow()
 {
     // A --size on the command line wins over the saved size and full screen: nothing to change then.
-    if (!m_window.isOpen() || m_options.width.has_value())
+    if (!m_window.isOpen() || m_options.width.has_value() || m_options.window != nullptr)
         return;
     openWindow();
     const sf::Vector2u size = m_window.getSize();
@@ -162,7 +170,12 @@ int App::run()
         m_frameTimes.updateS += lap() - m_frameTimes.previewS;
 
         const bool lastFrame = offline && m_frame >= *m_options.frames;
-        if (!lastFrame)
+        if (m_options.onLayout)
+        {
+            if (!lastFrame && m_frame % std::max(1, m_options.layoutEvery) == 0)
+                layOutFrame();
+        }
+        else if (!lastFrame)
         {
             drawFrame(true);
             m_frameTimes.drawS += lap();
@@ -183,7 +196,13 @@ int App::run()
     }
 
     int exitCode = m_exitCode.value_or(0);
-    if (!m_options.screenshotPath.empty() || !m_options.tracePath.empty())
+    if (m_options.onLayout)
+    {
+        m_screens.finishBackgroundWork();
+        layOutFrame();
+    }
+    // A laid-out run has handed its last frame's panels over already.
+    if (!m_options.screenshotPath.empty() || (!m_options.tracePath.empty() && !m_options.onLayout))
     {
         // The last frame as the screens are after its changes: what the player would see next. The trace lists
         // its texts, so a scripted run can check what a screen says.
@@ -217,7 +236,8 @@ int App::run()
             exitCode = exitCode == 0 ? 2 : exitCode;
     }
     m_trace.write("exit", {{"code", exitCode}, {"screens", m_screens.names()}});
-    m_window.close();
+    if (m_options.window == nullptr)
+        m_window.close();
     return exitCode;
 }
 
@@ -331,6 +351,28 @@ void App::drawFrame(bool reuseCovered)
     else
         m_screens.draw(m_window);
     drawNotices();
+}
+
+void App::layOutFrame()
+{
+    FrameLayout layout;
+    layout.frame = m_frame;
+    layout.window = windowSize();
+    layout.screens = m_screens.names();
+    setScreenRegionSink(&layout.panels);
+    setKeepVisibleSink(&layout.keepVisible);
+    // Every draw call goes through, so each panel finds its place as in a shown frame, but the scissor box is empty:
+    // the rasterizer fills nothing.
+    (void)m_window.setActive(true);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, 0, 0);
+    setDrawingPixels(false);
+    drawFrame();
+    setDrawingPixels(true);
+    glDisable(GL_SCISSOR_TEST);
+    setScreenRegionSink(nullptr);
+    setKeepVisibleSink(nullptr);
+    m_options.onLayout(layout);
 }
 
 void App::drawNotices()

@@ -98,13 +98,16 @@ private:
     /// reuseCovered: screens under an overlay come from the stack's copy of them (ScreenStack::drawWithSnapshot);
     /// false draws every screen, as the last frame of a scripted run does to record its texts and panels.
     void drawFrame(bool reuseCovered = false);
+    /// Lays the frame out without drawing a pixel and hands its panels to AppOptions::onLayout.
+    void layOutFrame();
     void drawNotices();
     void takeStoreMessages();
 
     AppOptions m_options;
     Campaign m_campaign;
     std::unique_ptr<sf::Font> m_font;
-    sf::RenderWindow m_window;
+    sf::RenderWindow m_ownWindow;
+    sf::RenderWindow& m_window; ///< m_ownWindow, or the one AppOptions::window lends
     ScreenStack m_screens;
     InputState m_input;
     GamepadTranslator m_gamepad;

@@ -5,8 +5,10 @@
 #include <abalike/save/Settings.hpp>
 #include <abalike/script/InputScript.hpp>
 
+#include "screens/FrameLayout.hpp"
 #include "screens/FrameTimes.hpp"
 
+#include <SFML/Graphics/RenderWindow.hpp>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -39,6 +41,15 @@ struct AppOptions
     std::function<void(const FrameTimes&)> onFrameTimed;
     /// Called once with the seconds from opening the first screen (loading its level) to its first frame shown.
     std::function<void(double loadS)> onFirstFrame;
+
+    /// Layout tests: when set, frames are laid out but no pixel is drawn or shown, and every `layoutEvery`th frame
+    /// (and the last) is laid out and handed here. Laying a frame out without its pixels costs a fraction of drawing
+    /// it, so a test can walk every level at every text size and window.
+    std::function<void(const FrameLayout&)> onLayout;
+    int layoutEvery = 1;
+    /// Plays in this open window instead of opening one, and leaves it open (`--size` is then its size): the layout
+    /// walk keeps one window, and one OpenGL context, for each size it walks rather than start a new one per run.
+    sf::RenderWindow* window = nullptr;
 
     /// Opens this screen first instead of the title or a level (`abalike edit` opens the editor this way).
     std::function<std::unique_ptr<Screen>(App&)> firstScreen;

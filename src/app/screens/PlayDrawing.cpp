@@ -43,6 +43,30 @@ void drawPullLimit(sf::RenderTarget& target, const Camera& camera, const GameSes
     }
     mesh.draw(target);
 }
+
+/// The level as the player sees it: sky, terrain, bodies, slingshot, the shots' paths and the preview.
+void drawWorldPicture(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, OverlayRenderer& overlay,
+                      sf::Vector2f pullOffset, bool pulling, const ShotRecord* lastShot, float opacity)
+{
+    const GameSession& session = view.session();
+    const Camera& camera = view.camera();
+    world.drawBackground(target, camera, session);
+
+    // Earlier shots on this level stay as dimmed trails (unless the player turned flown paths off).
+    if (view.app().settings().showActualPath)
+        drawShotTrails(target, camera, view.trails(), view.app().uiScale());
+    if (lastShot != nullptr)
+        overlay.drawShotPaths(target, camera, *lastShot, opacity);
+    world.drawForeground(target, camera, session, pullOffset);
+    if (view.aim())
+        drawPullLimit(target, camera, session, pulling, view.app().uiScale());
+    if (lastShot != nullptr)
+        overlay.drawShotMarkers(target, camera, *lastShot, opacity);
+    // The preview setting: the whole path, its first half second (30 steps of 1/60 s), or none.
+    const PreviewMode previewMode = view.app().settings().preview;
+    if (const PredictedFlight* preview = view.preview(); preview != nullptr && previewMode != PreviewMode::Off)
+        overlay.drawPreview(target, camera, *preview, previewMode == PreviewMode::Short ? 30 : 0);
+}
 } // namespace
 
 void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, OverlayRenderer& overlay, const Hud& hud,
@@ -63,27 +87,16 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
         shaken.move(-shakePx);
         target.setView(shaken);
     }
-    world.drawBackground(target, camera, session);
-
-    // Earlier shots on this level stay as dimmed trails (unless the player turned flown paths off).
-    if (view.app().settings().showActualPath)
-        drawShotTrails(target, camera, view.trails(), view.app().uiScale());
     // While the next bird is aimed, the last shot stays as a faded reference.
     const ShotRecord* lastShot = session.shots().empty() ? nullptr : &session.shots().back();
     const float opacity = session.phase() == Phase::Aiming ? kLastShotFade : 1.0f;
-    if (lastShot != nullptr)
-        overlay.drawShotPaths(target, camera, *lastShot, opacity);
-    world.drawForeground(target, camera, session, pullOffset);
-    if (view.aim())
-        drawPullLimit(target, camera, session, pulling, view.app().uiScale());
-    if (lastShot != nullptr)
-        overlay.drawShotMarkers(target, camera, *lastShot, opacity);
-    // The preview setting: the whole path, its first half second (30 steps of 1/60 s), or none.
-    const PreviewMode previewMode = view.app().settings().preview;
-    if (const PredictedFlight* preview = view.preview(); preview != nullptr && previewMode != PreviewMode::Off)
-        overlay.drawPreview(target, camera, *preview, previewMode == PreviewMode::Short ? 30 : 0);
-    for (const auto& layer : layers)
-        layer->drawWorld(target, view);
+    // A frame only laid out (the layout tests) leaves the world's picture out: no panel's place depends on it.
+    if (drawingPixels())
+    {
+        drawWorldPicture(target, view, world, overlay, pullOffset, pulling, lastShot, opacity);
+        for (const auto& layer : layers)
+            layer->drawWorld(target, view);
+    }
 
     target.setView(still);
     hud.draw(target, target.getSize(), session, view.aim(), static_cast<float>(view.app().settings().textScale),

@@ -2,6 +2,7 @@
 
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
+#include "render/ScreenRegions.hpp"
 #include "teach/TeachDraw.hpp"
 
 #include <algorithm>
@@ -53,9 +54,13 @@ sf::FloatRect GuideRunner::draw(sf::RenderTarget& target, const sf::Font& font, 
     };
     // In a window too small for the whole step (large text, a low window) the card keeps as many lines as have room
     // above the panels under it, the last ending in an ellipsis; with no room even for its title it is left out.
-    std::size_t rows = lines.size();
+    std::size_t rows = std::min(lines.size(), shrunkRows("guide").value_or(lines.size()));
     while (rows > 0 && !panelHasRoom(target, cardWith(rows)))
         --rows;
+    // Nor does it cover the slingshot, the flying bird or a live pig: it gives up lines instead, and keeps to that
+    // many until the next aim, so that it does not grow and shrink as the bird flies past.
+    while (rows > 0 && coversKeptInView(cardWith(rows)))
+        markPanelShrunk("guide", --rows);
     if (!panelHasRoom(target, cardWith(rows)))
         return {};
     if (rows < lines.size())

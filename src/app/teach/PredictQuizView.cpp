@@ -172,8 +172,17 @@ sf::FloatRect PredictQuizView::draw(sf::RenderTarget& target, const sf::Font& fo
                                             formatFixed(r.measured != 0.0 ? 100.0 * error / r.measured : 0.0, 1) +
                                             " %)"});
     }
-    const TextPanel panel("Predict, then launch", std::move(rows));
-    return panel.draw(target, font, at, titleSize, rowSize, scale);
+    // In a window too small for the whole card it keeps the rows that have room (the aim and the typed answer come
+    // first); with no room even for its title it is left out.
+    for (;;)
+    {
+        const TextPanel panel("Predict, then launch", rows);
+        if (panelHasRoom(target, {at, panel.measure(font, titleSize, rowSize, scale)}))
+            return panel.draw(target, font, at, titleSize, rowSize, scale);
+        if (rows.empty())
+            return {};
+        rows.pop_back();
+    }
 }
 
 } // namespace abalike::app

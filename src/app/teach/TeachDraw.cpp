@@ -62,14 +62,22 @@ bool fullPanelFits(const sf::RenderTarget& target, const sf::FloatRect& rect, st
 {
     if (panelShrunk(name) || !panelHasRoom(target, rect))
         return false;
-    sf::FloatRect overlap;
-    for (const sf::FloatRect& thing : keepInView())
-        if (rect.intersects(thing, overlap) && overlap.width > 0.0f && overlap.height > 0.0f)
-        {
-            markPanelShrunk(name);
-            return false;
-        }
+    if (coversKeptInView(rect))
+    {
+        markPanelShrunk(name);
+        return false;
+    }
     return true;
+}
+
+bool coversKeptInView(const sf::FloatRect& rect, bool flyingBird)
+{
+    sf::FloatRect overlap;
+    for (const ScreenRegion& thing : keepInView())
+        if ((flyingBird || thing.name != "bird") && rect.intersects(thing.rect, overlap) && overlap.width > 0.0f &&
+            overlap.height > 0.0f)
+            return true;
+    return false;
 }
 
 sf::FloatRect drawPanelSummary(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f corner, bool fromRight,
@@ -86,6 +94,16 @@ sf::FloatRect drawPanelSummary(sf::RenderTarget& target, const sf::Font& font, s
     const sf::FloatRect rect({fromRight ? corner.x - size.x : corner.x, corner.y}, size);
     if (!panelHasRoom(target, rect))
         return {};
+    // A summary that would cover the slingshot or a live pig is left out, until the next aim. The flying bird only
+    // passes behind one line.
+    const std::string hidden = std::string(name) + " (summary left out)";
+    if (panelShrunk(hidden))
+        return {};
+    if (coversKeptInView(rect, false))
+    {
+        markPanelShrunk(hidden);
+        return {};
+    }
     drawTeachPanel(target, rect, scale, name);
     drawLabel(target, font, utf8(line), {rect.left + pad, rect.top + pad}, rowSize, palette::kText);
     return rect;

@@ -50,9 +50,15 @@ bool panelHasRoom(const sf::RenderTarget& target, const sf::FloatRect& rect);
 /// does not flick between its two forms while the camera and the bird move under it.
 bool fullPanelFits(const sf::RenderTarget& target, const sf::FloatRect& rect, std::string_view name);
 
+/// Whether a panel at `rect` would cover something that must stay in view this frame (ScreenRegions' keepInView);
+/// without `flyingBird`, only what stays put while the camera does (the slingshot, the pigs).
+bool coversKeptInView(const sf::FloatRect& rect, bool flyingBird = true);
+
 /// A panel's one-line summary, for where the whole panel has no room: `text` on one line (cut at a word with an
 /// ellipsis to fit the window), its top corner at `corner` (the top-right one when `fromRight`). Drawn only where it
-/// has room (panelHasRoom); returns its bounds, empty when left out too. `name` is its name in ScreenRegions.
+/// has room (panelHasRoom) and covers neither the slingshot nor a live pig (once it would have, it stays out until the
+/// next aim; one line may pass over the flying bird); returns its bounds, empty when left out too. `name` is its name
+/// in ScreenRegions.
 sf::FloatRect drawPanelSummary(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f corner, bool fromRight,
                                const std::string& text, unsigned rowSize, float scale, std::string_view name);
 

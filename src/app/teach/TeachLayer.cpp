@@ -209,11 +209,15 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     const float gap = 6.0f * scale;
     const sf::Vector2f window(target.getSize());
     const bool aiming = session.phase() == Phase::Aiming;
-    // The columns' large panels leave the slingshot, the flying bird and live pigs in view, or shrink to a line.
-    const std::vector<sf::FloatRect> keep = overlayOn() || !m_feedback.sentences().empty()
-                                                ? keepVisibleRects(session, view.camera())
-                                                : std::vector<sf::FloatRect>{};
-    setKeepInView(keep);
+    // The columns' large panels, a lesson's step and the feedback leave the slingshot, the flying bird and live pigs
+    // in view, or shrink.
+    std::vector<ScreenRegion> things;
+    if (overlayOn() || !m_feedback.sentences().empty() || m_guide.active())
+        things = keepVisibleBoxes(session, view.camera());
+    std::vector<sf::FloatRect> keep;
+    for (const ScreenRegion& thing : things)
+        keep.push_back(thing.rect);
+    setKeepInView(std::move(things));
 
     // Right column: the flying bird's forces and energy, or after its first contact the impact; while aiming, the
     // chart and the comparison.
@@ -286,6 +290,14 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
         left = firstFreeTop(margin, leftWidth, left, minHeight, gap);
     };
     clearLeft();
+    // The prediction card first: what the player types into must keep its room; the lesson's step shortens to fit.
+    if (PredictQuizView::wanted(session.level()) && !m_walkthrough.active())
+    {
+        const sf::FloatRect card = m_quiz.draw(target, *font, {margin, left}, titleSize, rowSize, scale);
+        if (card.height > 0.0f) // left out when it had no room
+            left = card.top + card.height + gap;
+        clearLeft();
+    }
     if (m_guide.active() && !m_walkthrough.active())
     {
         const sf::FloatRect card =
@@ -293,12 +305,6 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
                          m_app.textSize(17.0f), m_app.textSize(15.0f), scale);
         if (card.height > 0.0f) // left out when it had no room
             left = card.top + card.height + gap;
-        clearLeft();
-    }
-    if (PredictQuizView::wanted(session.level()) && !m_walkthrough.active())
-    {
-        const sf::FloatRect card = m_quiz.draw(target, *font, {margin, left}, titleSize, rowSize, scale);
-        left = card.top + card.height + gap;
         clearLeft();
     }
     // A panel with no room left under the others is left out rather than drawn over them or off the window.
