@@ -14,6 +14,12 @@
 namespace abalike::app
 {
 
+namespace
+{
+/// The card's spots come in rows of three (middle, left, right): above the hint, then in the sky.
+constexpr std::size_t kSpotsPerRow = 3;
+} // namespace
+
 void FeedbackView::reset()
 {
     m_firstAim.reset();
@@ -94,7 +100,7 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
         const float w = width + 2.0f * pad;
         const float height = font.getLineSpacing(rowSize) * static_cast<float>(lines.size()) + 2.0f * pad;
         const float centre = 0.5f * windowWidth;
-        std::vector<sf::FloatRect> candidates;
+        std::vector<sf::FloatRect> candidates; // kSpotsPerRow in each row
         for (const float x : {centre - 0.5f * w, 12.0f * scale, windowWidth - 12.0f * scale - w})
             candidates.emplace_back(x, bottom - height, w, height);
         for (const float x : {centre - 0.5f * w, 12.0f * scale, windowWidth - 12.0f * scale - w})
@@ -159,6 +165,18 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
                 }
                 if (!m_shotOver && *m_spot != spot)
                     m_movedDuringShot = true;
+            }
+            else if (!m_shotOver && coversKeep)
+            {
+                // Moved once already this shot: it may still slide along its row (the bottom one or the one in the
+                // sky, never from one to the other) to a spot clear of the structure and of what must stay in view.
+                for (std::size_t i = 0; i < candidates.size(); ++i)
+                    if (i / kSpotsPerRow == *m_spot / kSpotsPerRow && fits(candidates[i]) &&
+                        coveredArea(candidates[i], avoid) <= 0.0f)
+                    {
+                        m_spot = i;
+                        break;
+                    }
             }
             draw(candidates[*m_spot], *m_spot, m_collapsed);
             return;
