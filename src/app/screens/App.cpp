@@ -361,8 +361,8 @@ void App::layOutFrame()
     layout.screens = m_screens.names();
     setScreenRegionSink(&layout.panels);
     setKeepVisibleSink(&layout.keepVisible);
-    // Every draw call goes through, so each panel finds its place as in a shown frame, but the scissor box is empty:
-    // the rasterizer fills nothing.
+    // Every screen draws as in a shown frame, so each panel finds its place; labels and meshes skip their draw calls
+    // (drawingPixels) and whatever else is drawn meets an empty scissor box: the rasterizer fills nothing.
     (void)m_window.setActive(true);
     glEnable(GL_SCISSOR_TEST);
     glScissor(0, 0, 0, 0);

@@ -8,12 +8,16 @@
 #include "screens/FrameLayout.hpp"
 #include "screens/FrameTimes.hpp"
 
-#include <SFML/Graphics/RenderWindow.hpp>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+namespace sf
+{
+class RenderWindow;
+}
 
 namespace abalike::app
 {
