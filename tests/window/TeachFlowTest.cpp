@@ -405,6 +405,24 @@ TEST_F(TeachFlow, AtLargeTextALessonsGuideKeepsTheLinesThatFitAboveTheHint)
               boxes.end());
 }
 
+TEST_F(TeachFlow, AtLargeTextThePredictionCardShowsWhatThePlayerTypes)
+{
+    // lesson-predict at 200 % text in 1024x768 with the overlay on, 23.5 typed: the card once went under the wide
+    // aim readout and the band graph by its column's width, found no room and was left out, so the player typed
+    // blind. It now goes down by its own width and sits beside the graph, with what was typed; every panel apart.
+    std::ofstream(data() / "settings.json") << R"({"format": 1, "text_scale": 2.0, "teaching_overlay": true})";
+    const GameRun run = runGame("play " + sourceFile("levels/lessons/lesson-predict.json") + " --frames 20" +
+                                    script(R"([{"frame": 3, "text": "23.5"}])") + " --size 1024x768",
+                                data());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    double width = 0.0;
+    double height = 0.0;
+    const std::vector<PanelBox> boxes = lastPanels(run, width, height);
+    expectApartAndInside(boxes, width, height, "lesson-predict 1024x768");
+    EXPECT_NE(findBox(boxes, "Predict, then launch"), boxes.end());
+    EXPECT_NE(shownTexts(run).find("23.5_ m"), std::string::npos) << shownTexts(run);
+}
+
 TEST_F(TeachFlow, AtLargeTextTheKeysAndTheHintLeaveTheSlingshotInView)
 {
     // At 200 % text the keys line and a level's hint wrap to two lines each and reach above the ground line's usual
@@ -510,7 +528,9 @@ TEST_F(TeachFlow, AtLargeTextTheTeachingPanelsShrinkRatherThanCoverTheSlingshotT
                 EXPECT_TRUE(apart(panel, thing))
                     << what << ": the " << panel.name << " panel covers the " << thing.name;
         if (frames == 60)
+        {
             EXPECT_TRUE(summaryShown(panels, "why")) << what;
+        }
         else
         {
             // After the first contact the camera turns to the struck frame: the Why panel's one line came over a
@@ -548,9 +568,12 @@ TEST_F(TeachFlow, AtLargeTextThePanelsAfterAShotNeverOverlapAndTheFeedbackShrink
     const std::vector<PanelBox> keep = lastPanels(run, width, height, "keep_visible");
     EXPECT_EQ(std::count_if(keep.begin(), keep.end(), [](const PanelBox& box) { return box.name == "pig"; }), 3);
     for (const PanelBox& thing : keep)
+    {
+        if (thing.name != "pig")
+            continue;
         for (const PanelBox& panel : boxes)
-            if (thing.name == "pig")
-                EXPECT_TRUE(apart(panel, thing)) << "the " << panel.name << " panel covers a pig";
+            EXPECT_TRUE(apart(panel, thing)) << "the " << panel.name << " panel covers a pig";
+    }
 }
 } // namespace
 } // namespace abalike::test

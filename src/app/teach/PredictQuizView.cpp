@@ -1,5 +1,7 @@
 #include "teach/PredictQuizView.hpp"
 
+#include "render/ScreenRegions.hpp"
+
 #include "render/TextFormat.hpp"
 #include "teach/TeachDraw.hpp"
 
@@ -172,13 +174,16 @@ sf::FloatRect PredictQuizView::draw(sf::RenderTarget& target, const sf::Font& fo
                                             formatFixed(r.measured != 0.0 ? 100.0 * error / r.measured : 0.0, 1) +
                                             " %)"});
     }
-    // In a window too small for the whole card it keeps the rows that have room (the aim and the typed answer come
-    // first); with no room even for its title it is left out.
+    // It goes down past the panels above it by its own width (narrower than its column, it often fits beside a wide
+    // panel of the other column). In a window too small for the whole card it keeps the rows that have room (the aim
+    // and the typed answer come first); with no room even for its title it is left out.
     for (;;)
     {
         const TextPanel panel("Predict, then launch", rows);
-        if (panelHasRoom(target, {at, panel.measure(font, titleSize, rowSize, scale)}))
-            return panel.draw(target, font, at, titleSize, rowSize, scale);
+        const sf::Vector2f size = panel.measure(font, titleSize, rowSize, scale);
+        const sf::Vector2f place(at.x, firstFreeTop(at.x, size.x, at.y, size.y, 6.0f * scale));
+        if (panelHasRoom(target, {place, size}))
+            return panel.draw(target, font, place, titleSize, rowSize, scale);
         if (rows.empty())
             return {};
         rows.pop_back();

@@ -24,7 +24,8 @@ public:
     /// Typing, Backspace, Tab and Enter while a bird waits; true when the event was the quiz's.
     bool handleEvent(const sf::Event& event, const PlayView& view);
     void update(const GameSession& session, const std::optional<AimReadout>& aim);
-    /// Draws the card with its top-left corner at `at`; returns its bounds.
+    /// Draws the card at the first place from `at` down where it overlaps no panel drawn before it this frame, with
+    /// the rows that have room there (ScreenRegions); returns its bounds, empty when not even its title has room.
     sf::FloatRect draw(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f at, unsigned titleSize,
                        unsigned rowSize, float scale) const;
 

@@ -289,15 +289,15 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     {
         left = firstFreeTop(margin, leftWidth, left, minHeight, gap);
     };
-    clearLeft();
     // The prediction card first: what the player types into must keep its room; the lesson's step shortens to fit.
+    // It finds its own place down the column by its own width.
     if (PredictQuizView::wanted(session.level()) && !m_walkthrough.active())
     {
         const sf::FloatRect card = m_quiz.draw(target, *font, {margin, left}, titleSize, rowSize, scale);
         if (card.height > 0.0f) // left out when it had no room
             left = card.top + card.height + gap;
-        clearLeft();
     }
+    clearLeft();
     if (m_guide.active() && !m_walkthrough.active())
     {
         const sf::FloatRect card =
