@@ -41,10 +41,17 @@ const std::vector<ScreenRegion>& keepInView()
     return g_keepInView;
 }
 
+namespace
+{
+std::vector<std::pair<std::string, std::size_t>>::iterator findShrunk(std::string_view name)
+{
+    return std::find_if(g_shrunk.begin(), g_shrunk.end(), [name](const auto& s) { return s.first == name; });
+}
+} // namespace
+
 std::optional<std::size_t> shrunkRows(std::string_view name)
 {
-    const auto found =
-        std::find_if(g_shrunk.begin(), g_shrunk.end(), [name](const auto& s) { return s.first == name; });
+    const auto found = findShrunk(name);
     if (found == g_shrunk.end())
         return std::nullopt;
     return found->second;
@@ -57,12 +64,10 @@ bool panelShrunk(std::string_view name)
 
 void markPanelShrunk(std::string_view name, std::size_t rowsKept)
 {
-    const auto found =
-        std::find_if(g_shrunk.begin(), g_shrunk.end(), [name](const auto& s) { return s.first == name; });
-    if (found == g_shrunk.end())
-        g_shrunk.emplace_back(name, rowsKept);
-    else
+    if (const auto found = findShrunk(name); found != g_shrunk.end())
         found->second = std::min(found->second, rowsKept);
+    else
+        g_shrunk.emplace_back(name, rowsKept);
 }
 
 void forgetShrunkPanels()

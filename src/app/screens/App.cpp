@@ -173,7 +173,7 @@ int App::run()
         if (m_options.onLayout)
         {
             if (!lastFrame && m_frame % std::max(1, m_options.layoutEvery) == 0)
-                layOutFrame();
+                m_options.onLayout(recordFrame(false));
         }
         else if (!lastFrame)
         {
@@ -196,27 +196,20 @@ int App::run()
     }
 
     int exitCode = m_exitCode.value_or(0);
+    // The last frame as the screens are after its changes: what the player would see next. A laid-out run hands it
+    // to onLayout; a trace lists its texts (so a scripted run can check what a screen says) and its layout.
     if (m_options.onLayout)
     {
         m_screens.finishBackgroundWork();
-        layOutFrame();
+        m_options.onLayout(recordFrame(false));
     }
-    // A laid-out run has handed its last frame's panels over already.
-    if (!m_options.screenshotPath.empty() || (!m_options.tracePath.empty() && !m_options.onLayout))
+    else if (!m_options.screenshotPath.empty() || !m_options.tracePath.empty())
     {
-        // The last frame as the screens are after its changes: what the player would see next. The trace lists
-        // its texts, so a scripted run can check what a screen says.
         m_screens.finishBackgroundWork();
         std::vector<std::string> texts;
-        std::vector<ScreenRegion> regions;
-        std::vector<ScreenRegion> keepVisible;
         setDrawnTextSink(&texts);
-        setScreenRegionSink(&regions);
-        setKeepVisibleSink(&keepVisible);
-        drawFrame();
+        const FrameLayout layout = recordFrame(true);
         setDrawnTextSink(nullptr);
-        setScreenRegionSink(nullptr);
-        setKeepVisibleSink(nullptr);
         m_trace.write("texts", {{"shown", texts}});
         const auto rectangles = [](const std::vector<ScreenRegion>& list)
         {
@@ -229,9 +222,9 @@ int App::run()
                                {"h", region.rect.height}});
             return out;
         };
-        m_trace.write("panels", {{"drawn", rectangles(regions)},
-                                 {"keep_visible", rectangles(keepVisible)},
-                                 {"window", {windowSize().x, windowSize().y}}});
+        m_trace.write("panels", {{"drawn", rectangles(layout.panels)},
+                                 {"keep_visible", rectangles(layout.keepVisible)},
+                                 {"window", {layout.window.x, layout.window.y}}});
         if (!m_options.screenshotPath.empty() && !saveScreenshot(m_window, m_options.screenshotPath))
             exitCode = exitCode == 0 ? 2 : exitCode;
     }
@@ -353,26 +346,30 @@ void App::drawFrame(bool reuseCovered)
     drawNotices();
 }
 
-void App::layOutFrame()
+FrameLayout App::recordFrame(bool pixels)
 {
     FrameLayout layout;
     layout.frame = m_frame;
     layout.window = windowSize();
-    layout.screens = m_screens.names();
     setScreenRegionSink(&layout.panels);
     setKeepVisibleSink(&layout.keepVisible);
-    // Every screen draws as in a shown frame, so each panel finds its place; labels and meshes skip their draw calls
-    // (drawingPixels) and whatever else is drawn meets an empty scissor box: the rasterizer fills nothing.
-    (void)m_window.setActive(true);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(0, 0, 0, 0);
-    setDrawingPixels(false);
-    drawFrame();
-    setDrawingPixels(true);
-    glDisable(GL_SCISSOR_TEST);
+    if (pixels)
+        drawFrame();
+    else
+    {
+        // Every screen draws as in a shown frame, so each panel finds its place; labels and meshes skip their draw
+        // calls (drawingPixels) and whatever else is drawn meets an empty scissor box: the rasterizer fills nothing.
+        (void)m_window.setActive(true);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, 0, 0, 0);
+        setDrawingPixels(false);
+        drawFrame();
+        setDrawingPixels(true);
+        glDisable(GL_SCISSOR_TEST);
+    }
     setScreenRegionSink(nullptr);
     setKeepVisibleSink(nullptr);
-    m_options.onLayout(layout);
+    return layout;
 }
 
 void App::drawNotices()

@@ -98,8 +98,9 @@ private:
     /// reuseCovered: screens under an overlay come from the stack's copy of them (ScreenStack::drawWithSnapshot);
     /// false draws every screen, as the last frame of a scripted run does to record its texts and panels.
     void drawFrame(bool reuseCovered = false);
-    /// Lays the frame out without drawing a pixel and hands its panels to AppOptions::onLayout.
-    void layOutFrame();
+    /// Draws every screen (pixels: false lays the frame out without drawing a pixel) and returns where its panels
+    /// went and what they should leave visible.
+    FrameLayout recordFrame(bool pixels);
     void drawNotices();
     void takeStoreMessages();
 

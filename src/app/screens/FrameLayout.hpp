@@ -3,7 +3,6 @@
 #include "render/ScreenRegions.hpp"
 
 #include <SFML/System/Vector2.hpp>
-#include <string>
 #include <vector>
 
 namespace abalike::app
@@ -16,7 +15,6 @@ struct FrameLayout
     sf::Vector2u window;
     std::vector<ScreenRegion> panels;      ///< every panel drawn over the world, in drawing order
     std::vector<ScreenRegion> keepVisible; ///< what the panels should leave visible (slingshot, flying bird, pigs)
-    std::vector<std::string> screens;      ///< the screens open, bottom first
 };
 
 } // namespace abalike::app
