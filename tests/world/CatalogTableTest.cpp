@@ -66,7 +66,7 @@ TEST(CatalogTable, BirdsHaveDistinctMassesRadiiAndAbilities)
         {
             EXPECT_NE(birds[i].massKg, birds[j].massKg);
             EXPECT_NE(birds[i].radiusM, birds[j].radiusM);
-            EXPECT_NE(birds[i].ability, birds[j].ability);
+            EXPECT_NE(birds[i].abilityName(), birds[j].abilityName());
         }
 }
 

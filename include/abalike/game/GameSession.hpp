@@ -59,6 +59,20 @@ struct ShotRecord
     int accuracyPoints = 0; ///< this shot's share of ScoreBreakdown::accuracyBonus
 };
 
+/// A scripted shot: angle in degrees, launch speed in m/s, and when (s after launch) to use the bird's ability.
+struct ScriptedShot
+{
+    ScriptedShot() = default;
+    ScriptedShot(double angle, double speed, std::optional<double> abilityAt = std::nullopt)
+        : angleDeg(angle), speedMps(speed), abilityAtS(abilityAt)
+    {
+    }
+
+    double angleDeg = 0.0;
+    double speedMps = 0.0;
+    std::optional<double> abilityAtS; ///< none: the ability is not used
+};
+
 /// A launch the rules do not allow (no bird, not aiming, too fast); the message says why.
 class LaunchError : public std::runtime_error
 {
@@ -121,6 +135,9 @@ public:
     PredictedFlight preview(double angleDeg, double speedMps) const;
     /// Launches the current bird. Throws LaunchError when not aiming or faster than the bird can be launched.
     void launch(double angleDeg, double speedMps);
+    /// Launches the current bird as a scripted shot says; also throws LaunchError when the shot asks for an
+    /// ability the bird does not have, or at a time that is not a number of seconds >= 0.
+    void launch(const ScriptedShot& shot);
     /// Changes gravity, air and wind now, even mid-flight (the sandbox's live environment). A shot in the air is
     /// marked environmentChanged and gets no deviation or accuracy points; later previews use the new air.
     void setEnvironment(const EnvironmentDef& environment);
@@ -177,20 +194,6 @@ private:
     std::optional<double> m_birdsGoneAtS; ///< when the shot's birds had all left without touching anything
     std::string m_notice;
     ScoreBreakdown m_score;
-};
-
-/// A scripted shot: angle in degrees, launch speed in m/s, and when (s after launch) to use the bird's ability.
-struct ScriptedShot
-{
-    ScriptedShot() = default;
-    ScriptedShot(double angle, double speed, std::optional<double> abilityAt = std::nullopt)
-        : angleDeg(angle), speedMps(speed), abilityAtS(abilityAt)
-    {
-    }
-
-    double angleDeg = 0.0;
-    double speedMps = 0.0;
-    std::optional<double> abilityAtS; ///< none: the ability is not used
 };
 
 /// Plays the shots in order, headless, each as soon as its bird is ready (as the window does); returns the finished

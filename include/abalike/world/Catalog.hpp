@@ -1,5 +1,7 @@
 #pragma once
 
+#include <abalike/world/Ability.hpp>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,10 +32,13 @@ struct BirdType
     std::string name;
     double massKg = 0.0;
     double radiusM = 0.0;
-    double dragCoefficient = 0.47; ///< Cd of a sphere
-    std::string ability;           ///< "none", "split", "boost", "explode", "egg"
+    double dragCoefficient = 0.47;          ///< Cd of a sphere
+    std::shared_ptr<const Ability> ability; ///< null: the bird has none
     double friction = 0.6;
     double restitution = 0.3;
+
+    /// The ability's name in the catalog, "none" for a bird without one.
+    std::string_view abilityName() const { return ability ? ability->name() : kNoAbility; }
 };
 
 /// A kind of pig.
@@ -47,18 +52,6 @@ struct PigType
     bool helmet = false;
     double friction = 0.6;
     double restitution = 0.2;
-};
-
-/// The numbers behind the birds' abilities (see assets/catalog.json, "abilities").
-struct AbilityParams
-{
-    double splitAngleDeg = 10.0;     ///< split: the extra birds fly off at +- this from the velocity
-    double boostSpeedGainMps = 15.0; ///< boost: speed added along the velocity
-    double explodeRadiusM = 3.0;     ///< explode: bodies whose centre is nearer are pushed and damaged
-    double explodeImpulseNs = 250.0; ///< explode: impulse (and damage) at the centre, falling linearly to 0
-    double eggMassKg = 10.0;         ///< egg: mass of the egg
-    double eggRadiusM = 0.2;         ///< egg: radius of the egg
-    double eggPushSpeedMps = 15.0;   ///< egg: how much faster than the bird the egg leaves downwards
 };
 
 /// Score rules beyond the per-block and per-pig points.
@@ -85,8 +78,9 @@ public:
     /// The table compiled in from assets/catalog.json.
     static const Catalog& builtin();
 
-    /// Parses a catalog from JSON text; throws std::runtime_error naming what is wrong.
-    static Catalog fromJson(std::string_view text);
+    /// Parses a catalog from JSON text; throws std::runtime_error naming what is wrong, with the file's name and,
+    /// for a name that matches nothing (an ability), its line and column.
+    static Catalog fromJson(std::string_view text, const std::string& fileName = "assets/catalog.json");
 
     const Material* findMaterial(std::string_view name) const;
     const BirdType* findBird(std::string_view name) const;
@@ -105,7 +99,10 @@ public:
     const ScoringRules& scoring() const { return m_scoring; }
     const PlayerAim& playerAim() const { return m_playerAim; }
     double damageSpeedThresholdMps() const { return m_damageSpeedThreshold; }
-    const AbilityParams& abilities() const { return m_abilities; }
+    /// The abilities the birds use, in the order the birds list them, then any other the catalog configures.
+    const std::vector<std::shared_ptr<const Ability>>& abilities() const { return m_abilities; }
+    /// An ability with the catalog's numbers, or null when no bird uses it and the catalog does not configure it.
+    const Ability* findAbility(std::string_view name) const;
     double groundFriction() const { return m_groundFriction; }
     /// Rolling resistance coefficient of pigs and round blocks: the torque against rolling is at most this x the
     /// normal force x the radius.
@@ -120,7 +117,7 @@ private:
     std::vector<Material> m_materials;
     std::vector<BirdType> m_birds;
     std::vector<PigType> m_pigs;
-    AbilityParams m_abilities;
+    std::vector<std::shared_ptr<const Ability>> m_abilities;
     ScoringRules m_scoring;
     PlayerAim m_playerAim;
     double m_damageSpeedThreshold = 0.5;

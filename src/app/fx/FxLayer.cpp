@@ -71,15 +71,15 @@ void FxLayer::afterStep(PlayView& view)
     }
     m_seen = destroyed.size();
 
-    // An explosion shakes the most, once per shot.
+    // An ability that reached out (the black bird's blast) flashes as wide as it reached and shakes the most, once
+    // per shot.
     const std::vector<ShotRecord>& shots = view.session().shots();
     if (shots.size() < m_explosionsSeen)
         m_explosionsSeen = 0;
-    if (shots.size() > m_explosionsSeen && shots.back().ability && shots.back().ability->ability == "explode")
+    if (shots.size() > m_explosionsSeen && shots.back().ability && shots.back().ability->reachM > 0.0)
     {
         const AbilityUse& use = *shots.back().ability;
-        m_particles.burstBlast({static_cast<float>(use.x), static_cast<float>(use.y)},
-                               static_cast<float>(view.session().catalog().abilities().explodeRadiusM),
+        m_particles.burstBlast({static_cast<float>(use.x), static_cast<float>(use.y)}, static_cast<float>(use.reachM),
                                reduced ? 4 : 16);
         if (!reduced)
             m_shake.kick(12.0f);

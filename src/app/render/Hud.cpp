@@ -160,7 +160,7 @@ void Hud::drawAbilityPrompt(sf::RenderTarget& target, sf::Vector2u size, float s
                             float left, float right, float below) const
 {
     const BirdType* bird = session.shots().empty() ? nullptr : session.catalog().findBird(session.shots().back().bird);
-    const std::string ability = bird != nullptr ? bird->ability : "ability";
+    const std::string ability = bird != nullptr ? std::string(bird->abilityName()) : "ability";
     const unsigned textSize = scaled(scale, 21.0f);
     const sf::String text = utf8("Click or Space: " + ability + "!");
     const float pad = 10.0f * scale;

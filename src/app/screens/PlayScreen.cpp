@@ -322,11 +322,7 @@ void PlayScreen::fireScriptedShot()
     ++m_scriptShotNumber;
     try
     {
-        const BirdType* bird = m_session->currentBird();
-        if (shot.abilityAtS && bird != nullptr && bird->ability == "none")
-            throw LaunchError("bird " + std::to_string(m_session->birdsUsed() + 1) + " (" + bird->name +
-                              ") has no ability to use");
-        m_session->launch(shot.angleDeg, shot.speedMps);
+        m_session->launch(shot);
         m_app.trace().write("launch", {{"angle_deg", shot.angleDeg}, {"speed", shot.speedMps}, {"scripted", true}});
     }
     catch (const LaunchError& error)

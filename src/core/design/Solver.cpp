@@ -156,7 +156,7 @@ private:
         }
 
         // The bird's ability at a few moments before its first contact.
-        if (m_options.tryAbilities && bird->ability != "none" && !bird->ability.empty())
+        if (m_options.tryAbilities && bird->ability)
         {
             std::vector<Candidate> next;
             for (std::size_t i = 0; i < std::min(kRefineCount, ranked.size()); ++i)

@@ -330,6 +330,20 @@ int GameSession::stars() const
     return starsFor(m_score.total(), m_phase == Phase::Won, m_level.starScores);
 }
 
+void GameSession::launch(const ScriptedShot& shot)
+{
+    if (const auto at = shot.abilityAtS)
+    {
+        const BirdType* bird = currentBird();
+        if (!std::isfinite(*at) || *at < 0.0)
+            throw LaunchError("the ability time must be a finite number of seconds >= 0");
+        if (bird != nullptr && !bird->ability)
+            throw LaunchError("bird " + std::to_string(birdsUsed() + 1) + " (" + bird->name +
+                              ") has no ability to use");
+    }
+    launch(shot.angleDeg, shot.speedMps);
+}
+
 std::unique_ptr<GameSession> simulateShots(const LevelDef& level, const std::vector<ScriptedShot>& shots,
                                            const Catalog& catalog)
 {
@@ -359,16 +373,7 @@ std::unique_ptr<GameSession> simulateShots(const LevelDef& level, const std::vec
             break; // the level ended before this shot; nothing left to shoot at
         try
         {
-            if (const auto at = shots[i].abilityAtS)
-            {
-                const BirdType* bird = session->currentBird();
-                if (!std::isfinite(*at) || *at < 0.0)
-                    throw LaunchError("the ability time must be a finite number of seconds >= 0");
-                if (bird != nullptr && bird->ability == "none")
-                    throw LaunchError("bird " + std::to_string(session->birdsUsed() + 1) + " (" + bird->name +
-                                      ") has no ability to use");
-            }
-            session->launch(shots[i].angleDeg, shots[i].speedMps);
+            session->launch(shots[i]);
         }
         catch (const LaunchError& e)
         {

@@ -10,7 +10,6 @@ BirdType customBirdType(const CustomBirdDef& def)
     bird.massKg = def.massKg;
     bird.radiusM = def.diameterM / 2.0;
     bird.dragCoefficient = def.dragCoefficient;
-    bird.ability = "none";
     return bird;
 }
 

@@ -240,7 +240,12 @@ double evaluate(const LevelDef& level, const Catalog& seen, std::string_view nam
     if (name == "pull")
         return level.slingshot.maxPullM;
     if (name == "boost")
-        return seen.abilities().boostSpeedGainMps;
+    {
+        const Ability* boost = seen.findAbility("boost");
+        if (boost == nullptr)
+            fail("{boost}: no bird of the catalog has the boost ability");
+        return boost->number("speed_gain_mps");
+    }
     if (name == "g")
         return air.gravity;
     if (name == "rho")

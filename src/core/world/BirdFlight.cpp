@@ -1,9 +1,11 @@
-#include "world/ContactRecorder.hpp"
+#include "world/BirdFlight.hpp"
+
 #include "world/Fixtures.hpp"
+#include "world/ImpactRecorder.hpp"
 #include "world/Skin.hpp"
+#include "world/WorldBodies.hpp"
 
 #include <abalike/level/LevelFlight.hpp>
-#include <abalike/world/GameWorld.hpp>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -27,8 +29,8 @@ constexpr int16 kBirdGroup = -1;
 
 } // namespace
 
-b2Body* GameWorld::createBirdBody(int index, double radiusM, double massKg, double friction, double restitution,
-                                  const FlightState& s)
+b2Body* BirdFlight::createBody(int index, double radiusM, double massKg, double friction, double restitution,
+                               const FlightState& s)
 {
     b2BodyDef def;
     def.type = b2_dynamicBody;
@@ -37,7 +39,7 @@ b2Body* GameWorld::createBirdBody(int index, double radiusM, double massKg, doub
     def.linearVelocity.Set(static_cast<float>(s[2]), static_cast<float>(s[3]));
     def.angularDamping = 0.8f;
     def.userData = userDataFor(index);
-    b2Body* body = m_world->CreateBody(&def);
+    b2Body* body = m_bodies.world().CreateBody(&def);
     b2FixtureDef fixture;
     const double r = physicsCircleRadius(radiusM);
     fixture.density = static_cast<float>(massKg / (std::numbers::pi * r * r)); // mass exactly the bird's
@@ -45,37 +47,35 @@ b2Body* GameWorld::createBirdBody(int index, double radiusM, double massKg, doub
     fixture.restitution = static_cast<float>(restitution);
     fixture.filter.groupIndex = kBirdGroup;
     addCircleFixture(body, radiusM, fixture);
-    m_entities[static_cast<std::size_t>(index)].body = body;
+    m_bodies.entity(index).body = body;
     return body;
 }
 
-BirdBody GameWorld::birdBody(const BirdType& bird) const
+BirdBody BirdFlight::birdBody(const BirdType& bird) const
 {
-    return birdCollisionBody(bird, m_lightestBodyKg);
+    return birdCollisionBody(bird, m_bodies.lightestBodyKg());
 }
 
-void GameWorld::setEnvironment(const EnvironmentDef& environment)
+void BirdFlight::setEnvironment(const EnvironmentDef& environment)
 {
-    m_level.environment = environment;
-    m_world->SetGravity(b2Vec2(0.0f, static_cast<float>(-environment.gravity)));
     if (m_birdIndex < 0)
         return;
     const FlightModel model = levelFlightModel(environment, m_birdType);
     IntegratorSettings flightSettings;
     flightSettings.stepper = StepperKind::Rk4;
-    flightSettings.dtS = m_settings.dtS;
-    if (m_birdFlight)
+    flightSettings.dtS = m_bodies.settings().dtS;
+    if (m_flight)
     {
         // The flight goes on from where it is under the new forces; its time origin (gusts) stays the launch.
-        const double t = m_birdFlight->time();
-        const FlightState s = m_birdFlight->state();
-        m_birdFlight = std::make_unique<FlightIntegrator>(model, flightSettings);
-        m_birdFlight->reset(t, s);
+        const double t = m_flight->time();
+        const FlightState s = m_flight->state();
+        m_flight = std::make_unique<FlightIntegrator>(model, flightSettings);
+        m_flight->reset(t, s);
     }
-    m_birdModel = std::make_unique<FlightIntegrator>(model, flightSettings);
+    m_model = std::make_unique<FlightIntegrator>(model, flightSettings);
 }
 
-int GameWorld::launchBird(const BirdType& bird, const FlightModel& model, const FlightState& s0)
+int BirdFlight::launch(const BirdType& bird, const FlightModel& model, const FlightState& s0)
 {
     removeAllBirds();
     Entity entity;
@@ -83,132 +83,137 @@ int GameWorld::launchBird(const BirdType& bird, const FlightModel& model, const 
     entity.typeName = bird.name;
     entity.shape = BlockShape::Circle;
     entity.widthM = entity.heightM = 2.0 * bird.radiusM;
-    m_birdIndex = addEntity(entity);
+    m_birdIndex = m_bodies.addEntity(entity);
     m_birdType = bird;
     // Free flight follows the model (true mass and size); Box2D collides the body it can simulate well.
     const BirdBody collision = birdBody(bird);
-    b2Body* body =
-        createBirdBody(m_birdIndex, collision.radiusM, collision.massKg, bird.friction, bird.restitution, s0);
+    b2Body* body = createBody(m_birdIndex, collision.radiusM, collision.massKg, bird.friction, bird.restitution, s0);
     body->SetGravityScale(0.0f); // in free flight the flight model supplies every force
 
     IntegratorSettings flightSettings;
     flightSettings.stepper = StepperKind::Rk4;
-    flightSettings.dtS = m_settings.dtS;
-    m_birdFlight = std::make_unique<FlightIntegrator>(model, flightSettings);
-    m_birdFlight->reset(0.0, s0);
-    m_birdModel = std::make_unique<FlightIntegrator>(model, flightSettings);
-    m_birdLaunchTime = m_time;
-    m_birdSlowSinceS = -1.0;
-    m_birdGroundSinceS = -1.0;
-    m_birdTouched = false;
+    flightSettings.dtS = m_bodies.settings().dtS;
+    m_flight = std::make_unique<FlightIntegrator>(model, flightSettings);
+    m_flight->reset(0.0, s0);
+    m_model = std::make_unique<FlightIntegrator>(model, flightSettings);
+    m_launchTimeS = m_bodies.time();
+    m_slowSinceS = -1.0;
+    m_groundSinceS = -1.0;
+    m_touched = false;
     m_shotContactTimeS.reset();
     m_abilityUsed = false;
-    m_birdContact.reset();
-    m_birdContactKind.reset();
-    m_birdImpact.reset();
-    m_birdPath.assign(1, {0.0, s0[0], s0[1]});
-    m_contacts->watchBird(body);
+    m_contact.reset();
+    m_contactKind.reset();
+    m_impacts.reset();
+    m_path.assign(1, {0.0, s0[0], s0[1]});
+    m_bodies.contacts().watchBird(body);
     return m_birdIndex;
 }
 
-void GameWorld::removeBird()
+void BirdFlight::removeBird()
 {
     if (m_birdIndex < 0)
         return;
-    Entity& bird = m_entities[static_cast<std::size_t>(m_birdIndex)];
-    if (bird.body != nullptr)
-        m_world->DestroyBody(bird.body);
-    bird.body = nullptr;
-    bird.alive = false;
+    m_bodies.removeBody(m_birdIndex);
     m_birdIndex = -1;
-    m_birdFlight.reset();
-    m_birdModel.reset();
-    m_contacts->watchBird(nullptr);
+    m_flight.reset();
+    m_model.reset();
+    m_bodies.contacts().watchBird(nullptr);
 }
 
-void GameWorld::removeProjectile(std::size_t slot)
+void BirdFlight::removeProjectile(std::size_t slot)
 {
-    Entity& entity = m_entities[static_cast<std::size_t>(m_projectiles[slot].index)];
-    if (entity.body != nullptr)
-        m_world->DestroyBody(entity.body);
-    entity.body = nullptr;
-    entity.alive = false;
+    m_bodies.removeBody(m_projectiles[slot].index);
     m_projectiles.erase(m_projectiles.begin() + static_cast<std::ptrdiff_t>(slot));
 }
 
-void GameWorld::removeAllBirds()
+void BirdFlight::removeProjectileOf(int index)
+{
+    for (std::size_t slot = 0; slot < m_projectiles.size(); ++slot)
+        if (m_projectiles[slot].index == index)
+        {
+            removeProjectile(slot);
+            return;
+        }
+}
+
+void BirdFlight::removeAllBirds()
 {
     removeBird();
     while (!m_projectiles.empty())
         removeProjectile(m_projectiles.size() - 1);
 }
 
-const Entity* GameWorld::bird() const
+FlightState BirdFlight::state() const
 {
-    return m_birdIndex >= 0 ? &m_entities[static_cast<std::size_t>(m_birdIndex)] : nullptr;
-}
-
-FlightState GameWorld::birdState() const
-{
-    if (m_birdFlight)
-        return m_birdFlight->state();
-    const b2Body* body = m_entities[static_cast<std::size_t>(m_birdIndex)].body;
+    if (m_flight)
+        return m_flight->state();
+    const b2Body* body = m_bodies.entity(m_birdIndex).body;
     const b2Vec2 p = body->GetPosition();
     const b2Vec2 v = body->GetLinearVelocity();
     return {p.x, p.y, v.x, v.y};
 }
 
-void GameWorld::setBirdVelocity(double vx, double vy)
+void BirdFlight::setVelocity(double vx, double vy)
 {
-    if (m_birdFlight)
+    if (m_flight)
     {
         // Re-seed the flight from the new state: the bird keeps following RK4, from here on along a new path.
-        const FlightState s = m_birdFlight->state();
-        m_birdFlight->reset(m_birdFlight->time(), {s[0], s[1], vx, vy});
+        const FlightState s = m_flight->state();
+        m_flight->reset(m_flight->time(), {s[0], s[1], vx, vy});
         return;
     }
-    m_entities[static_cast<std::size_t>(m_birdIndex)].body->SetLinearVelocity(
-        b2Vec2(static_cast<float>(vx), static_cast<float>(vy)));
+    m_bodies.entity(m_birdIndex).body->SetLinearVelocity(b2Vec2(static_cast<float>(vx), static_cast<float>(vy)));
 }
 
-int GameWorld::addProjectile(const std::string& typeName, double radiusM, double massKg, const FlightState& s,
-                             const FlightModel& model)
+void BirdFlight::addProjectile(const ProjectileSpec& spec)
 {
     Entity entity;
     entity.kind = EntityKind::Bird;
-    entity.typeName = typeName;
+    entity.typeName = spec.typeName;
     entity.shape = BlockShape::Circle;
-    entity.widthM = entity.heightM = 2.0 * radiusM;
-    const int index = addEntity(entity);
-    createBirdBody(index, radiusM, massKg, m_birdType.friction, m_birdType.restitution, s);
+    entity.widthM = entity.heightM = 2.0 * spec.radiusM;
+    entity.causeAs = spec.causeAs;
+    const int index = m_bodies.addEntity(entity);
+    createBody(index, spec.radiusM, spec.massKg, m_birdType.friction, m_birdType.restitution, spec.state);
     IntegratorSettings flightSettings;
-    flightSettings.dtS = m_settings.dtS;
+    flightSettings.dtS = m_bodies.settings().dtS;
     Projectile projectile;
     projectile.index = index;
-    projectile.launchTimeS = m_time;
-    projectile.shotStartS = m_birdLaunchTime;
-    projectile.model = std::make_unique<FlightIntegrator>(model, flightSettings);
+    projectile.launchTimeS = m_bodies.time();
+    projectile.shotStartS = m_launchTimeS;
+    projectile.model = std::make_unique<FlightIntegrator>(spec.model, flightSettings);
     m_projectiles.push_back(std::move(projectile));
-    return index;
 }
 
-void GameWorld::driveBirdFlight()
+std::array<double, 2> BirdFlight::beforeStep()
 {
-    b2Body* body = m_entities[static_cast<std::size_t>(m_birdIndex)].body;
-    if (m_birdFlight)
+    std::array<double, 2> birdStart{};
+    if (m_birdIndex >= 0)
     {
-        // Aim Box2D's own position update (x += h v) at the next RK4 state: the bird follows the RK4 path
-        // exactly, and its bullet time-of-impact sweeps the same chord the preview casts.
-        const FlightStep& step = m_birdFlight->step();
-        m_birdStepStart = step.s0;
-        const b2Vec2 target(static_cast<float>(step.s1[0]), static_cast<float>(step.s1[1]));
-        body->SetLinearVelocity((1.0f / static_cast<float>(m_settings.dtS)) * (target - body->GetPosition()));
-        return;
+        b2Body* body = m_bodies.entity(m_birdIndex).body;
+        const b2Vec2 p = body->GetPosition();
+        birdStart = {p.x, p.y};
+        if (m_flight)
+        {
+            // Aim Box2D's own position update (x += h v) at the next RK4 state: the bird follows the RK4 path
+            // exactly, and its bullet time-of-impact sweeps the same chord the preview casts.
+            const FlightStep& step = m_flight->step();
+            m_stepStart = step.s0;
+            const b2Vec2 target(static_cast<float>(step.s1[0]), static_cast<float>(step.s1[1]));
+            body->SetLinearVelocity((1.0f / static_cast<float>(m_bodies.settings().dtS)) *
+                                    (target - body->GetPosition()));
+        }
+        else
+            applyFlightForces(body, *m_model, m_bodies.time() - m_launchTimeS);
     }
-    applyFlightForces(body, *m_birdModel, m_time - m_birdLaunchTime);
+    for (const Projectile& projectile : m_projectiles)
+        applyFlightForces(m_bodies.entity(projectile.index).body, *projectile.model,
+                          m_bodies.time() - projectile.shotStartS);
+    return birdStart;
 }
 
-void GameWorld::applyFlightForces(b2Body* body, const FlightIntegrator& model, double sinceLaunchS)
+void BirdFlight::applyFlightForces(b2Body* body, const FlightIntegrator& model, double sinceLaunchS)
 {
     // Box2D owns the body; the flight model's forces other than gravity (which the world applies) still act on
     // it: drag and wind, from the same right-hand side.
@@ -227,7 +232,7 @@ void GameWorld::applyFlightForces(b2Body* body, const FlightIntegrator& model, d
     const std::array<double, 2> gust = m.gusts ? m.gusts->windAt(sinceLaunchS) : std::array<double, 2>{0.0, 0.0};
     const double relX = s[2] - (m.windX + gust[0]);
     const double relY = s[3] - (m.windY + gust[1]);
-    const double change = std::hypot(ax, ay) * m_settings.dtS;
+    const double change = std::hypot(ax, ay) * m_bodies.settings().dtS;
     const double relative = std::hypot(relX, relY);
     if (change > relative && change > 0.0)
     {
@@ -238,52 +243,57 @@ void GameWorld::applyFlightForces(b2Body* body, const FlightIntegrator& model, d
     body->ApplyForceToCenter(b2Vec2(static_cast<float>(mass * ax), static_cast<float>(mass * ay)), true);
 }
 
-void GameWorld::finishBirdStep(const std::array<double, 2>& stepStart)
+void BirdFlight::afterStep(const std::array<double, 2>& stepStart)
 {
-    b2Body* body = m_entities[static_cast<std::size_t>(m_birdIndex)].body;
-    const double sinceLaunch = m_time - m_birdLaunchTime;
-    if (!m_birdContact && m_contacts->birdTouch())
+    if (m_birdIndex < 0)
+        return;
+    b2Body* body = m_bodies.entity(m_birdIndex).body;
+    const double dtS = m_bodies.settings().dtS;
+    const double sinceLaunch = m_bodies.time() - m_launchTimeS;
+    const ContactRecorder& contacts = m_bodies.contacts();
+    if (!m_contact && contacts.birdTouch())
     {
         // The touch happened on this step's chord (the RK4 chord in free flight, Box2D's move otherwise): its time
         // is the fraction of the chord travelled.
-        const b2Vec2 touch = *m_contacts->birdTouch();
-        const double x0 = m_birdFlight ? m_birdStepStart[0] : stepStart[0];
-        const double y0 = m_birdFlight ? m_birdStepStart[1] : stepStart[1];
-        const double dx = (m_birdFlight ? m_birdFlight->state()[0] : body->GetPosition().x) - x0;
-        const double dy = (m_birdFlight ? m_birdFlight->state()[1] : body->GetPosition().y) - y0;
+        const b2Vec2 touch = *contacts.birdTouch();
+        const double x0 = m_flight ? m_stepStart[0] : stepStart[0];
+        const double y0 = m_flight ? m_stepStart[1] : stepStart[1];
+        const double dx = (m_flight ? m_flight->state()[0] : body->GetPosition().x) - x0;
+        const double dy = (m_flight ? m_flight->state()[1] : body->GetPosition().y) - y0;
         const double length2 = dx * dx + dy * dy;
         double fraction = 1.0;
         if (length2 > 0.0)
             fraction = std::clamp(((touch.x - x0) * dx + (touch.y - y0) * dy) / length2, 0.0, 1.0);
-        const double t = sinceLaunch - m_settings.dtS + fraction * m_settings.dtS;
-        m_birdContact = ContactPoint{t, touch.x, touch.y};
-        const int other = m_contacts->birdTouchOther();
+        const double t = sinceLaunch - dtS + fraction * dtS;
+        m_contact = ContactPoint{t, touch.x, touch.y};
+        const int other = contacts.birdTouchOther();
         if (other >= 0)
-            m_birdContactKind = m_entities[static_cast<std::size_t>(other)].kind;
-        if (m_birdFlight)
-            recordFirstImpact(other, t);
-        m_birdPath.push_back({t, touch.x, touch.y});
-        m_birdFlight.reset();
+            m_contactKind = m_bodies.entity(other).kind;
+        if (m_flight)
+            m_impacts.record(m_birdIndex, other, t);
+        m_path.push_back({t, touch.x, touch.y});
+        m_flight.reset();
         body->SetGravityScale(1.0f);
     }
     const b2Vec2 p = body->GetPosition();
-    m_birdPath.push_back({sinceLaunch, p.x, p.y});
+    m_path.push_back({sinceLaunch, p.x, p.y});
 }
 
-void GameWorld::retireBirds()
+void BirdFlight::retire()
 {
+    const double now = m_bodies.time();
     // What the birds began to touch in this step: the shot's first contact, and when each first met the ground.
-    for (const auto& [birdIndex, other] : m_contacts->birdTouches())
+    for (const auto& [birdIndex, other] : m_bodies.contacts().birdTouches())
     {
-        const bool ground = other >= 0 && (m_entities[static_cast<std::size_t>(other)].kind == EntityKind::Ground ||
-                                           m_entities[static_cast<std::size_t>(other)].kind == EntityKind::Terrain);
+        const bool ground = other >= 0 && (m_bodies.entity(other).kind == EntityKind::Ground ||
+                                           m_bodies.entity(other).kind == EntityKind::Terrain);
         if (birdIndex == m_birdIndex)
         {
-            m_birdTouched = true;
-            if (ground && m_birdGroundSinceS < 0.0)
-                m_birdGroundSinceS = m_time;
+            m_touched = true;
+            if (ground && m_groundSinceS < 0.0)
+                m_groundSinceS = now;
             if (!m_shotContactTimeS)
-                m_shotContactTimeS = m_birdContact ? m_birdLaunchTime + m_birdContact->t : m_time;
+                m_shotContactTimeS = m_contact ? m_launchTimeS + m_contact->t : now;
             continue;
         }
         for (Projectile& projectile : m_projectiles)
@@ -291,70 +301,56 @@ void GameWorld::retireBirds()
             {
                 projectile.touched = true;
                 if (ground && projectile.groundSinceS < 0.0)
-                    projectile.groundSinceS = m_time;
+                    projectile.groundSinceS = now;
                 // The split birds are the shot's birds too; an egg is not.
-                if (!m_shotContactTimeS && m_entities[static_cast<std::size_t>(birdIndex)].typeName != "egg")
-                    m_shotContactTimeS = m_time;
+                if (!m_shotContactTimeS && m_bodies.entity(birdIndex).causeAs == CauseKind::Bird)
+                    m_shotContactTimeS = now;
             }
     }
 
-    const auto slowFor = [this](const b2Body* body, double& slowSinceS, bool mayRest)
+    const auto slowFor = [now](const b2Body* body, double& slowSinceS, bool mayRest)
     {
         const bool slow = mayRest && body->GetLinearVelocity().Length() < kBirdRestSpeedMps;
         if (!slow)
             slowSinceS = -1.0;
         else if (slowSinceS < 0.0)
-            slowSinceS = m_time;
-        return slow ? m_time - slowSinceS : 0.0;
+            slowSinceS = now;
+        return slow ? now - slowSinceS : 0.0;
     };
-    const auto done = [this](double rested, double groundSinceS, double launchedS)
+    const auto done = [now](double rested, double groundSinceS, double launchedS)
     {
-        return rested >= kBirdRestS - 1e-9 || (groundSinceS >= 0.0 && m_time - groundSinceS >= kBirdGroundS - 1e-9) ||
-               m_time - launchedS >= kBirdLifetimeS - 1e-9;
+        return rested >= kBirdRestS - 1e-9 || (groundSinceS >= 0.0 && now - groundSinceS >= kBirdGroundS - 1e-9) ||
+               now - launchedS >= kBirdLifetimeS - 1e-9;
     };
     if (m_birdIndex >= 0)
     {
-        const b2Body* body = m_entities[static_cast<std::size_t>(m_birdIndex)].body;
-        const double rested = slowFor(body, m_birdSlowSinceS, m_birdTouched && !birdInFreeFlight());
-        if (done(rested, m_birdGroundSinceS, m_birdLaunchTime))
+        const b2Body* body = m_bodies.entity(m_birdIndex).body;
+        const double rested = slowFor(body, m_slowSinceS, m_touched && !inFreeFlight());
+        if (done(rested, m_groundSinceS, m_launchTimeS))
         {
-            puff(m_birdIndex);
+            m_bodies.puff(m_birdIndex);
             removeBird();
         }
     }
     for (std::size_t slot = m_projectiles.size(); slot-- > 0;)
     {
         Projectile& projectile = m_projectiles[slot];
-        const b2Body* body = m_entities[static_cast<std::size_t>(projectile.index)].body;
+        const b2Body* body = m_bodies.entity(projectile.index).body;
         const double rested = slowFor(body, projectile.slowSinceS, projectile.touched);
         if (done(rested, projectile.groundSinceS, projectile.launchTimeS))
         {
-            puff(projectile.index);
+            m_bodies.puff(projectile.index);
             removeProjectile(slot);
         }
     }
 }
 
-void GameWorld::puff(int index)
-{
-    const Entity& e = m_entities[static_cast<std::size_t>(index)];
-    if (e.body == nullptr)
-        return;
-    DestroyedEvent event;
-    event.kind = EntityKind::Bird;
-    event.typeName = e.typeName;
-    event.x = e.body->GetPosition().x;
-    event.y = e.body->GetPosition().y;
-    event.timeS = m_time;
-    m_destroyed.push_back(event);
-}
-
-void GameWorld::retireAllBirds()
+void BirdFlight::retireAll()
 {
     if (m_birdIndex >= 0)
-        puff(m_birdIndex);
+        m_bodies.puff(m_birdIndex);
     for (const Projectile& projectile : m_projectiles)
-        puff(projectile.index);
+        m_bodies.puff(projectile.index);
     removeAllBirds();
 }
 

@@ -1,14 +1,14 @@
-#include "world/ContactRecorder.hpp"
 #include "world/Skin.hpp"
+#include "world/WorldBodies.hpp"
 
-#include <abalike/world/GameWorld.hpp>
 #include <box2d/b2_time_of_impact.h>
 #include <cmath>
 
 namespace abalike
 {
 
-std::optional<double> GameWorld::castCircle(double radiusM, const FlightState& a, const FlightState& b) const
+std::optional<double> WorldBodies::castCircle(double radiusM, const FlightState& a, const FlightState& b,
+                                              int pieces) const
 {
     const b2Vec2 pa(static_cast<float>(a[0]), static_cast<float>(a[1]));
     const b2Vec2 pb(static_cast<float>(b[0]), static_cast<float>(b[1]));
@@ -41,8 +41,6 @@ std::optional<double> GameWorld::castCircle(double radiusM, const FlightState& a
     // bird an equal share of the chord in each; Box2D starts a contact in two ways, and the preview must see both
     // in every one of them: at the start of a sub-step when the shapes' skins already overlap (b2Contact::Update),
     // or by time of impact inside it (b2World::SolveTOI).
-    const double chordM = std::hypot(b[0] - a[0], b[1] - a[1]);
-    const int pieces = substepsFor(chordM / m_settings.dtS);
     for (int piece = 0; piece < pieces; ++piece)
     {
         const double s0 = static_cast<double>(piece) / pieces;

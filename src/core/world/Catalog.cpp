@@ -1,4 +1,8 @@
+#include "level/JsonLocator.hpp"
+#include "level/LevelReader.hpp"
+
 #include <abalike/world/Catalog.hpp>
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -34,9 +38,61 @@ const T* findByName(const std::vector<T>& items, std::string_view name)
     return nullptr;
 }
 
+/// Thrown for a name that matches nothing; fromJson adds the file, line and column.
+struct UnknownName
+{
+    std::string pointer;
+    std::string message;
+};
+
+/// "unknown ability "boomrang" (did you mean "boost"?)", or the list of known names when none is close.
+std::string unknownAbility(const std::string& name)
+{
+    std::vector<std::string> known = AbilityRegistry::names();
+    std::string message = "unknown ability \"" + name + "\"";
+    if (const auto suggestion = closestMatch(name, known))
+        return message + " (did you mean \"" + *suggestion + "\"?)";
+    known.insert(known.begin(), std::string(kNoAbility));
+    message += " (expected one of:";
+    for (std::size_t i = 0; i < known.size(); ++i)
+        message += (i == 0 ? " " : ", ") + known[i];
+    return message + ")";
+}
+
+/// The abilities the birds name, made with the catalog's numbers (its "abilities" block), in the order the birds
+/// use them, then any other the block configures.
+std::vector<std::shared_ptr<const Ability>> readAbilities(const json& root, std::vector<BirdType>& birds)
+{
+    const json none = json::object();
+    const json* block = root.contains("abilities") ? &root.at("abilities") : nullptr;
+    std::vector<std::shared_ptr<const Ability>> made;
+    const auto make = [&](const std::string& name, const std::string& pointer) -> std::shared_ptr<const Ability>
+    {
+        for (const auto& ability : made)
+            if (ability->name() == name)
+                return ability;
+        const AbilityFactory* factory = AbilityRegistry::find(name);
+        if (factory == nullptr)
+            throw UnknownName{pointer, unknownAbility(name)};
+        made.push_back((*factory)(block != nullptr && block->contains(name) ? block->at(name) : none));
+        return made.back();
+    };
+    const json& birdList = root.at("birds");
+    for (std::size_t i = 0; i < birds.size(); ++i)
+    {
+        const std::string name = birdList.at(i).at("ability").get<std::string>();
+        if (name != kNoAbility)
+            birds[i].ability = make(name, "/birds/" + std::to_string(i) + "/ability");
+    }
+    if (block != nullptr)
+        for (const auto& [name, params] : block->items())
+            make(name, "/abilities/" + jsonPointerToken(name));
+    return made;
+}
+
 } // namespace
 
-Catalog Catalog::fromJson(std::string_view text)
+Catalog Catalog::fromJson(std::string_view text, const std::string& fileName)
 {
     Catalog catalog;
     try
@@ -84,8 +140,7 @@ Catalog Catalog::fromJson(std::string_view text)
         {
             const std::string where = "bird " + b.at("name").get<std::string>();
             BirdType bird{b.at("name").get<std::string>(), positive(b, "mass_kg", where),
-                          positive(b, "radius_m", where), positive(b, "drag_coefficient", where),
-                          b.at("ability").get<std::string>()};
+                          positive(b, "radius_m", where), positive(b, "drag_coefficient", where)};
             bird.friction = b.value("friction", bird.friction);
             bird.restitution = b.value("restitution", bird.restitution);
             catalog.m_birds.push_back(std::move(bird));
@@ -111,30 +166,17 @@ Catalog Catalog::fromJson(std::string_view text)
             if (!(catalog.m_playerAim.angleSigmaDeg >= 0.0) || !(catalog.m_playerAim.pullSigma >= 0.0))
                 throw std::runtime_error("model_player: the aim's standard deviations must be >= 0");
         }
-        if (root.contains("abilities"))
-        {
-            const json& a = root.at("abilities");
-            AbilityParams& params = catalog.m_abilities;
-            if (a.contains("split"))
-                params.splitAngleDeg = positive(a.at("split"), "angle_deg", "abilities.split");
-            if (a.contains("boost"))
-                params.boostSpeedGainMps = positive(a.at("boost"), "speed_gain_mps", "abilities.boost");
-            if (a.contains("explode"))
-            {
-                params.explodeRadiusM = positive(a.at("explode"), "radius_m", "abilities.explode");
-                params.explodeImpulseNs = positive(a.at("explode"), "impulse_ns", "abilities.explode");
-            }
-            if (a.contains("egg"))
-            {
-                params.eggMassKg = positive(a.at("egg"), "mass_kg", "abilities.egg");
-                params.eggRadiusM = positive(a.at("egg"), "radius_m", "abilities.egg");
-                params.eggPushSpeedMps = positive(a.at("egg"), "push_speed_mps", "abilities.egg");
-            }
-        }
+        catalog.m_abilities = readAbilities(root, catalog.m_birds);
+    }
+    catch (const UnknownName& e)
+    {
+        const auto [line, column] = JsonLocator(text).locate(e.pointer);
+        throw std::runtime_error(fileName + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
+                                 e.pointer + ": " + e.message);
     }
     catch (const json::exception& e)
     {
-        throw std::runtime_error(std::string("catalog: ") + e.what());
+        throw std::runtime_error(fileName + ": " + e.what());
     }
     return catalog;
 }
@@ -143,6 +185,14 @@ const Catalog& Catalog::builtin()
 {
     static const Catalog catalog = fromJson(embedded::kCatalogJson);
     return catalog;
+}
+
+const Ability* Catalog::findAbility(std::string_view name) const
+{
+    for (const auto& ability : m_abilities)
+        if (ability->name() == name)
+            return ability.get();
+    return nullptr;
 }
 
 const Material* Catalog::findMaterial(std::string_view name) const

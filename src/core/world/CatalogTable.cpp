@@ -88,22 +88,13 @@ std::string catalogMarkdown(const Catalog& catalog)
         const double v0 = SlingshotBand(sling, b.massKg, catalog.maxLaunchSpeedMps()).maxSpeedMps();
         md << "| " << b.name << " | " << fixed(b.massKg, 1) << " | " << fixed(b.radiusM, 2) << " | "
            << fixed(b.dragCoefficient, 2) << " | " << fixed(b.friction, 2) << " | " << fixed(b.restitution, 2) << " | "
-           << b.ability << " | " << fixed(v0, 1) << " | " << fixed(b.massKg * v0, 0) << " |\n";
+           << b.abilityName() << " | " << fixed(v0, 1) << " | " << fixed(b.massKg * v0, 0) << " |\n";
     }
 
-    const AbilityParams& a = catalog.abilities();
     md << "\n## Abilities (click or Space in flight)\n\n"
-       << "| Ability | Parameters | What it does |\n|---|---|---|\n"
-       << "| split | " << fixed(a.splitAngleDeg, 1)
-       << " deg | two more birds of the same kind at +-angle from the velocity, same speed; the bird flies on |\n"
-       << "| boost | +" << fixed(a.boostSpeedGainMps, 1) << " m/s | impulse m dv along the current velocity |\n"
-       << "| explode | R = " << fixed(a.explodeRadiusM, 1) << " m, J = " << fixed(a.explodeImpulseNs, 0)
-       << " N s | radial impulse J (1 - d/R) on every block and pig within R, absorbed as damage too; the bird is "
-          "gone |\n"
-       << "| egg | " << fixed(a.eggMassKg, 1) << " kg, r = " << fixed(a.eggRadiusM, 2) << " m, "
-       << fixed(a.eggPushSpeedMps, 1)
-       << " m/s | the egg leaves downwards that much faster than the bird; the bird gets the equal and opposite "
-          "impulse upwards |\n";
+       << "| Ability | Parameters | What it does |\n|---|---|---|\n";
+    for (const auto& ability : catalog.abilities())
+        md << "| " << ability->name() << " | " << ability->parameters() << " | " << ability->description() << " |\n";
 
     md << "\n## Pigs\n\n"
        << "| Pig | Radius (m) | Mass (kg) | Health (N s) | Points | Helmet |\n|---|---:|---:|---:|---:|---|\n";

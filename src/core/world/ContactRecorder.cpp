@@ -5,7 +5,7 @@
 namespace abalike
 {
 
-void GameWorld::ContactRecorder::BeginContact(b2Contact* contact)
+void ContactRecorder::BeginContact(b2Contact* contact)
 {
     b2Body* a = contact->GetFixtureA()->GetBody();
     b2Body* b = contact->GetFixtureB()->GetBody();
@@ -27,7 +27,7 @@ void GameWorld::ContactRecorder::BeginContact(b2Contact* contact)
     }
 }
 
-void GameWorld::ContactRecorder::PreSolve(b2Contact* contact, const b2Manifold* /*oldManifold*/)
+void ContactRecorder::PreSolve(b2Contact* contact, const b2Manifold* /*oldManifold*/)
 {
     // Closing speed along the normal before the solver acts: what tells an impact from resting contact.
     b2WorldManifold manifold;
@@ -64,7 +64,7 @@ void GameWorld::ContactRecorder::PreSolve(b2Contact* contact, const b2Manifold* 
         m_closingSpeed.erase(contact);
 }
 
-void GameWorld::ContactRecorder::PostSolve(b2Contact* contact, const b2ContactImpulse* impulse)
+void ContactRecorder::PostSolve(b2Contact* contact, const b2ContactImpulse* impulse)
 {
     const auto it = m_closingSpeed.find(contact);
     if (it == m_closingSpeed.end() || it->second < m_threshold)

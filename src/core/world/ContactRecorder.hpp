@@ -1,6 +1,5 @@
 #pragma once
 
-#include <abalike/world/GameWorld.hpp>
 #include <box2d/box2d.h>
 #include <optional>
 #include <unordered_map>
@@ -15,9 +14,9 @@ inline int entityIndexOf(b2Body* body)
     return static_cast<int>(body->GetUserData().pointer) - 1; // GetUserData() is non-const in Box2D 2.4
 }
 
-/// Records what happens during a Box2D step; GameWorld acts on it after the step, because bodies cannot be
-/// destroyed inside callbacks.
-class GameWorld::ContactRecorder final : public b2ContactListener
+/// Records what happens during a Box2D step; the world's parts act on it after the step, because bodies cannot be
+/// destroyed inside callbacks (Box2D 2.4's rule).
+class ContactRecorder final : public b2ContactListener
 {
 public:
     /// contactGap: see WorldSettings::contactGapM (negative: every touching contact acts, as in plain Box2D).

@@ -1,51 +1,12 @@
-#include "world/ContactRecorder.hpp"
+#include "world/Damage.hpp"
 
-#include <abalike/world/GameWorld.hpp>
+#include "world/WorldBodies.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace abalike
 {
-
-const char* entityKindName(EntityKind kind)
-{
-    switch (kind)
-    {
-    case EntityKind::Ground:
-        return "ground";
-    case EntityKind::Terrain:
-        return "terrain";
-    case EntityKind::Block:
-        return "block";
-    case EntityKind::Pig:
-        return "pig";
-    case EntityKind::Bird:
-        return "bird";
-    }
-    return "unknown";
-}
-
-const char* causeKindName(CauseKind kind)
-{
-    switch (kind)
-    {
-    case CauseKind::Bird:
-        return "bird";
-    case CauseKind::Block:
-        return "block";
-    case CauseKind::Pig:
-        return "pig";
-    case CauseKind::Explosion:
-        return "explosion";
-    case CauseKind::Egg:
-        return "egg";
-    case CauseKind::Ground:
-        return "ground";
-    case CauseKind::OutOfBounds:
-        return "out_of_bounds";
-    }
-    return "ground";
-}
 
 namespace
 {
@@ -55,39 +16,41 @@ bool damageable(const Entity& e)
 }
 } // namespace
 
-void GameWorld::applyDamage()
+void Damage::applyStep(int watched)
 {
+    const std::vector<Entity>& entities = m_bodies.entities();
+    const ContactRecorder& contacts = m_bodies.contacts();
     // Process in index order so results never depend on hash-map iteration order.
-    std::vector<std::pair<int, double>> totals(m_contacts->impulses().begin(), m_contacts->impulses().end());
+    std::vector<std::pair<int, double>> totals(contacts.impulses().begin(), contacts.impulses().end());
     std::sort(totals.begin(), totals.end());
     // A body breaks when the step's impacts reach its remaining strength H; of their total J it absorbs only H,
     // the share H / J of each contact impulse (keptShare; 1 for bodies that hold).
-    std::vector<double> keptShare(m_entities.size(), 1.0);
+    std::vector<double> keptShare(entities.size(), 1.0);
     bool anyBreaks = false;
-    m_impactRefund = {0.0, 0.0};
+    m_watchedRefund = {0.0, 0.0};
     for (const auto& [index, impulse] : totals)
     {
-        const Entity& e = m_entities[static_cast<std::size_t>(index)];
+        const Entity& e = entities[static_cast<std::size_t>(index)];
         if (damageable(e) && impulse >= e.health && impulse > 0.0)
         {
             keptShare[static_cast<std::size_t>(index)] = e.health / impulse;
             anyBreaks = true;
         }
     }
-    if (anyBreaks && m_settings.breakThrough)
-        refundBreakingContacts(keptShare);
+    if (anyBreaks && m_bodies.settings().breakThrough)
+        refundBreakingContacts(keptShare, watched);
     for (const auto& [index, impulse] : totals)
-        if (damageable(m_entities[static_cast<std::size_t>(index)]))
+        if (damageable(entities[static_cast<std::size_t>(index)]))
             damageEntity(index, impulse, causeOf(index));
     explodeCrates();
 }
 
-void GameWorld::refundBreakingContacts(const std::vector<double>& keptShare)
+void Damage::refundBreakingContacts(const std::vector<double>& keptShare, int watched)
 {
     // The solver stopped the striker as if the struck body were unbreakable. A brittle body cannot push back more
     // than its strength: give each surviving partner the rest of the impulse back along the normal, at the contact
     // point. In bookkeeping terms the broken body carried that impulse away with it (the first impact's record).
-    for (const ContactRecorder::Hit& hit : m_contacts->hits())
+    for (const ContactRecorder::Hit& hit : m_bodies.contacts().hits())
     {
         for (const bool brokenIsA : {true, false})
         {
@@ -96,7 +59,7 @@ void GameWorld::refundBreakingContacts(const std::vector<double>& keptShare)
             if (broken < 0 || partner < 0 || keptShare[static_cast<std::size_t>(broken)] >= 1.0 ||
                 keptShare[static_cast<std::size_t>(partner)] < 1.0)
                 continue; // nothing broke, or both did: neither survives to be refunded
-            b2Body* body = m_entities[static_cast<std::size_t>(partner)].body;
+            b2Body* body = m_bodies.entity(partner).body;
             if (body == nullptr || body->GetType() != b2_dynamicBody)
                 continue;
             const double refund = (1.0 - keptShare[static_cast<std::size_t>(broken)]) * hit.impulseNs;
@@ -104,17 +67,17 @@ void GameWorld::refundBreakingContacts(const std::vector<double>& keptShare)
             const float sign = brokenIsA ? -1.0f : 1.0f;
             const b2Vec2 impulse = (sign * static_cast<float>(refund)) * hit.normal;
             body->ApplyLinearImpulse(impulse, hit.point, true);
-            if (broken == m_impactEntity)
-                m_impactRefund = {m_impactRefund[0] + impulse.x, m_impactRefund[1] + impulse.y};
+            if (broken == watched)
+                m_watchedRefund = {m_watchedRefund[0] + impulse.x, m_watchedRefund[1] + impulse.y};
         }
     }
 }
 
-DefeatCause GameWorld::causeOf(int index) const
+DefeatCause Damage::causeOf(int index) const
 {
     // The partner that delivered the most impulse to this body in the step, summed over its sub-steps.
     std::vector<std::pair<int, double>> byPartner;
-    for (const ContactRecorder::Hit& hit : m_contacts->hits())
+    for (const ContactRecorder::Hit& hit : m_bodies.contacts().hits())
     {
         if (hit.a != index && hit.b != index)
             continue;
@@ -136,7 +99,7 @@ DefeatCause GameWorld::causeOf(int index) const
         }
     if (strongest < 0)
         return {CauseKind::Ground, -1};
-    const Entity& e = m_entities[static_cast<std::size_t>(strongest)];
+    const Entity& e = m_bodies.entity(strongest);
     switch (e.kind)
     {
     case EntityKind::Block:
@@ -144,7 +107,7 @@ DefeatCause GameWorld::causeOf(int index) const
     case EntityKind::Pig:
         return {CauseKind::Pig, e.defIndex};
     case EntityKind::Bird:
-        return {e.typeName == "egg" ? CauseKind::Egg : CauseKind::Bird, -1};
+        return {e.causeAs, -1};
     case EntityKind::Ground:
     case EntityKind::Terrain:
         break;
@@ -152,30 +115,32 @@ DefeatCause GameWorld::causeOf(int index) const
     return {CauseKind::Ground, -1};
 }
 
-void GameWorld::damageEntity(int index, double impulseNs, const DefeatCause& cause)
+void Damage::damageEntity(int index, double impulseNs, const DefeatCause& cause)
 {
-    Entity& entity = m_entities[static_cast<std::size_t>(index)];
+    Entity& entity = m_bodies.entity(index);
     if (!damageable(entity))
         return;
     entity.health -= impulseNs;
     if (entity.health > 0.0)
         return;
     if (entity.kind == EntityKind::Block)
-        if (const Material* material = m_catalog.findMaterial(entity.typeName); material && material->blastRadiusM > 0)
+        if (const Material* material = m_bodies.catalog().findMaterial(entity.typeName);
+            material && material->blastRadiusM > 0)
             m_cratesToExplode.push_back(index);
-    destroyEntity(index, true, cause);
+    m_bodies.destroyEntity(index, true, cause);
 }
 
-void GameWorld::blast(double x, double y, double radiusM, double impulseNs, std::vector<AbilityImpulse>* impulses,
-                      double tS)
+void Damage::blast(double x, double y, double radiusM, double impulseNs, std::vector<AbilityImpulse>* impulses,
+                   double tS)
 {
     // Every block and pig whose centre is within R gets a radial impulse J (1 - d / R) and absorbs the same impulse
     // as damage: a block's strength is the impulse it can take, whether it comes through a contact or a blast.
     const b2Vec2 centre(static_cast<float>(x), static_cast<float>(y));
+    std::vector<Entity>& entities = m_bodies.entities();
     std::vector<std::pair<int, double>> hits;
-    for (std::size_t i = 0; i < m_entities.size(); ++i)
+    for (std::size_t i = 0; i < entities.size(); ++i)
     {
-        Entity& e = m_entities[i];
+        Entity& e = entities[i];
         if (!damageable(e) || e.body == nullptr)
             continue;
         const b2Vec2 offset = e.body->GetWorldCenter() - centre;
@@ -198,27 +163,28 @@ void GameWorld::blast(double x, double y, double radiusM, double impulseNs, std:
         damageEntity(index, magnitude, {CauseKind::Explosion, -1});
 }
 
-void GameWorld::explodeCrates()
+void Damage::explodeCrates()
 {
     // A crate that broke blasts where it was; a crate its blast breaks joins the queue: chains run in this step, in
     // the order the crates broke.
     for (std::size_t next = 0; next < m_cratesToExplode.size(); ++next)
     {
         const int index = m_cratesToExplode[next];
-        const Entity& crate = m_entities[static_cast<std::size_t>(index)];
-        const Material* material = m_catalog.findMaterial(crate.typeName);
-        const auto event = std::find_if(m_destroyed.rbegin(), m_destroyed.rend(),
+        const Entity& crate = m_bodies.entity(index);
+        const Material* material = m_bodies.catalog().findMaterial(crate.typeName);
+        const std::vector<DestroyedEvent>& destroyed = m_bodies.destroyed();
+        const auto event = std::find_if(destroyed.rbegin(), destroyed.rend(),
                                         [&](const DestroyedEvent& d)
                                         { return d.kind == EntityKind::Block && d.index == crate.defIndex; });
-        if (material == nullptr || event == m_destroyed.rend())
+        if (material == nullptr || event == destroyed.rend())
             continue;
-        m_blasts.push_back({m_time, event->x, event->y, material->blastRadiusM, crate.defIndex});
+        m_blasts.push_back({m_bodies.time(), event->x, event->y, material->blastRadiusM, crate.defIndex});
         blast(event->x, event->y, material->blastRadiusM, material->blastImpulseNs, nullptr, 0.0);
     }
     m_cratesToExplode.clear();
 }
 
-std::vector<BlastEvent> GameWorld::takeBlastEvents()
+std::vector<BlastEvent> Damage::takeBlastEvents()
 {
     std::vector<BlastEvent> events;
     events.swap(m_blasts);

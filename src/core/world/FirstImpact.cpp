@@ -1,7 +1,7 @@
-#include "world/ContactRecorder.hpp"
+#include "world/ImpactRecorder.hpp"
+#include "world/WorldBodies.hpp"
 
 #include <abalike/world/FirstImpact.hpp>
-#include <abalike/world/GameWorld.hpp>
 #include <algorithm>
 
 namespace abalike
@@ -66,41 +66,42 @@ std::optional<double> FirstImpact::restitution() const
     return std::max(0.0, -closing(birdAfter, bodyAfter) / before);
 }
 
-void GameWorld::finishImpactStep()
+void ImpactRecorder::finishStep(const std::array<double, 2>& refund, int birdIndex)
 {
-    if (m_impactEntity < 0 || !m_birdImpact)
+    if (m_pending < 0 || !m_impact)
         return;
-    const Entity& other = m_entities[static_cast<std::size_t>(m_impactEntity)];
-    m_impactEntity = -1;
-    m_birdImpact->broke = !other.alive;
-    if (m_birdImpact->broke)
+    const Entity& other = m_bodies.entity(m_pending);
+    m_pending = -1;
+    m_impact->broke = !other.alive;
+    if (m_impact->broke)
     {
         // It absorbed only its remaining strength; the impulse given back to the bird is momentum the broken body
-        // did not receive (GameWorld::refundBreakingContacts).
-        m_birdImpact->damageNs = std::min(m_birdImpact->damageNs, m_birdImpact->strengthBeforeNs);
-        m_birdImpact->bodyAfter.vx -= m_impactRefund[0] / m_birdImpact->bodyMassKg;
-        m_birdImpact->bodyAfter.vy -= m_impactRefund[1] / m_birdImpact->bodyMassKg;
+        // did not receive (Damage::refundBreakingContacts).
+        m_impact->damageNs = std::min(m_impact->damageNs, m_impact->strengthBeforeNs);
+        m_impact->bodyAfter.vx -= refund[0] / m_impact->bodyMassKg;
+        m_impact->bodyAfter.vy -= refund[1] / m_impact->bodyMassKg;
     }
-    if (m_birdIndex >= 0)
-        m_birdImpact->birdAfter = velocityOf(*m_entities[static_cast<std::size_t>(m_birdIndex)].body);
+    if (birdIndex >= 0)
+        m_impact->birdAfter = velocityOf(*m_bodies.entity(birdIndex).body);
 }
 
-void GameWorld::snapshotImpactVelocities()
+void ImpactRecorder::snapshot()
 {
     // Only while the bird flies free and has touched nothing: then the next contact may be its first impact, and
     // its "before" is the velocity every body has now, before Box2D steps.
-    m_stepStartVelocities.resize(m_entities.size());
-    for (std::size_t i = 0; i < m_entities.size(); ++i)
-        if (const b2Body* body = m_entities[i].body)
+    const std::vector<Entity>& entities = m_bodies.entities();
+    m_stepStartVelocities.resize(entities.size());
+    for (std::size_t i = 0; i < entities.size(); ++i)
+        if (const b2Body* body = entities[i].body)
             m_stepStartVelocities[i] = velocityOf(*body);
 }
 
-void GameWorld::recordFirstImpact(int otherIndex, double tS)
+void ImpactRecorder::record(int birdIndex, int otherIndex, double tS)
 {
     if (otherIndex < 0 || static_cast<std::size_t>(otherIndex) >= m_stepStartVelocities.size())
         return;
-    const Entity& other = m_entities[static_cast<std::size_t>(otherIndex)];
-    const Entity& bird = m_entities[static_cast<std::size_t>(m_birdIndex)];
+    const Entity& other = m_bodies.entity(otherIndex);
+    const Entity& bird = m_bodies.entity(birdIndex);
     if ((other.kind != EntityKind::Block && other.kind != EntityKind::Pig) || other.body == nullptr ||
         bird.body == nullptr)
         return;
@@ -115,22 +116,23 @@ void GameWorld::recordFirstImpact(int otherIndex, double tS)
     impact.bodyMassKg = other.body->GetMass();
     impact.bodyInertiaKgM2 =
         other.body->GetInertia() - other.body->GetMass() * other.body->GetLocalCenter().LengthSquared();
-    impact.birdBefore = m_stepStartVelocities[static_cast<std::size_t>(m_birdIndex)];
+    impact.birdBefore = m_stepStartVelocities[static_cast<std::size_t>(birdIndex)];
     impact.bodyBefore = m_stepStartVelocities[static_cast<std::size_t>(otherIndex)];
     impact.birdAfter = velocityOf(*bird.body);
     impact.bodyAfter = velocityOf(*other.body);
-    const b2Vec2 touch = *m_contacts->birdTouch();
+    const ContactRecorder& contacts = m_bodies.contacts();
+    const b2Vec2 touch = *contacts.birdTouch();
     impact.birdCentre = {touch.x, touch.y};
     impact.bodyCentre = {other.body->GetWorldCenter().x, other.body->GetWorldCenter().y};
-    impact.normal = {m_contacts->birdTouchNormal().x, m_contacts->birdTouchNormal().y};
+    impact.normal = {contacts.birdTouchNormal().x, contacts.birdTouchNormal().y};
     // The contact point is on the bird's surface along the normal (its designed radius).
     const double radius = 0.5 * bird.widthM;
     impact.point = {touch.x + radius * impact.normal[0], touch.y + radius * impact.normal[1]};
-    const auto damage = m_contacts->impulses().find(otherIndex);
-    impact.damageNs = damage == m_contacts->impulses().end() ? 0.0 : damage->second;
+    const auto damage = contacts.impulses().find(otherIndex);
+    impact.damageNs = damage == contacts.impulses().end() ? 0.0 : damage->second;
     impact.strengthBeforeNs = other.health;
-    m_birdImpact = impact;
-    m_impactEntity = otherIndex; // finishImpactStep completes the record once damage is applied
+    m_impact = impact;
+    m_pending = otherIndex; // finishStep completes the record once damage is applied
 }
 
 } // namespace abalike

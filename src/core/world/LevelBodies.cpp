@@ -1,8 +1,8 @@
 #include "level/Outline.hpp"
 #include "world/Fixtures.hpp"
 #include "world/Skin.hpp"
+#include "world/WorldBodies.hpp"
 
-#include <abalike/world/GameWorld.hpp>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -25,7 +25,7 @@ constexpr double kGroundSegmentM = 40.0;
 
 } // namespace
 
-void GameWorld::buildLevel()
+void WorldBodies::buildLevel()
 {
     double minX = m_level.slingshot.x;
     double maxX = m_level.slingshot.x;

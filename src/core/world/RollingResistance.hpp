@@ -1,6 +1,6 @@
 #pragma once
 
-#include <abalike/world/GameWorld.hpp>
+#include <abalike/world/Entity.hpp>
 #include <vector>
 
 namespace abalike

@@ -1,6 +1,8 @@
-#include "world/ContactRecorder.hpp"
+#include "world/SettleStep.hpp"
 
-#include <abalike/world/GameWorld.hpp>
+#include "world/WorldBodies.hpp"
+#include "world/WorldStepper.hpp"
+
 #include <abalike/world/SettleCache.hpp>
 #include <array>
 #include <box2d/box2d.h>
@@ -64,39 +66,42 @@ std::unordered_map<const b2Body*, std::int32_t> bodyPositions(b2World& world)
 
 } // namespace
 
-bool GameWorld::settleThroughCache()
+bool SettleStep::run(bool birdsInPlay)
 {
     // A bird launched before the first step flies through the settle step and may touch something in it: that
     // step is solved in place, as before the cache.
-    if (!m_settings.settleCache || m_settleIterations <= 0 || m_birdIndex >= 0 || !m_projectiles.empty())
+    if (!m_bodies.settings().settleCache || m_stepper.settleIterations() <= 0 || birdsInPlay)
         return false;
-    const std::uint64_t key = settleKey();
+    const std::uint64_t settleKey = key();
     SettleCache& cache = SettleCache::shared();
-    std::shared_ptr<const SettledState> state = cache.find(key);
-    m_settleReused = state && restoreSettled(*state);
-    if (m_settleReused)
-        m_settleSubstepsDone.store(m_lastSubsteps, std::memory_order_relaxed);
+    std::shared_ptr<const SettledState> state = cache.find(settleKey);
+    m_reused = state && restore(*state);
+    if (m_reused)
+        m_stepper.markSettleDone();
     else
     {
-        stepBox2d(true);
-        state = captureSettled();
-        cache.store(key, state);
+        m_stepper.stepBox2d(true);
+        state = capture();
+        cache.store(settleKey, state);
         // The same restore a start from the cache goes through: a new world built from the settled state, so
         // both start alike to the bit, whatever the settle step did to Box2D's broad phase on the way.
-        restoreSettled(*state);
+        restore(*state);
     }
-    m_contacts->clearStep(); // the settle step deals no damage
+    m_bodies.contacts().clearStep(); // the settle step deals no damage
     return true;
 }
 
-std::uint64_t GameWorld::settleKey() const
+std::uint64_t SettleStep::key() const
 {
+    const WorldSettings& settings = m_bodies.settings();
+    b2World& world = m_bodies.world();
     SettleKey key;
-    key.add(kSettleFormat).add(m_settings.dtS).add(m_settings.velocityIterations).add(m_settings.positionIterations);
-    key.add(m_settleIterations).add(m_lastSubsteps).add(m_settings.contactGapM).add(m_settings.cornerChamferM);
-    key.add(m_settings.rollingResistance ? m_catalog.rollingResistance() : 0.0).add(m_settings.allowSleep);
-    key.add(m_world->GetGravity());
-    for (const Entity& e : m_entities)
+    key.add(kSettleFormat).add(settings.dtS).add(settings.velocityIterations).add(settings.positionIterations);
+    key.add(m_stepper.settleIterations()).add(m_stepper.lastSubsteps()).add(settings.contactGapM);
+    key.add(settings.cornerChamferM);
+    key.add(settings.rollingResistance ? m_bodies.catalog().rollingResistance() : 0.0).add(settings.allowSleep);
+    key.add(world.GetGravity());
+    for (const Entity& e : m_bodies.entities())
         key.add(static_cast<int>(e.kind))
             .addText(e.typeName)
             .add(static_cast<int>(e.shape))
@@ -105,7 +110,7 @@ std::uint64_t GameWorld::settleKey() const
             .add(e.wallM)
             .add(e.alive)
             .add(e.body != nullptr);
-    for (b2Body* body = m_world->GetBodyList(); body != nullptr; body = body->GetNext())
+    for (b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext())
     {
         key.add(static_cast<int>(body->GetType())).add(body->GetPosition()).add(body->GetAngle());
         key.add(body->GetLinearVelocity()).add(body->GetAngularVelocity()).add(body->GetMass()).add(body->GetInertia());
@@ -121,8 +126,8 @@ std::uint64_t GameWorld::settleKey() const
             key.add(filter.categoryBits).add(filter.maskBits).add(filter.groupIndex);
         }
     }
-    const auto positions = bodyPositions(*m_world);
-    for (const b2Contact* contact = m_world->GetContactList(); contact != nullptr; contact = contact->GetNext())
+    const auto positions = bodyPositions(world);
+    for (const b2Contact* contact = world.GetContactList(); contact != nullptr; contact = contact->GetNext())
         key.add(positions.at(contact->GetFixtureA()->GetBody()))
             .add(positions.at(contact->GetFixtureB()->GetBody()))
             .add(contact->GetChildIndexA())
@@ -131,17 +136,18 @@ std::uint64_t GameWorld::settleKey() const
     return key.value();
 }
 
-std::shared_ptr<const SettledState> GameWorld::captureSettled() const
+std::shared_ptr<const SettledState> SettleStep::capture() const
 {
+    b2World& world = m_bodies.world();
     auto state = std::make_shared<SettledState>();
-    for (const b2Body* body = m_world->GetBodyList(); body != nullptr; body = body->GetNext())
+    for (const b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext())
     {
         const b2Vec2 p = body->GetPosition();
         const b2Vec2 v = body->GetLinearVelocity();
         state->bodies.push_back({p.x, p.y, body->GetAngle(), v.x, v.y, body->GetAngularVelocity()});
     }
-    const auto positions = bodyPositions(*m_world);
-    for (const b2Contact* contact = m_world->GetContactList(); contact != nullptr; contact = contact->GetNext())
+    const auto positions = bodyPositions(world);
+    for (const b2Contact* contact = world.GetContactList(); contact != nullptr; contact = contact->GetNext())
     {
         SettledState::Contact c{positions.at(contact->GetFixtureA()->GetBody()),
                                 positions.at(contact->GetFixtureB()->GetBody()), contact->GetChildIndexA(),
@@ -153,9 +159,9 @@ std::shared_ptr<const SettledState> GameWorld::captureSettled() const
     return state;
 }
 
-bool GameWorld::restoreSettled(const SettledState& state)
+bool SettleStep::restore(const SettledState& state)
 {
-    if (state.bodies.size() != static_cast<std::size_t>(m_world->GetBodyCount()))
+    if (state.bodies.size() != static_cast<std::size_t>(m_bodies.world().GetBodyCount()))
         return false;
     for (const SettledState::Body& b : state.bodies)
         if (!std::isfinite(b.x) || !std::isfinite(b.y) || !std::isfinite(b.angle) || !std::isfinite(b.vx) ||
@@ -165,20 +171,21 @@ bool GameWorld::restoreSettled(const SettledState& state)
         if (c.manifold.pointCount < 0 || c.manifold.pointCount > b2_maxManifoldPoints)
             return false;
 
-    buildWorld();
+    m_bodies.build();
+    b2World& world = m_bodies.world();
     std::size_t i = 0;
-    for (b2Body* body = m_world->GetBodyList(); body != nullptr; body = body->GetNext(), ++i)
+    for (b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext(), ++i)
         if (body->GetType() == b2_dynamicBody)
             body->SetTransform(b2Vec2(state.bodies[i].x, state.bodies[i].y), state.bodies[i].angle);
     // One step without gravity, velocity or iterations finds the contacts at the settled places and moves nothing.
     // It must last a sub-step: Box2D scales the impulses it warm-starts from by the ratio of this step to the last
     // one, which a new world's first step with no time would make zero.
-    const b2Vec2 gravity = m_world->GetGravity();
-    m_world->SetGravity(b2Vec2(0.0f, 0.0f));
-    m_world->Step(static_cast<float>(m_settings.dtS / m_lastSubsteps), 0, 0);
-    m_world->SetGravity(gravity);
+    const b2Vec2 gravity = world.GetGravity();
+    world.SetGravity(b2Vec2(0.0f, 0.0f));
+    world.Step(static_cast<float>(m_bodies.settings().dtS / m_stepper.lastSubsteps()), 0, 0);
+    world.SetGravity(gravity);
     i = 0;
-    for (b2Body* body = m_world->GetBodyList(); body != nullptr; body = body->GetNext(), ++i)
+    for (b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext(), ++i)
     {
         if (body->GetType() != b2_dynamicBody)
             continue;
@@ -190,8 +197,8 @@ bool GameWorld::restoreSettled(const SettledState& state)
     std::map<std::array<std::int32_t, 4>, const b2Manifold*> manifolds;
     for (const SettledState::Contact& c : state.contacts)
         manifolds.emplace(std::array<std::int32_t, 4>{c.bodyA, c.bodyB, c.childA, c.childB}, &c.manifold);
-    const auto positions = bodyPositions(*m_world);
-    for (b2Contact* contact = m_world->GetContactList(); contact != nullptr; contact = contact->GetNext())
+    const auto positions = bodyPositions(world);
+    for (b2Contact* contact = world.GetContactList(); contact != nullptr; contact = contact->GetNext())
     {
         const auto found = manifolds.find({positions.at(contact->GetFixtureA()->GetBody()),
                                            positions.at(contact->GetFixtureB()->GetBody()), contact->GetChildIndexA(),

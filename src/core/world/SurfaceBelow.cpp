@@ -1,4 +1,5 @@
-#include <abalike/world/GameWorld.hpp>
+#include "world/WorldBodies.hpp"
+
 #include <algorithm>
 #include <box2d/box2d.h>
 
@@ -23,7 +24,7 @@ public:
 };
 } // namespace
 
-double GameWorld::surfaceBelow(double x, double fromY) const
+double WorldBodies::surfaceBelow(double x, double fromY) const
 {
     const double groundY = m_level.groundY;
     if (!(fromY > groundY))
