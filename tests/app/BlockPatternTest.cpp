@@ -1,9 +1,11 @@
 // The colour-blind-safe look tells materials apart by pattern as well as colour: every material gets marks of its
 // own on top of what the standard look draws.
+#include "render/AbilityLook.hpp"
 #include "render/BlockPainter.hpp"
 #include "render/ConvexPolygon.hpp"
 #include "render/Look.hpp"
 
+#include <abalike/world/Catalog.hpp>
 #include <gtest/gtest.h>
 
 using namespace abalike;
@@ -16,7 +18,7 @@ std::size_t verticesFor(const std::string& material, const Look& look)
     setActiveLook(look);
     Mesh mesh;
     BlockLook block;
-    block.material = material;
+    block.material = &Catalog::builtin().findMaterial(material)->look;
     block.pixelM = 0.02f;
     block.seed = 7;
     // A brick as the world builds it: 0.5 by 0.25 m, its corners chamfered by 1 cm.
@@ -68,4 +70,25 @@ TEST(ConvexInset, ShortEdgesVanishInsteadOfTurningInsideOut)
     EXPECT_NEAR(a.x, -0.215f, 1e-4f);
     EXPECT_NEAR(b.x, 0.215f, 1e-4f);
     EXPECT_TRUE(convex::inset(brick, 0.2f).empty()) << "inset past the middle: nothing left";
+}
+
+TEST(AbilityLooks, TheEggAndTheBlastHaveLooksOfTheirOwnAndTheRestTheDefault)
+{
+    EXPECT_TRUE(hasAbilityLook("egg"));
+    EXPECT_TRUE(hasAbilityLook("explode"));
+    EXPECT_FALSE(hasAbilityLook("split"));
+    // The egg paints itself; a split bird is drawn as a bird of its type.
+    Entity egg;
+    egg.kind = EntityKind::Bird;
+    egg.widthM = 0.4;
+    Mesh mesh;
+    EXPECT_TRUE(abilityLook("egg").paintBody(mesh, egg, 0.02f));
+    EXPECT_GT(mesh.vertexCount(), 0u);
+    Mesh none;
+    EXPECT_FALSE(abilityLook("split").paintBody(none, egg, 0.02f));
+    EXPECT_EQ(none.vertexCount(), 0u);
+    // The black bird wears a fuse: a little more to draw than a bird without one.
+    Mesh fuse;
+    abilityLook("explode").decorateBird(fuse, 0.3f);
+    EXPECT_GT(fuse.vertexCount(), 0u);
 }

@@ -1,15 +1,25 @@
 #include "fx/Particles.hpp"
 
+#include <abalike/world/Catalog.hpp>
 #include <gtest/gtest.h>
 
+using namespace abalike;
 using namespace abalike::app;
+
+namespace
+{
+const MaterialLook& lookOf(const char* material)
+{
+    return Catalog::builtin().findMaterial(material)->look;
+}
+} // namespace
 
 TEST(Particles, BurstsMakeTheAskedPiecesAndTheyExpire)
 {
     Particles particles;
     particles.reset();
-    particles.burstBlock("wood", {10.0f, 2.0f}, 0.6f, 16);
-    particles.burstBlock("ice", {10.0f, 2.0f}, 0.6f, 4);
+    particles.burstBlock(lookOf("wood"), {10.0f, 2.0f}, 0.6f, 16);
+    particles.burstBlock(lookOf("ice"), {10.0f, 2.0f}, 0.6f, 4);
     particles.burstPig({12.0f, 1.0f}, 0.5f, 12);
     EXPECT_EQ(particles.size(), 32u);
     Mesh mesh;
@@ -29,7 +39,7 @@ TEST(Particles, AThousandBlockCollapseIsCapped)
     Particles particles;
     particles.reset();
     for (int i = 0; i < 1000; ++i)
-        particles.burstBlock("stone", {static_cast<float>(i % 50), 1.0f}, 0.5f, 16);
+        particles.burstBlock(lookOf("stone"), {static_cast<float>(i % 50), 1.0f}, 0.5f, 16);
     EXPECT_EQ(particles.size(), 1500u);
 }
 
@@ -40,7 +50,7 @@ TEST(Particles, ResetGivesTheSamePiecesAgainAndDebrisFalls)
     {
         Particles particles;
         particles.reset();
-        particles.burstBlock("wood", {5.0f, 1.0f}, 0.6f, 8);
+        particles.burstBlock(lookOf("wood"), {5.0f, 1.0f}, 0.6f, 8);
         for (float t = 0.0f; t < seconds; t += 1.0f / 60.0f)
             particles.update(1.0f / 60.0f);
         return particles.positionsM();

@@ -2,6 +2,7 @@
 #include "audio/SoundBoard.hpp"
 
 #include <abalike/save/Settings.hpp>
+#include <abalike/world/Catalog.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -104,13 +105,16 @@ TEST(SoundSynth, EffectsAreDistinct)
     }
 }
 
-TEST(SoundSynth, MaterialsMapToTheirImpacts)
+TEST(SoundSynth, MaterialsMapToTheirImpactsByTheirSurface)
 {
-    EXPECT_EQ(impactEffectFor("ice"), SoundEffect::ImpactIce);
-    EXPECT_EQ(impactEffectFor("stone"), SoundEffect::ImpactStone);
-    EXPECT_EQ(impactEffectFor("wood"), SoundEffect::ImpactWood);
-    EXPECT_EQ(impactEffectFor("unobtainium"), SoundEffect::ImpactWood);
-    EXPECT_EQ(impactEffectFor(""), SoundEffect::ImpactWood);
+    const auto impactOf = [](const char* material)
+    {
+        return impactEffectFor(Catalog::builtin().findMaterial(material)->look.surface);
+    };
+    EXPECT_EQ(impactOf("ice"), SoundEffect::ImpactIce);
+    EXPECT_EQ(impactOf("stone"), SoundEffect::ImpactStone);
+    EXPECT_EQ(impactOf("wood"), SoundEffect::ImpactWood);
+    EXPECT_EQ(impactOf("tnt"), SoundEffect::ImpactWood);
 }
 
 // The silent path: ABALIKE_AUDIO=off turns sound off before OpenAL is touched, and playing is then a no-op.

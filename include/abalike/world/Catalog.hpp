@@ -1,6 +1,7 @@
 #pragma once
 
 #include <abalike/world/Ability.hpp>
+#include <abalike/world/Looks.hpp>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -24,6 +25,7 @@ struct Material
     /// blastImpulseNs (1 - d / R) radially, as push and as damage. 0: it does not explode.
     double blastRadiusM = 0.0;
     double blastImpulseNs = 0.0;
+    MaterialLook look{}; ///< how the game draws it, breaks it into debris and sounds it
 };
 
 /// A kind of bird: the spec's "unique masses and sizes".
@@ -32,10 +34,11 @@ struct BirdType
     std::string name;
     double massKg = 0.0;
     double radiusM = 0.0;
-    double dragCoefficient = 0.47;          ///< Cd of a sphere
-    std::shared_ptr<const Ability> ability; ///< null: the bird has none
+    double dragCoefficient = 0.47;            ///< Cd of a sphere
+    std::shared_ptr<const Ability> ability{}; ///< null: the bird has none
     double friction = 0.6;
     double restitution = 0.3;
+    BirdLook look{};
 
     /// The ability's name in the catalog, "none" for a bird without one.
     std::string_view abilityName() const { return ability ? ability->name() : kNoAbility; }

@@ -7,6 +7,11 @@ class b2Body;
 
 namespace abalike
 {
+class Ability;
+}
+
+namespace abalike
+{
 
 enum class EntityKind
 {
@@ -58,6 +63,8 @@ struct Entity
     /// Birds only: what it counts as when it breaks something (Bird for the shot's birds, Egg for an egg); only the
     /// shot's birds start the shot's contact clock.
     CauseKind causeAs = CauseKind::Bird;
+    /// Birds an ability added (split birds, eggs): that ability; null for everything else.
+    const Ability* madeBy = nullptr;
     b2Body* body = nullptr; ///< null once removed; built anew by the first step (GameWorld::box2d)
 };
 

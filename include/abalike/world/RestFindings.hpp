@@ -36,7 +36,12 @@ struct SupportGap
     double gapM = 0.0;         ///< bottom of the body minus top of the support: > 0 floats, < 0 overlaps
     double supportLeftM = 0.0; ///< the support's horizontal extent under the body
     double supportRightM = 0.0;
-    bool supportIsIce = false;
+    /// A block of a slippery material (friction below kSlipperyFriction, as ice): a body on it may slide off.
+    bool supportIsSlippery = false;
+    std::string supportMaterial; ///< the support block's material; empty for the ground and terrain
+    double supportFriction = 0.0;
+
+    static constexpr double kSlipperyFriction = 0.2;
 };
 
 /// What is right under a block (blocks[index]) or a pig (pigs[index]) as designed.

@@ -78,9 +78,10 @@ void SoundLayer::afterStep(PlayView& view)
                 hit = &entity;
             }
         }
-        if (hit != nullptr && hardest >= kImpactFraction)
+        const Material* material = hit != nullptr ? session.catalog().findMaterial(hit->typeName) : nullptr;
+        if (material != nullptr && hardest >= kImpactFraction)
         {
-            m_board.play(impactEffectFor(hit->typeName), settings, static_cast<float>(0.4 + 2.0 * hardest));
+            m_board.play(impactEffectFor(material->look.surface), settings, static_cast<float>(0.4 + 2.0 * hardest));
             m_sinceImpactS = 0.0;
         }
     }

@@ -130,12 +130,18 @@ std::string_view soundEffectName(SoundEffect effect)
     return "unknown";
 }
 
-SoundEffect impactEffectFor(std::string_view material)
+SoundEffect impactEffectFor(SurfaceKind surface)
 {
-    if (material == "ice")
+    switch (surface)
+    {
+    case SurfaceKind::Frost:
         return SoundEffect::ImpactIce;
-    if (material == "stone")
+    case SurfaceKind::Masonry:
         return SoundEffect::ImpactStone;
+    case SurfaceKind::Grain:
+    case SurfaceKind::Crate:
+        break;
+    }
     return SoundEffect::ImpactWood;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <abalike/world/Looks.hpp>
 #include <array>
 #include <cstdint>
 #include <string_view>
@@ -31,8 +32,8 @@ inline constexpr std::array<SoundEffect, 9> kAllSoundEffects = {
 /// A stable name for an effect ("stretch", "impact-wood", ...).
 std::string_view soundEffectName(SoundEffect effect);
 
-/// The impact effect for a material name: ice rings, stone thuds, wood (and any other material) knocks.
-SoundEffect impactEffectFor(std::string_view material);
+/// The impact effect for a material's surface: ice rings, stone thuds, wood and crates knock.
+SoundEffect impactEffectFor(SurfaceKind surface);
 
 /// Synthesizes an effect as mono 16-bit samples at sampleRateHz: deterministic (same effect, same samples),
 /// at most 1.5 s long, peaking at about 70 % of full scale, with a short fade at both ends so it never clicks.

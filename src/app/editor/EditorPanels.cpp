@@ -42,8 +42,6 @@ void heading(const char* text)
 
 std::string capitalised(std::string text)
 {
-    if (text == "tnt")
-        return "TNT"; // an acronym, as printed on the crate
     if (!text.empty() && text[0] >= 'a' && text[0] <= 'z')
         text[0] = static_cast<char>(text[0] - 'a' + 'A');
     return text;
@@ -220,7 +218,7 @@ void EditorScreen::palettePanel()
         {
             const bool active =
                 m_tool == Tool::Block && m_blockTemplate.material == material.name && m_blockTemplate.shape == shape;
-            const std::string label = capitalised(material.name) + " " + shapeLabel(shape);
+            const std::string label = material.look.label + " " + shapeLabel(shape);
             if (column++ % 2 == 1)
                 ImGui::SameLine();
             if (active)

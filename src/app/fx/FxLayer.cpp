@@ -1,5 +1,6 @@
 #include "fx/FxLayer.hpp"
 
+#include "render/AbilityLook.hpp"
 #include "render/Palette.hpp"
 #include "screens/App.hpp"
 
@@ -18,16 +19,48 @@ constexpr float kPopUpLifeS = 1.2f;
 constexpr float kPopUpRiseMps = 1.2f;
 
 /// How hard a break shakes the view: heavy things more, and nothing for what only fell off the world.
-float shakeKickPx(const DestroyedEvent& event)
+float shakeKickPx(const DestroyedEvent& event, const Material* material)
 {
     if (event.points <= 0)
         return 0.0f;
     if (event.kind == EntityKind::Pig)
         return 3.0f;
-    if (event.typeName == "stone")
+    switch (material != nullptr ? material->look.surface : SurfaceKind::Crate)
+    {
+    case SurfaceKind::Masonry:
         return 5.0f;
-    return event.typeName == "wood" ? 2.0f : 1.0f;
+    case SurfaceKind::Grain:
+        return 2.0f;
+    case SurfaceKind::Frost:
+    case SurfaceKind::Crate:
+        break;
+    }
+    return 1.0f;
 }
+/// What an ability's look sets off, in this layer's particles and shake.
+class Effects final : public AbilityEffects
+{
+public:
+    Effects(Particles& particles, CameraShake& shake, bool reduced)
+        : m_particles(particles), m_shake(shake), m_reduced(reduced)
+    {
+    }
+    void burst(sf::Vector2f centreM, float radiusM) override
+    {
+        m_particles.burstBlast(centreM, radiusM, m_reduced ? 4 : 16);
+    }
+    void shake(float px) override
+    {
+        if (!m_reduced)
+            m_shake.kick(px);
+    }
+
+private:
+    Particles& m_particles;
+    CameraShake& m_shake;
+    bool m_reduced;
+};
+
 } // namespace
 
 void FxLayer::onLevelStart(PlayView& view)
@@ -35,7 +68,7 @@ void FxLayer::onLevelStart(PlayView& view)
     m_particles.reset();
     m_popUps.clear();
     m_seen = view.session().destroyed().size();
-    m_explosionsSeen = view.session().shots().size();
+    m_abilitiesSeen = view.session().shots().size();
     m_blastsSeen = view.session().blasts().size();
     m_shake.reset();
 }
@@ -50,14 +83,16 @@ void FxLayer::afterStep(PlayView& view)
     {
         const DestroyedEvent& event = destroyed[i];
         const sf::Vector2f at(static_cast<float>(event.x), static_cast<float>(event.y));
-        if (event.kind == EntityKind::Block && event.points > 0) // unscored: fell off the world, not broken
-            m_particles.burstBlock(event.typeName, at, 0.6f, reduced ? 4 : 16);
+        const Material* material =
+            event.kind == EntityKind::Block ? view.session().catalog().findMaterial(event.typeName) : nullptr;
+        if (material != nullptr && event.points > 0) // unscored: fell off the world, not broken
+            m_particles.burstBlock(material->look, at, 0.6f, reduced ? 4 : 16);
         else if (event.kind == EntityKind::Pig)
             m_particles.burstPig(at, 0.5f, reduced ? 3 : 12);
         else if (event.kind == EntityKind::Bird) // a bird leaving after its shot
             m_particles.burstBird(at, 0.35f, reduced ? 2 : 8);
         if (!reduced)
-            m_shake.kick(shakeKickPx(event));
+            m_shake.kick(shakeKickPx(event, material));
         if (event.points > 0)
         {
             // append, not "+" + to_string(): GCC 12 warns falsely (-Wrestrict) on operator+ with a temporary.
@@ -71,19 +106,16 @@ void FxLayer::afterStep(PlayView& view)
     }
     m_seen = destroyed.size();
 
-    // An ability that reached out (the black bird's blast) flashes as wide as it reached and shakes the most, once
-    // per shot.
+    // An ability's use shows as its look says (the black bird's blast flashes and shakes), once per shot.
     const std::vector<ShotRecord>& shots = view.session().shots();
-    if (shots.size() < m_explosionsSeen)
-        m_explosionsSeen = 0;
-    if (shots.size() > m_explosionsSeen && shots.back().ability && shots.back().ability->reachM > 0.0)
+    if (shots.size() < m_abilitiesSeen)
+        m_abilitiesSeen = 0;
+    if (shots.size() > m_abilitiesSeen && shots.back().ability)
     {
         const AbilityUse& use = *shots.back().ability;
-        m_particles.burstBlast({static_cast<float>(use.x), static_cast<float>(use.y)}, static_cast<float>(use.reachM),
-                               reduced ? 4 : 16);
-        if (!reduced)
-            m_shake.kick(12.0f);
-        m_explosionsSeen = shots.size();
+        Effects effects(m_particles, m_shake, reduced);
+        abilityLook(use.ability).onUse(effects, use);
+        m_abilitiesSeen = shots.size();
     }
     // TNT: a flash as wide as the blast, and a shake.
     const std::vector<BlastEvent>& blasts = view.session().blasts();

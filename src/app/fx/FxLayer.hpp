@@ -39,9 +39,9 @@ private:
 
     Particles m_particles;
     std::vector<PopUp> m_popUps;
-    std::size_t m_seen = 0;           ///< events of session.destroyed() already turned into effects
-    std::size_t m_explosionsSeen = 0; ///< shots whose explosion already shook the view
-    std::size_t m_blastsSeen = 0;     ///< TNT blasts of session.blasts() already shown
+    std::size_t m_seen = 0;          ///< events of session.destroyed() already turned into effects
+    std::size_t m_abilitiesSeen = 0; ///< shots whose ability use has been shown
+    std::size_t m_blastsSeen = 0;    ///< TNT blasts of session.blasts() already shown
     CameraShake m_shake;
     Mesh m_mesh;
 };

@@ -18,12 +18,18 @@ constexpr float kGravityMps2 = 9.81f;
 constexpr float kDragPerS = 0.6f;        ///< velocity lost per second, so pieces do not fly like bullets
 constexpr std::size_t kMaxPieces = 1500; ///< a 1 000-block collapse must not grow the frame time without bound
 
-Particles::Shape shapeFor(std::string_view material)
+Particles::Shape shapeFor(SurfaceKind surface)
 {
-    if (material == "ice")
+    switch (surface)
+    {
+    case SurfaceKind::Frost:
         return Particles::Shape::Shard;
-    if (material == "stone")
+    case SurfaceKind::Masonry:
         return Particles::Shape::Chunk;
+    case SurfaceKind::Grain:
+    case SurfaceKind::Crate:
+        break;
+    }
     return Particles::Shape::Splinter;
 }
 
@@ -44,10 +50,10 @@ float Particles::uniform(float lo, float hi)
     return lo + (hi - lo) * static_cast<float>(m_state >> 8) / 16777216.0f;
 }
 
-void Particles::burstBlock(std::string_view material, sf::Vector2f centreM, float sizeM, int count)
+void Particles::burstBlock(const MaterialLook& material, sf::Vector2f centreM, float sizeM, int count)
 {
     const MaterialColours colours = materialColours(material);
-    const Shape shape = shapeFor(material);
+    const Shape shape = shapeFor(material.surface);
     for (int i = 0; i < count && m_pieces.size() < kMaxPieces; ++i)
     {
         Piece piece;

@@ -4,6 +4,7 @@
 
 #include <SFML/Graphics/Color.hpp>
 #include <SFML/System/Vector2.hpp>
+#include <abalike/world/Looks.hpp>
 #include <cstdint>
 #include <string_view>
 #include <vector>
@@ -31,7 +32,7 @@ public:
     /// Starts over with no pieces and a fixed seed.
     void reset();
     /// Throws out the pieces of a broken block of the given material and size at (x, y); `count` pieces.
-    void burstBlock(std::string_view material, sf::Vector2f centreM, float sizeM, int count);
+    void burstBlock(const MaterialLook& material, sf::Vector2f centreM, float sizeM, int count);
     /// A cloud of green and white puffs where a pig was defeated.
     void burstPig(sf::Vector2f centreM, float radiusM, int count);
     /// A grey puff where a bird leaves the world after its shot.

@@ -152,6 +152,33 @@ void addCrate(Mesh& mesh, std::span<const sf::Vector2f> inner, const MaterialCol
     letterT(left + 2.0f * (width + gap));
 }
 
+/// Wood's colour-blind pattern: stripes along the block's long side.
+void addStripes(Mesh& mesh, std::span<const sf::Vector2f> inner, const sf::FloatRect& box, float spacing, float width,
+                sf::Color ink)
+{
+    if (inner.size() < 3)
+        return;
+    // Stripes parallel to the longer of the first two edges (a box's length), across the whole block.
+    sf::Vector2f along = inner[1] - inner[0];
+    const sf::Vector2f other = inner[2] - inner[1];
+    if (std::hypot(other.x, other.y) > std::hypot(along.x, along.y))
+        along = other;
+    const float length = std::hypot(along.x, along.y);
+    if (length <= 0.0f)
+        return;
+    along /= length;
+    const sf::Vector2f normal(-along.y, along.x);
+    const float reach = box.width + box.height;
+    const sf::Vector2f centre(box.left + 0.5f * box.width, box.top + 0.5f * box.height);
+    for (float offset = -reach; offset <= reach; offset += spacing)
+    {
+        sf::Vector2f a = centre + normal * offset - along * reach;
+        sf::Vector2f b = centre + normal * offset + along * reach;
+        if (convex::clipSegment(inner, a, b))
+            mesh.addLine(a, b, width, ink);
+    }
+}
+
 /// The colour-blind-safe look's patterns, so no material is told by colour alone: wood in stripes along its long
 /// side, ice hatched at 45 degrees, stone dotted on a grid.
 void addPattern(Mesh& mesh, std::span<const sf::Vector2f> inner, const MaterialColours& colours, const BlockLook& look)
@@ -160,8 +187,9 @@ void addPattern(Mesh& mesh, std::span<const sf::Vector2f> inner, const MaterialC
     const float spacing = std::max(0.1f, 7.0f * look.pixelM);
     const float width = std::max(0.025f, 1.5f * look.pixelM);
     const sf::Color ink = darken(colours.outline, 0.85f);
-    if (look.material == "ice")
+    switch (look.material->surface)
     {
+    case SurfaceKind::Frost:
         for (float c = box.left - box.height; c < box.left + box.width; c += spacing)
         {
             sf::Vector2f a(c, box.top);
@@ -169,42 +197,26 @@ void addPattern(Mesh& mesh, std::span<const sf::Vector2f> inner, const MaterialC
             if (convex::clipSegment(inner, a, b))
                 mesh.addLine(a, b, width, ink);
         }
-    }
-    else if (look.material == "stone")
-    {
+        break;
+    case SurfaceKind::Masonry:
         for (float y = box.top + 0.5f * spacing; y < box.top + box.height; y += spacing)
             for (float x = box.left + 0.5f * spacing; x < box.left + box.width; x += spacing)
                 if (convex::contains(inner, {x, y}))
                     mesh.addCircle({x, y}, 0.22f * spacing, ink, 8);
-    }
-    else if (look.material == "wood" && inner.size() >= 3)
-    {
-        // Stripes parallel to the longer of the first two edges (a box's length), across the whole block.
-        sf::Vector2f along = inner[1] - inner[0];
-        const sf::Vector2f other = inner[2] - inner[1];
-        if (std::hypot(other.x, other.y) > std::hypot(along.x, along.y))
-            along = other;
-        const float length = std::hypot(along.x, along.y);
-        if (length <= 0.0f)
-            return;
-        along /= length;
-        const sf::Vector2f normal(-along.y, along.x);
-        const float reach = box.width + box.height;
-        const sf::Vector2f centre(box.left + 0.5f * box.width, box.top + 0.5f * box.height);
-        for (float offset = -reach; offset <= reach; offset += spacing)
-        {
-            sf::Vector2f a = centre + normal * offset - along * reach;
-            sf::Vector2f b = centre + normal * offset + along * reach;
-            if (convex::clipSegment(inner, a, b))
-                mesh.addLine(a, b, width, ink);
-        }
+        break;
+    case SurfaceKind::Grain:
+        addStripes(mesh, inner, box, spacing, width, ink);
+        break;
+    case SurfaceKind::Crate:
+        break;
     }
 }
+
 } // namespace
 
 void BlockPainter::paintPolygon(Mesh& mesh, std::span<const sf::Vector2f> polygon, const BlockLook& look)
 {
-    MaterialColours colours = materialColours(look.material);
+    MaterialColours colours = materialColours(*look.material);
     if (look.healthFraction < kBrokenBelow)
     {
         colours.fill = darken(colours.fill, 0.72f);
@@ -222,14 +234,21 @@ void BlockPainter::paintPolygon(Mesh& mesh, std::span<const sf::Vector2f> polygo
     mesh.addConvex(inner, colours.fill);
 
     DetailRandom random(look.seed);
-    if (look.material == "wood")
+    switch (look.material->surface)
+    {
+    case SurfaceKind::Grain:
         addGrain(mesh, inner, colours, look, random);
-    else if (look.material == "ice")
+        break;
+    case SurfaceKind::Frost:
         addGlint(mesh, inner, colours, look);
-    else if (look.material == "stone")
+        break;
+    case SurfaceKind::Masonry:
         addSpeckles(mesh, inner, colours, look, random);
-    else if (look.material == "tnt")
+        break;
+    case SurfaceKind::Crate:
         addCrate(mesh, inner, colours, look);
+        break;
+    }
 
     if (activeLook().colourBlindSafe)
         addPattern(mesh, inner, colours, look);

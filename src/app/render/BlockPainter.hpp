@@ -2,6 +2,8 @@
 
 #include "render/Mesh.hpp"
 
+#include <abalike/world/Looks.hpp>
+
 #include <cstdint>
 #include <span>
 #include <string_view>
@@ -12,10 +14,10 @@ namespace abalike::app
 /// How one block should look.
 struct BlockLook
 {
-    std::string_view material;
-    float healthFraction = 1.0f; ///< health / maxHealth: cracks below 0.66, more and darker below 0.33
-    std::uint64_t seed = 0;      ///< keeps grain, speckles and cracks the same from frame to frame
-    float pixelM = 0.03f;        ///< one screen pixel in metres, so strokes stay visible at any zoom
+    const MaterialLook* material = nullptr; ///< the block's material's look (the catalog's)
+    float healthFraction = 1.0f;            ///< health / maxHealth: cracks below 0.66, more and darker below 0.33
+    std::uint64_t seed = 0;                 ///< keeps grain, speckles and cracks the same from frame to frame
+    float pixelM = 0.03f;                   ///< one screen pixel in metres, so strokes stay visible at any zoom
 };
 
 /// Draws blocks in their material: wood with grain, translucent ice with a glint, speckled stone; cracks

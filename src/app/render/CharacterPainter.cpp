@@ -1,5 +1,6 @@
 #include "render/CharacterPainter.hpp"
 
+#include "render/AbilityLook.hpp"
 #include "render/Palette.hpp"
 
 #include <algorithm>
@@ -41,9 +42,9 @@ std::vector<sf::Vector2f> cap(float radius, float chordY)
 }
 } // namespace
 
-void CharacterPainter::paintBird(Mesh& mesh, std::string_view type, float r, float pixelM, BirdMood mood)
+void CharacterPainter::paintBird(Mesh& mesh, const BirdType& bird, float r, float pixelM, BirdMood mood)
 {
-    const BirdColours colours = birdColours(type);
+    const BirdColours colours = birdColours(bird.look);
     const float stroke = std::max(0.06f * r, 1.5f * pixelM);
 
     // Tail feathers behind the body.
@@ -56,12 +57,7 @@ void CharacterPainter::paintBird(Mesh& mesh, std::string_view type, float r, flo
     outlinedDisc(mesh, {0.0f, 0.0f}, r, colours.body, colours.outline, stroke);
     mesh.addEllipse({-0.05f * r, -0.42f * r}, 0.62f * r, 0.4f * r, colours.belly, 20);
 
-    if (type == "black")
-    {
-        // A fuse with a spark on top.
-        mesh.addLine({0.0f, 0.9f * r}, {0.12f * r, 1.35f * r}, 0.12f * r, palette::kHelmet);
-        mesh.addCircle({0.14f * r, 1.42f * r}, 0.12f * r, palette::kStar, 10);
-    }
+    abilityLook(bird.abilityName()).decorateBird(mesh, r);
 
     // Beak: upper and lower half.
     mesh.addTriangle({0.5f * r, -0.02f * r}, {1.22f * r, -0.16f * r}, {0.55f * r, -0.3f * r}, palette::kBeak);
@@ -87,16 +83,6 @@ void CharacterPainter::paintBird(Mesh& mesh, std::string_view type, float r, flo
     // Angry brows slanting down towards the beak.
     mesh.addLine({-0.06f * r, 0.56f * r}, {0.38f * r, 0.36f * r}, brow, colours.brow);
     mesh.addLine({0.44f * r, 0.36f * r}, {0.86f * r, 0.52f * r}, brow, colours.brow);
-}
-
-void CharacterPainter::paintEgg(Mesh& mesh, float r, float pixelM)
-{
-    const float stroke = std::max(0.06f * r, 1.5f * pixelM);
-    mesh.addEllipse({0.0f, 0.0f}, 0.86f * r, 1.08f * r, palette::kEggOutline, 24);
-    mesh.addEllipse({0.0f, 0.0f}, 0.86f * r - stroke, 1.08f * r - stroke, palette::kEgg, 24);
-    mesh.addEllipse({-0.3f * r, 0.4f * r}, 0.14f * r, 0.22f * r, sf::Color(255, 255, 255), 12);
-    mesh.addCircle({0.25f * r, -0.2f * r}, 0.08f * r, palette::kEggOutline, 8);
-    mesh.addCircle({-0.1f * r, -0.5f * r}, 0.06f * r, palette::kEggOutline, 8);
 }
 
 void CharacterPainter::paintPig(Mesh& mesh, float r, bool helmet, float healthFraction, float pixelM)

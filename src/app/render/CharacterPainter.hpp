@@ -2,7 +2,7 @@
 
 #include "render/Mesh.hpp"
 
-#include <string_view>
+#include <abalike/world/Catalog.hpp>
 
 namespace abalike::app
 {
@@ -19,11 +19,10 @@ public:
         Dazed,
     };
 
-    /// A bird of the given type (red, blue, yellow, black, white) with eyes, brows, beak and tail.
-    static void paintBird(Mesh& mesh, std::string_view type, float radius, float pixelM,
+    /// A bird in its catalog colours with eyes, brows, beak and tail, and what its ability's look adds (the black
+    /// bird's fuse).
+    static void paintBird(Mesh& mesh, const BirdType& bird, float radius, float pixelM,
                           BirdMood mood = BirdMood::Angry);
-    /// The white bird's egg: a speckled cream oval the size of its body.
-    static void paintEgg(Mesh& mesh, float radius, float pixelM);
     /// A pig; a helmet pig wears a grey cap. Healthy it grins; below 66% health it frowns with a bruise; below 33%
     /// it has a black eye, a second bruise and a wobbly mouth.
     static void paintPig(Mesh& mesh, float radius, bool helmet, float healthFraction, float pixelM);

@@ -3,7 +3,7 @@
 #include "render/Look.hpp"
 
 #include <SFML/Graphics/Color.hpp>
-#include <string_view>
+#include <abalike/world/Looks.hpp>
 
 namespace abalike::app
 {
@@ -81,11 +81,14 @@ inline const sf::Color& kTextDisabled = activeLook().textDisabled;
 inline const sf::Color& kScrim = activeLook().scrim;
 } // namespace palette
 
-/// Colours of a material by name; an unknown material gets a neutral sandstone.
-MaterialColours materialColours(std::string_view material);
+/// A catalog colour as SFML's.
+sf::Color colourOf(const Rgba& rgba);
 
-/// Colours of a bird by type name (red, blue, yellow, black, white); an unknown bird is drawn red.
-BirdColours birdColours(std::string_view bird);
+/// A material's colours, from its look in the catalog.
+MaterialColours materialColours(const MaterialLook& look);
+
+/// A bird's colours, from its look in the catalog.
+BirdColours birdColours(const BirdLook& look);
 
 /// The colour scaled towards black by `factor` (1 keeps it, 0 is black); alpha kept.
 sf::Color darken(sf::Color colour, float factor);

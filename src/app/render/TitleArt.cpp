@@ -51,7 +51,7 @@ void drawTitleArt(sf::RenderTarget& target, float uiScale)
     sf::Transform birdTransform = characterAt(bird);
     birdTransform.rotate(-20.0f);
     mesh.setLocalTransform(birdTransform);
-    CharacterPainter::paintBird(mesh, "red", birdR, 1.0f);
+    CharacterPainter::paintBird(mesh, Catalog::builtin().birds().front(), birdR, 1.0f); // the first bird: red
 
     // The helmet pig it is after, grinning.
     mesh.setLocalTransform(characterAt(pig));

@@ -1,5 +1,6 @@
 #include "render/WorldRenderer.hpp"
 
+#include "render/AbilityLook.hpp"
 #include "render/Backdrop.hpp"
 #include "render/BlockPainter.hpp"
 #include "render/CharacterPainter.hpp"
@@ -42,10 +43,12 @@ float healthFraction(const Entity& entity)
     return static_cast<float>(std::clamp(entity.health / entity.maxHealth, 0.0, 1.0));
 }
 
-float birdRadius(const Catalog& catalog, const std::string& type)
+/// The catalog's bird of a type; a level's birds are checked against the catalog when it loads.
+const BirdType& birdOf(const Catalog& catalog, const std::string& type)
 {
+    static const BirdType unknown;
     const BirdType* bird = catalog.findBird(type);
-    return bird != nullptr ? static_cast<float>(bird->radiusM) : 0.25f;
+    return bird != nullptr ? *bird : unknown;
 }
 
 std::vector<sf::Vector2f> polygonPoints(const b2PolygonShape& shape)
@@ -112,7 +115,7 @@ void WorldRenderer::drawForeground(sf::RenderTarget& target, const Camera& camer
     if (loaded != nullptr)
     {
         m_mesh.setLocalTransform(placeAt(*pose.loadedBird));
-        CharacterPainter::paintBird(m_mesh, loaded->name, pose.birdRadius, pixelM);
+        CharacterPainter::paintBird(m_mesh, *loaded, pose.birdRadius, pixelM);
         m_mesh.resetLocalTransform();
     }
     SlingshotPainter::paintFront(m_mesh, pose, pixelM);
@@ -123,7 +126,7 @@ void WorldRenderer::drawForeground(sf::RenderTarget& target, const Camera& camer
         if (!entity.alive || entity.body == nullptr)
             continue;
         if (entity.kind == EntityKind::Block)
-            addBlock(entity, i, pixelM);
+            addBlock(entity, session.catalog(), i, pixelM);
         else if (entity.kind == EntityKind::Pig)
             addPig(entity, session.catalog(), pixelM);
     }
@@ -133,8 +136,8 @@ void WorldRenderer::drawForeground(sf::RenderTarget& target, const Camera& camer
         const Entity& entity = entities[i];
         if (entity.alive && entity.body != nullptr && entity.kind == EntityKind::Bird)
         {
-            addBird(entity, i, pixelM);
-            addOffscreenMarker(entity, camera);
+            addBird(entity, session.catalog(), i, pixelM);
+            addOffscreenMarker(entity, session.catalog(), camera);
         }
     }
     m_mesh.draw(target, camera.transform());
@@ -199,10 +202,12 @@ void WorldRenderer::addTerrainPolygon(const Entity& entity, const TerrainDef& de
     }
 }
 
-void WorldRenderer::addBlock(const Entity& entity, std::size_t index, float pixelM)
+void WorldRenderer::addBlock(const Entity& entity, const Catalog& catalog, std::size_t index, float pixelM)
 {
+    static const MaterialLook unknown;
+    const Material* material = catalog.findMaterial(entity.typeName);
     BlockLook look;
-    look.material = entity.typeName;
+    look.material = material != nullptr ? &material->look : &unknown;
     look.healthFraction = healthFraction(entity);
     look.pixelM = pixelM;
     m_mesh.setLocalTransform(bodyTransform(*entity.body));
@@ -254,15 +259,15 @@ void WorldRenderer::updateDazed(const GameSession& session)
     }
 }
 
-void WorldRenderer::addBird(const Entity& entity, std::size_t index, float pixelM)
+void WorldRenderer::addBird(const Entity& entity, const Catalog& catalog, std::size_t index, float pixelM)
 {
     m_mesh.setLocalTransform(bodyTransform(*entity.body));
     const auto mood = index < m_dazed.size() && m_dazed[index] ? CharacterPainter::BirdMood::Dazed
                                                                : CharacterPainter::BirdMood::Angry;
-    if (entity.typeName == "egg")
-        CharacterPainter::paintEgg(m_mesh, static_cast<float>(0.5 * entity.widthM), pixelM);
-    else
-        CharacterPainter::paintBird(m_mesh, entity.typeName, static_cast<float>(0.5 * entity.widthM), pixelM, mood);
+    // A body an ability added may have a look of its own (an egg); the rest are birds of their type.
+    if (entity.madeBy == nullptr || !abilityLook(entity.madeBy->name()).paintBody(m_mesh, entity, pixelM))
+        CharacterPainter::paintBird(m_mesh, birdOf(catalog, entity.typeName), static_cast<float>(0.5 * entity.widthM),
+                                    pixelM, mood);
     m_mesh.resetLocalTransform();
 }
 
@@ -293,17 +298,18 @@ void WorldRenderer::addWaitingBirds(const GameSession& session, float pixelM)
     for (int i = first; i < static_cast<int>(level.birds.size()); ++i)
     {
         const std::string& type = level.birds[static_cast<std::size_t>(i)];
-        const float radius = birdRadius(session.catalog(), type);
+        const BirdType& bird = birdOf(session.catalog(), type);
+        const auto radius = static_cast<float>(bird.radiusM);
         x -= radius;
         const double standY = standingY(session.world(), x, session.launchPoint()[1]);
         m_mesh.setLocalTransform(placeAt({x, static_cast<float>(standY) + radius}));
-        CharacterPainter::paintBird(m_mesh, type, radius, pixelM);
+        CharacterPainter::paintBird(m_mesh, bird, radius, pixelM);
         x -= radius + kWaitingGapM + 0.3f * radius; // room for the tail feathers
     }
     m_mesh.resetLocalTransform();
 }
 
-void WorldRenderer::addOffscreenMarker(const Entity& bird, const Camera& camera)
+void WorldRenderer::addOffscreenMarker(const Entity& bird, const Catalog& catalog, const Camera& camera)
 {
     // Above the top of the view, show an arrow at the edge so the player can follow the bird.
     const sf::FloatRect view = camera.visibleWorld();
@@ -315,7 +321,7 @@ void WorldRenderer::addOffscreenMarker(const Entity& bird, const Camera& camera)
     const float x = std::clamp(position.x, view.left + size, view.left + view.width - size);
     const float y = top - 0.4f * size;
     m_mesh.addTriangle({x - size, y - 1.5f * size}, {x, y}, {x + size, y - 1.5f * size},
-                       birdColours(bird.typeName).body);
+                       birdColours(birdOf(catalog, bird.typeName).look).body);
 }
 
 } // namespace abalike::app

@@ -28,13 +28,13 @@ private:
     void addTerrain(const Entity& entity, float pixelM);
     /// A terrain polygon: its convex pieces filled as one, its outline, grass on its top edges.
     void addTerrainPolygon(const Entity& entity, const TerrainDef& def, float pixelM);
-    void addBlock(const Entity& entity, std::size_t index, float pixelM);
+    void addBlock(const Entity& entity, const Catalog& catalog, std::size_t index, float pixelM);
     void addPig(const Entity& entity, const Catalog& catalog, float pixelM);
-    void addBird(const Entity& entity, std::size_t index, float pixelM);
+    void addBird(const Entity& entity, const Catalog& catalog, std::size_t index, float pixelM);
     /// Remembers which birds have touched something (they look dazed from then on); forgets on a new world.
     void updateDazed(const GameSession& session);
     void addWaitingBirds(const GameSession& session, float pixelM);
-    void addOffscreenMarker(const Entity& bird, const Camera& camera);
+    void addOffscreenMarker(const Entity& bird, const Catalog& catalog, const Camera& camera);
 
     Mesh m_base; ///< the backdrop's opaque fills, drawn without blending
     Mesh m_mesh;

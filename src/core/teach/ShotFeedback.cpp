@@ -24,25 +24,26 @@ std::string format(const char* pattern, auto... values)
     return text;
 }
 
-std::string hitName(const FirstImpact& impact)
+std::string hitName(const FirstImpact& impact, const Catalog& catalog)
 {
     if (impact.bodyKind == EntityKind::Pig)
         return "the " + impact.bodyType + " pig";
-    if (impact.bodyType == "tnt")
-        return "a TNT crate";
+    if (const Material* material = catalog.findMaterial(impact.bodyType);
+        material != nullptr && material->look.surface == SurfaceKind::Crate)
+        return "a " + material->look.label + " crate";
     const bool vowel = !impact.bodyType.empty() && std::string("aeiou").find(impact.bodyType[0]) != std::string::npos;
     return (vowel ? "an " : "a ") + impact.bodyType + " block";
 }
 
 /// Momentum sentence: how much the bird carried and how much it handed to what it hit.
-std::string momentumSentence(const FirstImpact& impact)
+std::string momentumSentence(const FirstImpact& impact, const Catalog& catalog)
 {
     const double carried = impact.birdMassKg * std::hypot(impact.birdBefore.vx, impact.birdBefore.vy);
     const double passed = impact.bodyMassKg * std::hypot(impact.bodyAfter.vx - impact.bodyBefore.vx,
                                                          impact.bodyAfter.vy - impact.bodyBefore.vy);
     std::string text = format("The bird hit %s carrying %.0f kg\u00B7m/s of momentum and passed %.0f kg\u00B7m/s to "
                               "it",
-                              hitName(impact).c_str(), carried, passed);
+                              hitName(impact, catalog).c_str(), carried, passed);
     // Bouncing back hands over more than the bird had: it must also cancel its own momentum.
     if (passed > carried * 1.02)
         text += " (more than it carried: it bounced back)";
@@ -80,7 +81,7 @@ std::vector<std::string> shotFeedback(const LevelDef& level, const Catalog& cata
     const std::optional<double> range = rangeAtAngle(launch, shot.angleDeg);
 
     if (shot.impact)
-        sentences.push_back(momentumSentence(*shot.impact));
+        sentences.push_back(momentumSentence(*shot.impact, catalog));
     if (wind && range)
     {
         RangeLaunch calm = launch;

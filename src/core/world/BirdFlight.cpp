@@ -174,6 +174,7 @@ void BirdFlight::addProjectile(const ProjectileSpec& spec)
     entity.shape = BlockShape::Circle;
     entity.widthM = entity.heightM = 2.0 * spec.radiusM;
     entity.causeAs = spec.causeAs;
+    entity.madeBy = m_birdType.ability.get();
     const int index = m_bodies.addEntity(entity);
     createBody(index, spec.radiusM, spec.massKg, m_birdType.friction, m_birdType.restitution, spec.state);
     IntegratorSettings flightSettings;

@@ -1,5 +1,6 @@
 #include "level/JsonLocator.hpp"
 #include "level/LevelReader.hpp"
+#include "world/CatalogLooks.hpp"
 
 #include <abalike/world/Catalog.hpp>
 #include <algorithm>
@@ -38,13 +39,6 @@ const T* findByName(const std::vector<T>& items, std::string_view name)
     return nullptr;
 }
 
-/// Thrown for a name that matches nothing; fromJson adds the file, line and column.
-struct UnknownName
-{
-    std::string pointer;
-    std::string message;
-};
-
 /// "unknown ability "boomrang" (did you mean "boost"?)", or the list of known names when none is close.
 std::string unknownAbility(const std::string& name)
 {
@@ -73,7 +67,7 @@ std::vector<std::shared_ptr<const Ability>> readAbilities(const json& root, std:
                 return ability;
         const AbilityFactory* factory = AbilityRegistry::find(name);
         if (factory == nullptr)
-            throw UnknownName{pointer, unknownAbility(name)};
+            throw CatalogError{pointer, unknownAbility(name)};
         made.push_back((*factory)(block != nullptr && block->contains(name) ? block->at(name) : none));
         return made.back();
     };
@@ -116,8 +110,9 @@ Catalog Catalog::fromJson(std::string_view text, const std::string& fileName)
             if (!(catalog.m_rollingResistance >= 0.0 && catalog.m_rollingResistance < 1.0))
                 throw std::runtime_error("rolling.resistance must be in [0, 1)");
         }
-        for (const json& m : root.at("materials"))
+        for (std::size_t i = 0; i < root.at("materials").size(); ++i)
         {
+            const json& m = root.at("materials").at(i);
             const std::string where = "material " + m.at("name").get<std::string>();
             Material material{m.at("name").get<std::string>(),   positive(m, "density_kg_per_m2", where),
                               m.at("friction").get<double>(),    m.at("restitution").get<double>(),
@@ -129,6 +124,7 @@ Catalog Catalog::fromJson(std::string_view text, const std::string& fileName)
             if (std::abs(material.bulkDensityKgPerM3 * catalog.m_slabDepthM - material.densityKgPerM2) >
                 1e-9 * material.densityKgPerM2)
                 throw std::runtime_error(where + ": density_kg_per_m2 must be bulk_density_kg_per_m3 x slab_depth_m");
+            material.look = readMaterialLook(m, "/materials/" + std::to_string(i));
             if (m.contains("blast"))
             {
                 material.blastRadiusM = positive(m.at("blast"), "radius_m", where + " blast");
@@ -136,13 +132,15 @@ Catalog Catalog::fromJson(std::string_view text, const std::string& fileName)
             }
             catalog.m_materials.push_back(std::move(material));
         }
-        for (const json& b : root.at("birds"))
+        for (std::size_t i = 0; i < root.at("birds").size(); ++i)
         {
+            const json& b = root.at("birds").at(i);
             const std::string where = "bird " + b.at("name").get<std::string>();
             BirdType bird{b.at("name").get<std::string>(), positive(b, "mass_kg", where),
                           positive(b, "radius_m", where), positive(b, "drag_coefficient", where)};
             bird.friction = b.value("friction", bird.friction);
             bird.restitution = b.value("restitution", bird.restitution);
+            bird.look = readBirdLook(b, "/birds/" + std::to_string(i));
             catalog.m_birds.push_back(std::move(bird));
         }
         for (const json& p : root.at("pigs"))
@@ -168,7 +166,7 @@ Catalog Catalog::fromJson(std::string_view text, const std::string& fileName)
         }
         catalog.m_abilities = readAbilities(root, catalog.m_birds);
     }
-    catch (const UnknownName& e)
+    catch (const CatalogError& e)
     {
         const auto [line, column] = JsonLocator(text).locate(e.pointer);
         throw std::runtime_error(fileName + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +

@@ -111,7 +111,7 @@ SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig,
     const double to = round ? x + 1e-6 : self.right;
     SupportGap best;
     double bestTop = -1e300;
-    const auto consider = [&](const std::string& name, const Bounds& b, bool ice)
+    const auto consider = [&](const std::string& name, const Bounds& b, const Material* material)
     {
         if (b.right <= from || b.left >= to)
             return; // not under it
@@ -124,9 +124,11 @@ SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig,
         best.gapM = self.bottom - b.top;
         best.supportLeftM = b.left;
         best.supportRightM = b.right;
-        best.supportIsIce = ice;
+        best.supportIsSlippery = material != nullptr && material->friction < SupportGap::kSlipperyFriction;
+        best.supportMaterial = material != nullptr ? material->name : std::string();
+        best.supportFriction = material != nullptr ? material->friction : 0.0;
     };
-    consider("the ground", {-1e9, 1e9, level.groundY - 1.0, level.groundY}, false);
+    consider("the ground", {-1e9, 1e9, level.groundY - 1.0, level.groundY}, nullptr);
     for (std::size_t i = 0; i < level.terrain.size(); ++i)
     {
         const TerrainDef& t = level.terrain[i];
@@ -138,11 +140,11 @@ SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig,
             const std::optional<double> c = topAt(t.points, to);
             if (a && b && c && std::abs(*a - *b) < 1e-3 && std::abs(*b - *c) < 1e-3)
                 consider("terrain " + std::to_string(i), {t.x - 0.5 * t.widthM, t.x + 0.5 * t.widthM, *b - 1.0, *b},
-                         false);
+                         nullptr);
             continue;
         }
         if (std::abs(std::fmod(t.angleDeg, 90.0)) < 1e-9) // a tilted hill's top is not flat: no single gap
-            consider("terrain " + std::to_string(i), rotatedBox(t.x, t.y, t.widthM, t.heightM, t.angleDeg), false);
+            consider("terrain " + std::to_string(i), rotatedBox(t.x, t.y, t.widthM, t.heightM, t.angleDeg), nullptr);
     }
     for (std::size_t i = 0; i < level.blocks.size(); ++i)
     {
@@ -152,7 +154,8 @@ SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig,
         const bool flatTop = b.shape != BlockShape::Circle && b.shape != BlockShape::Triangle &&
                              std::abs(std::fmod(b.angleDeg, 90.0)) < 1e-9;
         if (flatTop)
-            consider("block " + std::to_string(i) + " (" + b.material + ")", blockBounds(b), b.material == "ice");
+            consider("block " + std::to_string(i) + " (" + b.material + ")", blockBounds(b),
+                     catalog.findMaterial(b.material));
     }
     return best;
 }
@@ -227,8 +230,9 @@ std::vector<RestFinding> restFindings(const LevelDef& level, const Catalog& cata
             f.fix =
                 "move it " + metres(past) + (x < under.supportLeftM ? " right" : " left") + " or support its centre";
         }
-        else if (under.supportIsIce && moved)
-            what << "slides off " << under.support << " (ice is slippery: friction 0.1)";
+        else if (under.supportIsSlippery && moved)
+            what << "slides off " << under.support << " (" << under.supportMaterial << " is slippery: friction "
+                 << under.supportFriction << ")";
         else if (under.support.empty())
             what << "falls: nothing is under it";
         else if (moved)

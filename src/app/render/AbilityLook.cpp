@@ -1,0 +1,61 @@
+#include "render/AbilityLook.hpp"
+
+#include <map>
+#include <stdexcept>
+
+namespace abalike::app
+{
+
+namespace
+{
+
+std::map<std::string, std::unique_ptr<AbilityLook>, std::less<>>& looks()
+{
+    // A function-local static: looks register from their own files' static initialisers, in any order.
+    static std::map<std::string, std::unique_ptr<AbilityLook>, std::less<>> registered;
+    return registered;
+}
+
+} // namespace
+
+bool AbilityLook::paintBody(Mesh& mesh, const Entity& body, float pixelM) const
+{
+    (void)mesh;
+    (void)body;
+    (void)pixelM;
+    return false;
+}
+
+void AbilityLook::decorateBird(Mesh& mesh, float r) const
+{
+    (void)mesh;
+    (void)r;
+}
+
+void AbilityLook::onUse(AbilityEffects& effects, const AbilityUse& use) const
+{
+    if (use.reachM <= 0.0)
+        return;
+    effects.burst({static_cast<float>(use.x), static_cast<float>(use.y)}, static_cast<float>(use.reachM));
+    effects.shake(12.0f);
+}
+
+const AbilityLook& abilityLook(std::string_view ability)
+{
+    static const AbilityLook plain;
+    const auto it = looks().find(ability);
+    return it == looks().end() ? plain : *it->second;
+}
+
+bool hasAbilityLook(std::string_view ability)
+{
+    return looks().find(ability) != looks().end();
+}
+
+AbilityLookRegistrar::AbilityLookRegistrar(std::string ability, std::unique_ptr<AbilityLook> look)
+{
+    if (!looks().emplace(ability, std::move(look)).second)
+        throw std::logic_error("look of ability \"" + ability + "\" registered twice");
+}
+
+} // namespace abalike::app
