@@ -1,4 +1,4 @@
-#include "screens/ScreenStack.hpp"
+#include "shell/ScreenStack.hpp"
 
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <gtest/gtest.h>

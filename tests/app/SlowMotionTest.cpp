@@ -1,4 +1,4 @@
-#include "screens/SlowMotion.hpp"
+#include "play/SlowMotion.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,10 +2,11 @@
 // x text scale 100/150/200 % x windows 1280x720, 1920x1080, 1024x768, 1280x400 x teaching overlay on/off, while
 // aiming, in flight and after the shot (the level's reference shot, then the next bird). Every laid-out frame must
 // keep each panel drawn over the world inside the window and apart from every other. The game runs in this process
-// under a virtual display with its frames laid out but not drawn (AppOptions::onLayout), which costs a fraction of
-// drawing them: the whole grid takes minutes instead of the two hours of one `abalike play` run per cell.
+// under a virtual display with its frames laid out but not drawn (FrameObserver::layoutEvery), which costs a fraction
+// of drawing them: the whole grid takes minutes instead of the two hours of one `abalike play` run per cell.
 #include "render/Font.hpp"
-#include "screens/App.hpp"
+#include "screens/GameScreens.hpp"
+#include "shell/App.hpp"
 
 #include <abalike/level/Campaign.hpp>
 #include <abalike/level/LevelFlight.hpp>
@@ -163,6 +164,30 @@ int framesFor(const LevelDef& level)
     return frames - frames % kLayoutEvery;
 }
 
+/// Lays out every kLayoutEvery-th frame of a run and records what is wrong with it and what covers what.
+class WalkObserver final : public FrameObserver
+{
+public:
+    explicit WalkObserver(WalkedRun& run) : m_run(run) {}
+    int layoutEvery() const override { return kLayoutEvery; }
+    void laidOut(const FrameLayout& frame) override
+    {
+        ++m_run.framesLaidOut;
+        for (const std::string& problem : layoutProblems(frame))
+            m_run.problems.push_back("frame " + std::to_string(frame.frame) + ": " + problem);
+        std::set<std::string> over;
+        for (const ScreenRegion& panel : frame.panels)
+            for (const ScreenRegion& thing : frame.keepVisible)
+                if (!overlappingRegions({panel, thing}).empty())
+                    over.insert(panel.name + " over the " + thing.name);
+        for (const std::string& pair : over)
+            ++m_run.covering[pair];
+    }
+
+private:
+    WalkedRun& m_run;
+};
+
 WalkedRun walk(const std::string& levelPath, const LevelDef& level, const Setting& setting, const ScratchData& data)
 {
     // The player's files as a player with these settings has them.
@@ -190,20 +215,9 @@ WalkedRun walk(const std::string& levelPath, const LevelDef& level, const Settin
     options.height = setting.height;
     options.window = &windowOfSize(setting.width, setting.height);
     options.tracePath = (data.path() / "trace.jsonl").string();
-    options.layoutEvery = kLayoutEvery;
-    options.onLayout = [&run](const FrameLayout& frame)
-    {
-        ++run.framesLaidOut;
-        for (const std::string& problem : layoutProblems(frame))
-            run.problems.push_back("frame " + std::to_string(frame.frame) + ": " + problem);
-        std::set<std::string> over;
-        for (const ScreenRegion& panel : frame.panels)
-            for (const ScreenRegion& thing : frame.keepVisible)
-                if (!overlappingRegions({panel, thing}).empty())
-                    over.insert(panel.name + " over the " + thing.name);
-        for (const std::string& pair : over)
-            ++run.covering[pair];
-    };
+    WalkObserver observer(run);
+    options.observer = &observer;
+    useGameScreens(options);
     {
         App app(std::move(options), Campaign{}, std::move(store), loadGameFont());
         run.exitCode = app.run();

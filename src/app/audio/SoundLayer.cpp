@@ -1,6 +1,6 @@
 #include "audio/SoundLayer.hpp"
 
-#include "screens/App.hpp"
+#include "shell/App.hpp"
 
 #include <abalike/save/Settings.hpp>
 #include <algorithm>
@@ -111,5 +111,16 @@ void SoundLayer::frameUpdate(PlayView& view, double frameS)
     }
     m_lastSpeedMps = aim->speedMps;
 }
+
+namespace
+{
+/// The bottom play layer: it draws nothing and only listens to the session.
+const PlayLayerRegistrar kLayer{10, "sound",
+                                [](App& app) -> std::unique_ptr<PlayLayer>
+                                {
+                                    (void)app;
+                                    return std::make_unique<SoundLayer>();
+                                }};
+} // namespace
 
 } // namespace abalike::app

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "audio/SoundBoard.hpp"
-#include "screens/PlayLayer.hpp"
+#include "play/PlayLayer.hpp"
 
 #include <abalike/game/GameSession.hpp>
 #include <vector>

@@ -1,5 +1,5 @@
 #include "bench/AccuracySweep.hpp"
-#include "bench/MedianTimer.hpp"
+#include "shell/MedianTimer.hpp"
 
 #include <abalike/flight/ClosedForm.hpp>
 

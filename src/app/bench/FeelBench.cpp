@@ -2,7 +2,7 @@
 // over the campaign (issue 19). Targets are reported against the measurement, never asserted.
 #include "bench/BenchSuite.hpp"
 #include "bench/ReportTable.hpp"
-#include "cli/DataPaths.hpp"
+#include "shell/DataPaths.hpp"
 
 #include <abalike/design/Solver.hpp>
 #include <abalike/game/GameSession.hpp>

@@ -1,9 +1,10 @@
 #include "bench/BenchSuite.hpp"
 #include "bench/ReportTable.hpp"
-#include "cli/DataPaths.hpp"
-#include "cli/WindowOptions.hpp"
 #include "render/Font.hpp"
-#include "screens/App.hpp"
+#include "screens/GameScreens.hpp"
+#include "shell/App.hpp"
+#include "shell/DataPaths.hpp"
+#include "shell/Display.hpp"
 #include "teach/Guide.hpp"
 
 #include <abalike/game/GameSession.hpp>
@@ -108,6 +109,24 @@ double previewMedianMs(const LevelDef& level, const ScriptedShot& shot, int call
     return percentile(ms, 0.5);
 }
 
+/// Keeps a scene's frame times; the first frame is the load (the settle step, the first glyphs and shaders),
+/// counted as the load, not as a frame.
+class SceneTimer final : public FrameObserver
+{
+public:
+    explicit SceneTimer(SceneFrames& result) : m_result(result) {}
+    void firstFrame(double loadS) override { m_result.loadMs = 1000.0 * loadS; }
+    void frameTimed(const FrameTimes& times) override
+    {
+        if (!std::exchange(m_first, false))
+            m_result.frames.push_back(times);
+    }
+
+private:
+    SceneFrames& m_result;
+    bool m_first = true;
+};
+
 /// Plays the level in the real game loop (window, screens, every layer) with the shot fired at once.
 SceneFrames playScene(const Scene& scene, FrameSize size, const ScriptedShot& shot, int frames, Campaign campaign)
 {
@@ -123,16 +142,9 @@ SceneFrames playScene(const Scene& scene, FrameSize size, const ScriptedShot& sh
     options.width = size.width;
     options.height = size.height;
     options.shots.push_back(shot);
-    // The first frame is the load (the settle step, the first glyphs and shaders): counted there, not here.
-    options.onFrameTimed = [&result, first = true](const FrameTimes& times) mutable
-    {
-        if (!std::exchange(first, false))
-            result.frames.push_back(times);
-    };
-    options.onFirstFrame = [&result](double loadS)
-    {
-        result.loadMs = 1000.0 * loadS;
-    };
+    SceneTimer timer(result);
+    options.observer = &timer;
+    useGameScreens(options);
     // Every overlay on, and the player's own files left alone: the settings come from a folder of our own (a
     // scripted run reads its data folder and never writes it).
     Settings settings;

@@ -1,6 +1,6 @@
 #include "bench/BenchSuite.hpp"
 #include "bench/PerfParts.hpp"
-#include "cli/DataPaths.hpp"
+#include "shell/DataPaths.hpp"
 
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/world/StressScenes.hpp>

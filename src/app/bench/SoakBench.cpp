@@ -1,6 +1,6 @@
 #include "bench/BenchSuite.hpp"
 #include "bench/ReportTable.hpp"
-#include "cli/DataPaths.hpp"
+#include "shell/DataPaths.hpp"
 
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/LevelIO.hpp>

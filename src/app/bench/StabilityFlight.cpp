@@ -1,5 +1,5 @@
 #include "bench/StabilityFlight.hpp"
-#include "bench/MedianTimer.hpp"
+#include "shell/MedianTimer.hpp"
 
 #include <abalike/flight/FlightIntegrator.hpp>
 #include <abalike/flight/FlightRhs.hpp>

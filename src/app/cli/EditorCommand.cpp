@@ -1,10 +1,11 @@
 #include "cli/Commands.hpp"
-#include "cli/DataPaths.hpp"
 #include "cli/UsageError.hpp"
 #include "cli/WindowOptions.hpp"
 #include "editor/EditorScreen.hpp"
 #include "render/Font.hpp"
-#include "screens/App.hpp"
+#include "screens/GameScreens.hpp"
+#include "shell/App.hpp"
+#include "shell/DataPaths.hpp"
 
 #include <abalike/level/Campaign.hpp>
 #include <abalike/save/DataDirectory.hpp>
@@ -70,6 +71,7 @@ int runEditCommand(const EditArgs& a)
     {
         return std::make_unique<EditorScreen>(app, source);
     };
+    useGameScreens(options);
     App app(std::move(options), std::move(campaign), std::move(store), loadGameFont());
     return app.run();
 }

@@ -1,8 +1,8 @@
 // `abalike import FILE.xml -o LEVEL.json`: converts a Science Birds level (the game's and the AIBIRDS competitions'
 // XML) into a level of ours, reporting each change the conversion made at its place in the XML file.
 #include "cli/Commands.hpp"
-#include "cli/DataPaths.hpp"
 #include "cli/UsageError.hpp"
+#include "shell/DataPaths.hpp"
 
 #include <abalike/edit/SceneEditor.hpp>
 #include <abalike/level/LevelWriter.hpp>

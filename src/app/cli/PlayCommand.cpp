@@ -1,11 +1,12 @@
 #include "cli/Arguments.hpp"
 #include "cli/Commands.hpp"
-#include "cli/DataPaths.hpp"
 #include "cli/UsageError.hpp"
 #include "cli/WindowOptions.hpp"
 #include "input/ScriptedInput.hpp"
 #include "render/Font.hpp"
-#include "screens/App.hpp"
+#include "screens/GameScreens.hpp"
+#include "shell/App.hpp"
+#include "shell/DataPaths.hpp"
 
 #include <abalike/level/Campaign.hpp>
 #include <abalike/level/LevelIO.hpp>
@@ -137,6 +138,7 @@ int runPlayCommand(const PlayArgs& a)
     }
     if (!haveDisplay())
         return kUsageExitCode;
+    useGameScreens(options);
     App app(std::move(options), std::move(campaign), std::move(store), loadGameFont());
     return app.run();
 }

@@ -1,7 +1,7 @@
 #include "cli/Arguments.hpp"
 #include "cli/Commands.hpp"
-#include "cli/SessionJson.hpp"
 #include "cli/UsageError.hpp"
+#include "shell/SessionJson.hpp"
 
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/save/AtomicWrite.hpp>

@@ -71,16 +71,4 @@ void loadWindowScript(const WindowArgs& args, const SaveStore& store, AppOptions
     }
 }
 
-bool haveDisplay()
-{
-#if defined(__unix__) && !defined(__APPLE__)
-    if (std::getenv("DISPLAY") == nullptr)
-    {
-        std::cerr << "abalike: no display (DISPLAY is not set); for offline frames run under xvfb-run\n";
-        return false;
-    }
-#endif
-    return true;
-}
-
 } // namespace abalike::app

@@ -1,7 +1,8 @@
 #pragma once
 
 #include "cli/Arguments.hpp"
-#include "screens/AppOptions.hpp"
+#include "shell/AppOptions.hpp"
+#include "shell/Display.hpp"
 
 #include <CLI/CLI.hpp>
 #include <abalike/save/SaveStore.hpp>
@@ -32,8 +33,5 @@ void applyWindowOptions(const WindowArgs& args, AppOptions& options);
 /// Loads --script, if given: its coordinates are window pixels of the window the run opens (--size, else the saved
 /// size). Its errors throw as the script loader reports them.
 void loadWindowScript(const WindowArgs& args, const SaveStore& store, AppOptions& options);
-
-/// SFML aborts the process when it cannot reach an X server; false (with one line on stderr) when there is none.
-bool haveDisplay();
 
 } // namespace abalike::app

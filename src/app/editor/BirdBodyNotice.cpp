@@ -3,7 +3,7 @@
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
 #include "render/ScreenRegions.hpp"
-#include "screens/App.hpp"
+#include "shell/App.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <abalike/world/BirdBody.hpp>
@@ -58,5 +58,16 @@ void BirdBodyNotice::drawScreen(sf::RenderTarget& target, PlayView& view)
         y += lineHeight;
     }
 }
+
+namespace
+{
+/// The notice about a bird Box2D cannot collide as designed, over the teaching panels.
+const PlayLayerRegistrar kLayer{30, "bird body notice",
+                                [](App& app) -> std::unique_ptr<PlayLayer>
+                                {
+                                    (void)app;
+                                    return std::make_unique<BirdBodyNotice>();
+                                }};
+} // namespace
 
 } // namespace abalike::app

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "screens/PlayLayer.hpp"
+#include "play/PlayLayer.hpp"
 
 #include <string>
 

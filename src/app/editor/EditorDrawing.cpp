@@ -1,7 +1,7 @@
 #include "editor/EditorScreen.hpp"
 
 #include "render/Palette.hpp"
-#include "screens/App.hpp"
+#include "shell/App.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <cmath>

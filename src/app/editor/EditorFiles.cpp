@@ -1,7 +1,7 @@
 #include "editor/EditorScreen.hpp"
 
-#include "cli/DataPaths.hpp"
-#include "screens/App.hpp"
+#include "shell/App.hpp"
+#include "shell/DataPaths.hpp"
 
 #include <abalike/edit/Autosave.hpp>
 #include <abalike/save/DataDirectory.hpp>

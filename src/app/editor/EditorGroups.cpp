@@ -3,8 +3,8 @@
 // designer's own folder), and the findings kept fresh after every edit.
 #include "editor/EditorScreen.hpp"
 
-#include "cli/DataPaths.hpp"
-#include "screens/App.hpp"
+#include "shell/App.hpp"
+#include "shell/DataPaths.hpp"
 
 #include <SFML/Window/Clipboard.hpp>
 #include <abalike/level/LevelWriter.hpp>

@@ -1,6 +1,6 @@
 #include "editor/EditorScreen.hpp"
 
-#include "screens/App.hpp"
+#include "shell/App.hpp"
 
 #include <abalike/edit/Snapping.hpp>
 #include <cmath>

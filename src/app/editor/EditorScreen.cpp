@@ -2,7 +2,7 @@
 
 #include "render/Font.hpp"
 #include "render/Palette.hpp"
-#include "screens/App.hpp"
+#include "shell/App.hpp"
 
 #include <SFML/Graphics/Sprite.hpp>
 #include <abalike/edit/Autosave.hpp>

@@ -7,7 +7,7 @@
 #include "imgui/ImGuiBridge.hpp"
 #include "render/Mesh.hpp"
 #include "render/WorldRenderer.hpp"
-#include "screens/Screen.hpp"
+#include "shell/Screen.hpp"
 
 #include <SFML/Graphics/Rect.hpp>
 #include <SFML/Graphics/RenderTexture.hpp>

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "editor/EditorScreen.hpp"
-#include "screens/App.hpp"
+#include "shell/App.hpp"
 
 #include <abalike/edit/SceneEditor.hpp>
 #include <abalike/world/Catalog.hpp>

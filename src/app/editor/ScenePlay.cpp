@@ -1,7 +1,7 @@
 #include "editor/ScenePlay.hpp"
 
-#include "screens/App.hpp"
-#include "screens/PlayDrawing.hpp"
+#include "play/PlayDrawing.hpp"
+#include "shell/App.hpp"
 
 #include <algorithm>
 

@@ -1,12 +1,12 @@
 #pragma once
 
 #include "input/AimController.hpp"
+#include "play/PlayLayer.hpp"
 #include "render/Camera.hpp"
 #include "render/Hud.hpp"
 #include "render/OverlayRenderer.hpp"
+#include "render/ShotTrails.hpp"
 #include "render/WorldRenderer.hpp"
-#include "screens/PlayLayer.hpp"
-#include "screens/ShotTrails.hpp"
 
 #include <SFML/Window/Event.hpp>
 #include <abalike/game/GameSession.hpp>

@@ -2,7 +2,7 @@
 
 #include "render/AbilityLook.hpp"
 #include "render/Palette.hpp"
-#include "screens/App.hpp"
+#include "shell/App.hpp"
 
 #include <SFML/Graphics/Text.hpp>
 #include <abalike/save/Settings.hpp>
@@ -184,5 +184,16 @@ void FxLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
         target.draw(text);
     }
 }
+
+namespace
+{
+/// On top: debris falls in front of the overlays, and score pop-ups are never hidden under a panel.
+const PlayLayerRegistrar kLayer{40, "fx",
+                                [](App& app) -> std::unique_ptr<PlayLayer>
+                                {
+                                    (void)app;
+                                    return std::make_unique<FxLayer>();
+                                }};
+} // namespace
 
 } // namespace abalike::app

@@ -2,7 +2,7 @@
 
 #include "fx/CameraShake.hpp"
 #include "fx/Particles.hpp"
-#include "screens/PlayLayer.hpp"
+#include "play/PlayLayer.hpp"
 
 #include <SFML/Graphics/Text.hpp>
 #include <SFML/System/Vector2.hpp>

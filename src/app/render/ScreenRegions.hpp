@@ -29,8 +29,9 @@ void recordScreenRegion(std::string_view name, const sf::FloatRect& rect);
 void setKeepVisibleSink(std::vector<ScreenRegion>* sink);
 std::vector<ScreenRegion>* keepVisibleSink();
 
-/// False while a frame is only laid out, not drawn (the layout tests, AppOptions::onLayout): every panel still finds
-/// its place and measures its text, but labels and meshes skip their draw calls and the world's picture is left out.
+/// False while a frame is only laid out, not drawn (the layout tests, FrameObserver::layoutEvery): every panel still
+/// finds its place and measures its text, but labels and meshes skip their draw calls and the world's picture is left
+/// out.
 void setDrawingPixels(bool drawing);
 bool drawingPixels();
 

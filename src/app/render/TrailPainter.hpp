@@ -1,7 +1,7 @@
 #pragma once
 
 #include "render/Camera.hpp"
-#include "screens/ShotTrails.hpp"
+#include "render/ShotTrails.hpp"
 
 #include <SFML/Graphics/RenderTarget.hpp>
 

@@ -3,7 +3,7 @@
 #include "input/Controls.hpp"
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
-#include "screens/App.hpp"
+#include "shell/App.hpp"
 #include "ui/Card.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "screens/Screen.hpp"
+#include "shell/Screen.hpp"
 
 #include <SFML/Graphics/Font.hpp>
 #include <string>
@@ -18,7 +18,7 @@ class App;
 class HelpScreen : public Screen
 {
 public:
-    static constexpr std::string_view kName = "help";
+    static constexpr std::string_view kName = kHelpScreenName;
 
     explicit HelpScreen(App& app) : m_app(app) {}
 

@@ -6,8 +6,8 @@
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
 #include "render/TextFormat.hpp"
-#include "screens/App.hpp"
 #include "screens/Navigation.hpp"
+#include "shell/App.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <algorithm>

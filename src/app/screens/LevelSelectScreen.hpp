@@ -1,7 +1,7 @@
 #pragma once
 
 #include "render/Mesh.hpp"
-#include "screens/Screen.hpp"
+#include "shell/Screen.hpp"
 
 #include <SFML/Graphics/Rect.hpp>
 #include <cstddef>

@@ -1,9 +1,9 @@
 #include "screens/Navigation.hpp"
 
-#include "screens/App.hpp"
 #include "screens/LevelSelectScreen.hpp"
 #include "screens/PlayScreen.hpp"
 #include "screens/TitleScreen.hpp"
+#include "shell/App.hpp"
 
 namespace abalike::app
 {

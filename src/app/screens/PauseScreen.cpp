@@ -2,11 +2,11 @@
 
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
-#include "screens/App.hpp"
 #include "screens/HelpScreen.hpp"
 #include "screens/Navigation.hpp"
 #include "screens/PlayScreen.hpp"
 #include "screens/SettingsScreen.hpp"
+#include "shell/App.hpp"
 #include "ui/Card.hpp"
 
 namespace abalike::app

@@ -1,13 +1,13 @@
 #include "screens/PlayScreen.hpp"
 
-#include "cli/SessionJson.hpp"
+#include "play/PlayDrawing.hpp"
+#include "play/PlayToolbar.hpp"
 #include "render/CameraFocus.hpp"
 #include "render/TextFormat.hpp"
-#include "screens/App.hpp"
 #include "screens/PauseScreen.hpp"
-#include "screens/PlayDrawing.hpp"
-#include "screens/PlayToolbar.hpp"
 #include "screens/ResultsScreen.hpp"
+#include "shell/App.hpp"
+#include "shell/SessionJson.hpp"
 #include "ui/ProgressCard.hpp"
 
 #include <abalike/level/LevelIO.hpp>

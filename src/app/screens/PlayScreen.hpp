@@ -2,6 +2,7 @@
 
 #include "input/AimController.hpp"
 #include "input/ShotScript.hpp"
+#include "play/PlayLayer.hpp"
 #include "render/Camera.hpp"
 #include "render/CameraControls.hpp"
 #include "render/CameraFocus.hpp"
@@ -9,10 +10,9 @@
 #include "render/Hud.hpp"
 #include "render/OverlayRenderer.hpp"
 #include "render/ReloadNotice.hpp"
+#include "render/ShotTrails.hpp"
 #include "render/WorldRenderer.hpp"
-#include "screens/PlayLayer.hpp"
-#include "screens/Screen.hpp"
-#include "screens/ShotTrails.hpp"
+#include "shell/Screen.hpp"
 
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/LevelWatcher.hpp>

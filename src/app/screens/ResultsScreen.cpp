@@ -1,8 +1,8 @@
 #include "screens/ResultsScreen.hpp"
 
-#include "screens/App.hpp"
 #include "screens/Navigation.hpp"
 #include "screens/PlayScreen.hpp"
+#include "shell/App.hpp"
 
 namespace abalike::app
 {

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "render/ResultsPanel.hpp"
-#include "screens/Screen.hpp"
+#include "shell/Screen.hpp"
 #include "ui/MenuList.hpp"
 
 #include <SFML/Window/Keyboard.hpp>

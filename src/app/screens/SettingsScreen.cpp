@@ -2,7 +2,7 @@
 
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
-#include "screens/App.hpp"
+#include "shell/App.hpp"
 #include "ui/Card.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>

@@ -4,12 +4,12 @@
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
 #include "render/TitleArt.hpp"
-#include "screens/App.hpp"
 #include "screens/HelpScreen.hpp"
+#include "screens/LessonSelectScreen.hpp"
 #include "screens/LevelSelectScreen.hpp"
 #include "screens/Navigation.hpp"
 #include "screens/SettingsScreen.hpp"
-#include "teach/LessonSelectScreen.hpp"
+#include "shell/App.hpp"
 #include "ui/Card.hpp"
 
 namespace abalike::app

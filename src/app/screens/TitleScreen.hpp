@@ -2,7 +2,7 @@
 
 #include "render/Camera.hpp"
 #include "render/WorldRenderer.hpp"
-#include "screens/Screen.hpp"
+#include "shell/Screen.hpp"
 #include "ui/MenuList.hpp"
 
 #include <abalike/game/GameSession.hpp>

@@ -1,9 +1,9 @@
 #include "teach/ComparisonView.hpp"
 
-#include "bench/MedianTimer.hpp"
 #include "render/Mesh.hpp"
 #include "render/Palette.hpp"
 #include "render/TextFormat.hpp"
+#include "shell/MedianTimer.hpp"
 #include "teach/TeachDraw.hpp"
 
 #include <array>

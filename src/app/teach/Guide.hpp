@@ -1,6 +1,6 @@
 #pragma once
 
-#include "screens/PlayLayer.hpp"
+#include "play/PlayLayer.hpp"
 
 #include <SFML/Graphics/Font.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>

@@ -1,8 +1,8 @@
 #pragma once
 
+#include "play/PlayLayer.hpp"
 #include "render/Camera.hpp"
-#include "screens/PlayLayer.hpp"
-#include "screens/ShotTrails.hpp"
+#include "render/ShotTrails.hpp"
 
 #include <SFML/Graphics/Font.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>

@@ -2,9 +2,9 @@
 
 #include "render/ScreenRegions.hpp"
 
+#include "play/PlayToolbar.hpp"
 #include "render/LabelPlacement.hpp"
-#include "screens/App.hpp"
-#include "screens/PlayToolbar.hpp"
+#include "shell/App.hpp"
 #include "teach/BandGraph.hpp"
 #include "teach/ForceArrows.hpp"
 #include "teach/ImpactPanel.hpp"
@@ -326,5 +326,15 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     if (overlayOn() || m_guide.active())
         m_paths.drawTools(target, *font, view.camera(), session, rowSize, scale);
 }
+
+namespace
+{
+/// The teaching overlay sits over the world and the HUD, under the notices and the effects.
+const PlayLayerRegistrar kLayer{20, "teach",
+                                [](App& app) -> std::unique_ptr<PlayLayer>
+                                {
+                                    return std::make_unique<TeachLayer>(app);
+                                }};
+} // namespace
 
 } // namespace abalike::app

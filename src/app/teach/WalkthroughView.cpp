@@ -4,7 +4,7 @@
 #include "render/Mesh.hpp"
 #include "render/Palette.hpp"
 #include "render/TextFormat.hpp"
-#include "screens/App.hpp"
+#include "shell/App.hpp"
 #include "teach/TeachDraw.hpp"
 
 #include <abalike/flight/ClosedForm.hpp>

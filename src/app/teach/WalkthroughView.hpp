@@ -1,7 +1,7 @@
 #pragma once
 
+#include "play/PlayLayer.hpp"
 #include "render/Camera.hpp"
-#include "screens/PlayLayer.hpp"
 #include "teach/BirdReadout.hpp"
 
 #include <SFML/Graphics/Font.hpp>

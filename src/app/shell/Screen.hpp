@@ -49,4 +49,7 @@ public:
     virtual bool rightClickIsBack() const { return true; }
 };
 
+/// The help screen's name: the app opens and closes it with F1 and '?' over any screen (AppOptions::helpScreen).
+inline constexpr std::string_view kHelpScreenName = "help";
+
 } // namespace abalike::app

@@ -1,4 +1,4 @@
-#include "screens/Trace.hpp"
+#include "shell/Trace.hpp"
 
 namespace abalike::app
 {

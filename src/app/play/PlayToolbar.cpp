@@ -1,9 +1,9 @@
-#include "screens/PlayToolbar.hpp"
+#include "play/PlayToolbar.hpp"
 
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
 #include "render/ScreenRegions.hpp"
-#include "screens/App.hpp"
+#include "shell/App.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "cli/SessionJson.hpp"
+#include "shell/SessionJson.hpp"
 
 namespace abalike::app
 {

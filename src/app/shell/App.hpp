@@ -3,12 +3,13 @@
 #include "input/Gamepad.hpp"
 #include "input/InputState.hpp"
 #include "input/ScriptedInput.hpp"
-#include "screens/AppOptions.hpp"
-#include "screens/ScreenStack.hpp"
-#include "screens/Trace.hpp"
+#include "shell/AppOptions.hpp"
+#include "shell/ScreenStack.hpp"
+#include "shell/Trace.hpp"
 
 #include <SFML/Graphics/Font.hpp>
 #include <SFML/Graphics/RenderWindow.hpp>
+#include <SFML/System/Clock.hpp>
 #include <abalike/level/Campaign.hpp>
 #include <abalike/level/LevelDef.hpp>
 #include <abalike/save/SaveStore.hpp>
@@ -94,6 +95,11 @@ private:
     void toggleHelp();
     /// True when the app handled the event itself (window close, resize, global keys).
     bool handleGlobal(const sf::Event& event);
+    /// One frame: events, the physics steps due, the frame update, then drawing (or laying out, every layoutEvery
+    /// frames when the observer asks for it). True when it was a scripted run's last frame.
+    bool runFrame(sf::Clock& clock, int layoutEvery);
+    /// After the loop: the last frame recorded for the observer, the trace or the screenshot. Returns the exit code.
+    int finishRun(int exitCode, bool layoutOnly);
     int stepsForFrame(double frameS);
     /// reuseCovered: screens under an overlay come from the stack's copy of them (ScreenStack::drawWithSnapshot);
     /// false draws every screen, as the last frame of a scripted run does to record its texts and panels.

@@ -5,8 +5,7 @@
 #include <abalike/save/Settings.hpp>
 #include <abalike/script/InputScript.hpp>
 
-#include "screens/FrameLayout.hpp"
-#include "screens/FrameTimes.hpp"
+#include "shell/FrameObserver.hpp"
 
 #include <functional>
 #include <memory>
@@ -41,22 +40,17 @@ struct AppOptions
     std::optional<unsigned> height;
     std::optional<Wording> wording; ///< `--wording` wins over the saved setting for this run
 
-    /// Called after every frame with the wall time it took and where it went: `bench frames`.
-    std::function<void(const FrameTimes&)> onFrameTimed;
-    /// Called once with the seconds from opening the first screen (loading its level) to its first frame shown.
-    std::function<void(double loadS)> onFirstFrame;
-
-    /// Layout tests: when set, frames are laid out but no pixel is drawn or shown, and every `layoutEvery`th frame
-    /// (and the last) is laid out and handed here. Laying a frame out without its pixels costs a fraction of drawing
-    /// it, so a test can walk every level at every text size and window.
-    std::function<void(const FrameLayout&)> onLayout;
-    int layoutEvery = 1;
+    /// Watches the frame loop (`bench frames`, the layout walk); null for a plain run.
+    FrameObserver* observer = nullptr;
     /// Plays in this open window instead of opening one, and leaves it open (`--size` is then its size): the layout
     /// walk keeps one window, and one OpenGL context, for each size it walks rather than start a new one per run.
     sf::RenderWindow* window = nullptr;
 
-    /// Opens this screen first instead of the title or a level (`abalike edit` opens the editor this way).
+    /// The screen the run opens with (the title, a level, the editor): the layers above the shell choose it
+    /// (screens/GameScreens.hpp; `abalike edit` opens the editor this way).
     std::function<std::unique_ptr<Screen>(App&)> firstScreen;
+    /// The help screen F1 and '?' open over any screen (none: the keys do nothing).
+    std::function<std::unique_ptr<Screen>(App&)> helpScreen;
 
     /// A scripted run (frames, input script or shots) reads the player's files but never writes them.
     bool scripted() const { return frames.has_value() || hasScript || !shots.empty(); }

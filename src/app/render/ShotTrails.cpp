@@ -1,4 +1,4 @@
-#include "screens/ShotTrails.hpp"
+#include "render/ShotTrails.hpp"
 
 #include <algorithm>
 #include <iterator>

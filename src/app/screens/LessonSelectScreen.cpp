@@ -1,9 +1,9 @@
-#include "teach/LessonSelectScreen.hpp"
+#include "screens/LessonSelectScreen.hpp"
 
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
-#include "screens/App.hpp"
 #include "screens/PlayScreen.hpp"
+#include "shell/App.hpp"
 #include "teach/Guide.hpp"
 #include "ui/Card.hpp"
 

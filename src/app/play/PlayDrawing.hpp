@@ -1,9 +1,9 @@
 #pragma once
 
+#include "play/PlayLayer.hpp"
 #include "render/Hud.hpp"
 #include "render/OverlayRenderer.hpp"
 #include "render/WorldRenderer.hpp"
-#include "screens/PlayLayer.hpp"
 
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <memory>

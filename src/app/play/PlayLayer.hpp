@@ -1,15 +1,17 @@
 #pragma once
 
+#include "play/SlowMotion.hpp"
 #include "render/Camera.hpp"
 #include "render/Hud.hpp"
-#include "screens/SlowMotion.hpp"
 
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <SFML/Window/Event.hpp>
 #include <abalike/flight/Prediction.hpp>
 #include <abalike/game/GameSession.hpp>
+#include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -93,7 +95,17 @@ public:
     }
 };
 
-/// The layers every play screen gets, bottom first. Add a new layer in PlayLayers.cpp.
+/// Makes one play layer for a play screen.
+using PlayLayerFactory = std::function<std::unique_ptr<PlayLayer>(App&)>;
+
+/// Registers a play layer from its own file: `const PlayLayerRegistrar kFx{40, "fx", ...};`. Layers are stacked by
+/// order, lowest at the bottom: drawn first, offered input last.
+struct PlayLayerRegistrar
+{
+    PlayLayerRegistrar(int order, std::string name, PlayLayerFactory make);
+};
+
+/// The layers every play screen gets, bottom first: every registered layer, by order.
 std::vector<std::unique_ptr<PlayLayer>> makePlayLayers(App& app);
 
 } // namespace abalike::app

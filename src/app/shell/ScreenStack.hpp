@@ -1,6 +1,6 @@
 #pragma once
 
-#include "screens/Screen.hpp"
+#include "shell/Screen.hpp"
 
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <SFML/Graphics/RenderWindow.hpp>

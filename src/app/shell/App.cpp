@@ -1,13 +1,10 @@
-#include "screens/App.hpp"
+#include "shell/App.hpp"
 
 #include "render/Hud.hpp"
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
 #include "render/ScreenRegions.hpp"
 #include "render/Screenshot.hpp"
-#include "screens/HelpScreen.hpp"
-#include "screens/PlayScreen.hpp"
-#include "screens/TitleScreen.hpp"
 
 #include <abalike/level/SafeText.hpp>
 
@@ -27,21 +24,6 @@ namespace abalike::app
 
 namespace
 {
-/// Whether a level file given on the command line is this campaign level: the same file, or a copy with the same
-/// bytes (a build tree plays the staged copy of levels/, while designers name the source file).
-bool sameLevelFile(const std::string& campaignPath, const std::string& givenPath)
-{
-    std::error_code ec;
-    if (std::filesystem::equivalent(campaignPath, givenPath, ec))
-        return true;
-    const auto size = std::filesystem::file_size(campaignPath, ec);
-    if (ec || size != std::filesystem::file_size(givenPath, ec) || ec)
-        return false;
-    std::ifstream a(campaignPath, std::ios::binary);
-    std::ifstream b(givenPath, std::ios::binary);
-    return std::equal(std::istreambuf_iterator<char>(a), {}, std::istreambuf_iterator<char>(b), {});
-}
-
 constexpr double kMaxFrameS = 0.25; // a slow frame cannot start a spiral of death
 constexpr double kNoticeS = 6.0;
 constexpr std::size_t kMaxNotices = 4;
@@ -103,26 +85,9 @@ void App::reopenWindow()
 
 void App::openFirstScreen()
 {
-    if (m_options.firstScreen)
-        m_screens.push(m_options.firstScreen(*this)); // another command's screen (abalike edit)
-    else if (m_options.level)
-    {
-        // A level given on the command line: straight into it. If it is a campaign level, "next" follows the
-        // campaign from there.
-        std::optional<std::size_t> index;
-        for (std::size_t i = 0; i < m_campaign.levels.size() && !index; ++i)
-            if (sameLevelFile(m_campaign.levels[i].path, m_options.levelPath))
-                index = i;
-        m_screens.push(std::make_unique<PlayScreen>(*this, PlaySource{*m_options.level, m_options.levelPath, index}));
-    }
-    else if (!m_options.shots.empty() && !m_campaign.levels.empty())
-    {
-        // Scripted shots without a level start the campaign's first level, as they always have.
-        const CampaignLevel& first = m_campaign.levels.front();
-        m_screens.push(std::make_unique<PlayScreen>(*this, PlaySource{first.level, first.path, 0}));
-    }
-    else
-        m_screens.push(std::make_unique<TitleScreen>(*this));
+    if (!m_options.firstScreen)
+        throw std::logic_error("AppOptions::firstScreen is not set (screens/GameScreens.hpp sets the game's)");
+    m_screens.push(m_options.firstScreen(*this));
     m_screens.applyPending();
 }
 
@@ -131,77 +96,90 @@ int App::run()
     openWindow();
     const sf::Clock loadClock;
     openFirstScreen();
-    const bool offline = m_options.frames.has_value();
+    FrameObserver* observer = m_options.observer;
+    const int layoutEvery = observer != nullptr ? observer->layoutEvery() : 0;
     sf::Clock clock;
+    while (!m_exitCode)
+    {
+        const bool lastFrame = runFrame(clock, layoutEvery);
+        if (observer != nullptr && m_frame == 1)
+            observer->firstFrame(static_cast<double>(loadClock.getElapsedTime().asMicroseconds()) * 1e-6);
+        if (m_screens.empty())
+            quit(m_exitCode.value_or(0));
+        if (lastFrame)
+            break;
+    }
+    const int exitCode = finishRun(m_exitCode.value_or(0), layoutEvery > 0);
+    if (m_options.window == nullptr)
+        m_window.close();
+    return exitCode;
+}
+
+bool App::runFrame(sf::Clock& clock, int layoutEvery)
+{
+    // The frame's parts are timed for `bench frames`: each lap is the time since the last.
     sf::Clock frameClock;
     sf::Clock partClock;
     const auto lap = [&partClock]
     {
         return static_cast<double>(partClock.restart().asMicroseconds()) * 1e-6;
     };
-    while (!m_exitCode)
+    const bool offline = m_options.frames.has_value();
+    m_frameTimes = FrameTimes{};
+    ++m_frame;
+    m_trace.setFrame(m_frame);
+    for (const sf::Event& event : m_script.eventsForFrame(static_cast<int>(m_frame)))
+        dispatch(event);
+    for (const sf::Event& posted : std::exchange(m_posted, {}))
+        dispatch(posted);
+    sf::Event event{};
+    while (m_window.pollEvent(event))
+        dispatch(event);
+
+    const double frameS = offline ? kStepS : std::min(static_cast<double>(clock.restart().asSeconds()), kMaxFrameS);
+    for (const sf::Event& repeat : m_gamepad.tick(frameS))
+        dispatch(repeat);
+    m_frameTimes.updateS += lap();
+    const int steps = stepsForFrame(frameS);
+    for (int i = 0; i < steps && !m_exitCode && m_screens.top() != nullptr; ++i)
+        m_screens.top()->fixedUpdate(kStepS);
+    m_frameTimes.physicsS += lap();
+    if (Screen* top = m_screens.top())
+        top->frameUpdate(frameS);
+    for (Notice& notice : m_notices)
+        notice.shownS += frameS;
+    std::erase_if(m_notices, [](const Notice& n) { return n.shownS > kNoticeS; });
+    m_frameTimes.updateS += lap() - m_frameTimes.previewS;
+
+    const bool lastFrame = offline && m_frame >= *m_options.frames;
+    if (layoutEvery > 0)
     {
-        frameClock.restart();
-        partClock.restart();
-        m_frameTimes = FrameTimes{};
-        ++m_frame;
-        m_trace.setFrame(m_frame);
-        for (const sf::Event& event : m_script.eventsForFrame(static_cast<int>(m_frame)))
-            dispatch(event);
-        for (const sf::Event& posted : std::exchange(m_posted, {}))
-            dispatch(posted);
-        sf::Event event{};
-        while (m_window.pollEvent(event))
-            dispatch(event);
-
-        const double frameS = offline ? kStepS : std::min(static_cast<double>(clock.restart().asSeconds()), kMaxFrameS);
-        for (const sf::Event& repeat : m_gamepad.tick(frameS))
-            dispatch(repeat);
-        m_frameTimes.updateS += lap();
-        const int steps = stepsForFrame(frameS);
-        for (int i = 0; i < steps && !m_exitCode && m_screens.top() != nullptr; ++i)
-            m_screens.top()->fixedUpdate(kStepS);
-        m_frameTimes.physicsS += lap();
-        if (Screen* top = m_screens.top())
-            top->frameUpdate(frameS);
-        for (Notice& notice : m_notices)
-            notice.shownS += frameS;
-        std::erase_if(m_notices, [](const Notice& n) { return n.shownS > kNoticeS; });
-        m_frameTimes.updateS += lap() - m_frameTimes.previewS;
-
-        const bool lastFrame = offline && m_frame >= *m_options.frames;
-        if (m_options.onLayout)
-        {
-            if (!lastFrame && m_frame % std::max(1, m_options.layoutEvery) == 0)
-                m_options.onLayout(recordFrame(false));
-        }
-        else if (!lastFrame)
-        {
-            drawFrame(true);
-            m_frameTimes.drawS += lap();
-            m_window.display();
-            m_frameTimes.displayS += lap();
-        }
-        m_screens.applyPending();
-        m_frameTimes.updateS += lap();
-        m_frameTimes.totalS = static_cast<double>(frameClock.getElapsedTime().asMicroseconds()) * 1e-6;
-        if (m_options.onFrameTimed && !lastFrame)
-            m_options.onFrameTimed(m_frameTimes);
-        if (m_options.onFirstFrame && m_frame == 1)
-            m_options.onFirstFrame(static_cast<double>(loadClock.getElapsedTime().asMicroseconds()) * 1e-6);
-        if (m_screens.empty())
-            quit(m_exitCode.value_or(0));
-        if (lastFrame)
-            break;
+        if (!lastFrame && m_frame % layoutEvery == 0)
+            m_options.observer->laidOut(recordFrame(false));
     }
+    else if (!lastFrame)
+    {
+        drawFrame(true);
+        m_frameTimes.drawS += lap();
+        m_window.display();
+        m_frameTimes.displayS += lap();
+    }
+    m_screens.applyPending();
+    m_frameTimes.updateS += lap();
+    m_frameTimes.totalS = static_cast<double>(frameClock.getElapsedTime().asMicroseconds()) * 1e-6;
+    if (m_options.observer != nullptr && !lastFrame)
+        m_options.observer->frameTimed(m_frameTimes);
+    return lastFrame;
+}
 
-    int exitCode = m_exitCode.value_or(0);
+int App::finishRun(int exitCode, bool layoutOnly)
+{
     // The last frame as the screens are after its changes: what the player would see next. A laid-out run hands it
-    // to onLayout; a trace lists its texts (so a scripted run can check what a screen says) and its layout.
-    if (m_options.onLayout)
+    // to the observer; a trace lists its texts (so a scripted run can check what a screen says) and its layout.
+    if (layoutOnly)
     {
         m_screens.finishBackgroundWork();
-        m_options.onLayout(recordFrame(false));
+        m_options.observer->laidOut(recordFrame(false));
     }
     else if (!m_options.screenshotPath.empty() || !m_options.tracePath.empty())
     {
@@ -229,8 +207,6 @@ int App::run()
             exitCode = exitCode == 0 ? 2 : exitCode;
     }
     m_trace.write("exit", {{"code", exitCode}, {"screens", m_screens.names()}});
-    if (m_options.window == nullptr)
-        m_window.close();
     return exitCode;
 }
 
@@ -329,11 +305,13 @@ bool App::handleGlobal(const sf::Event& event)
 
 void App::toggleHelp()
 {
+    if (!m_options.helpScreen)
+        return;
     const Screen* top = m_screens.top();
-    if (top != nullptr && top->name() == HelpScreen::kName)
+    if (top != nullptr && top->name() == kHelpScreenName)
         m_screens.pop();
     else
-        m_screens.push(std::make_unique<HelpScreen>(*this));
+        m_screens.push(m_options.helpScreen(*this));
 }
 
 void App::drawFrame(bool reuseCovered)

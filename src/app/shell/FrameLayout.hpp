@@ -8,7 +8,7 @@
 namespace abalike::app
 {
 
-/// Where one frame put what it draws over the world: the layout tests' view of a frame (AppOptions::onLayout).
+/// Where one frame put what it draws over the world: the layout tests' view of a frame (FrameObserver).
 struct FrameLayout
 {
     long long frame = 0;

@@ -1,4 +1,4 @@
-#include "cli/DataPaths.hpp"
+#include "shell/DataPaths.hpp"
 
 #include <abalike/world/SettleCache.hpp>
 

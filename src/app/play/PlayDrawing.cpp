@@ -1,14 +1,14 @@
-#include "screens/PlayDrawing.hpp"
+#include "play/PlayDrawing.hpp"
 
 #include "render/ScreenRegions.hpp"
 
 #include "input/AimController.hpp"
+#include "play/PlayToolbar.hpp"
 #include "render/LabelPlacement.hpp"
 #include "render/Mesh.hpp"
 #include "render/Palette.hpp"
 #include "render/TrailPainter.hpp"
-#include "screens/App.hpp"
-#include "screens/PlayToolbar.hpp"
+#include "shell/App.hpp"
 
 #include <SFML/Graphics/View.hpp>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "screens/PlayLayer.hpp"
+#include "play/PlayLayer.hpp"
 
 #include <SFML/Graphics/Rect.hpp>
 #include <SFML/Window/Keyboard.hpp>
