@@ -1,5 +1,7 @@
 #include "editor/EditorChecks.hpp"
 
+#include "shell/Trace.hpp"
+
 #include <abalike/design/Solver.hpp>
 #include <abalike/world/RestCheck.hpp>
 
@@ -8,6 +10,12 @@
 
 namespace abalike::app
 {
+
+namespace
+{
+/// Above this many bodies the rest test takes long enough to stall the editor; it is then re-run by hand.
+constexpr std::size_t kAutoRestBodies = 200;
+} // namespace
 
 namespace
 {
@@ -139,6 +147,28 @@ void EditorChecks::clear()
     m_summaries.clear();
     for (auto& ran : m_ran)
         ran.reset();
+}
+
+void EditorChecks::recheckAfterEdits(const SceneEditor& scene, bool busy, Trace& trace)
+{
+    // After every edit (once a drag or slider is let go): the geometry check always, the rest test when it has
+    // run on this scene and the scene is small enough to test without a stall. Findings never go stale unseen.
+    if (busy || scene.dragging() || scene.revision() == m_recheckedRevision)
+        return;
+    const bool firstLook = m_recheckedRevision == ~0ull;
+    m_recheckedRevision = scene.revision();
+    if (firstLook)
+        return; // the scene as opened keeps its opening findings
+    const LevelDef& level = scene.level();
+    runGeometry(level, scene.revision());
+    const bool rest = ranOn(FindingSource::Rest) && level.blocks.size() + level.pigs.size() <= kAutoRestBodies;
+    if (rest)
+        runRest(level, scene.revision());
+    std::size_t geometry = 0;
+    for (const Finding& finding : findings())
+        geometry += finding.source == FindingSource::Geometry ? 1 : 0;
+    trace.write("editor-recheck",
+                        {{"revision", scene.revision()}, {"geometry_findings", geometry}, {"rest", rest}});
 }
 
 } // namespace abalike::app

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <abalike/edit/Findings.hpp>
+#include <abalike/edit/SceneEditor.hpp>
 
 #include <atomic>
 #include <cstdint>
@@ -12,6 +13,8 @@
 
 namespace abalike::app
 {
+
+class Trace;
 
 /// The checks a designer runs from the editor (the loader's geometry and reach checks, the 10 s rest test, the
 /// solver) and what they found, marked on the objects. Geometry and rest run at once (milliseconds); the solver
@@ -47,6 +50,10 @@ public:
     /// One line per source saying what it found ("geometry: 2 problems", "rest: stands still").
     const std::vector<std::string>& summaries() const { return m_summaries; }
     void clear();
+    /// After every edit, once it is complete (not while busy: a drag, a handle or a widget held, the scene playing):
+    /// the geometry check, and the rest test when it has run on this scene and the scene is small enough to test
+    /// without a stall. The scene as opened keeps its opening findings.
+    void recheckAfterEdits(const SceneEditor& scene, bool busy, Trace& trace);
 
 private:
     void replace(FindingSource source, std::vector<Finding> findings, std::uint64_t revision, std::string summary);
@@ -62,6 +69,7 @@ private:
     std::shared_ptr<Progress> m_progress = std::make_shared<Progress>();
     std::future<std::vector<Finding>> m_solver;
     std::uint64_t m_solverRevision = 0;
+    std::uint64_t m_recheckedRevision = ~0ull; ///< the revision the automatic re-check last ran on
 };
 
 } // namespace abalike::app

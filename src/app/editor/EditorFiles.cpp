@@ -1,4 +1,8 @@
-#include "editor/EditorScreen.hpp"
+#include "editor/EditorFiles.hpp"
+
+#include "editor/EditorContext.hpp"
+#include "editor/PlayTest.hpp"
+#include "editor/SceneTools.hpp"
 
 #include "shell/App.hpp"
 #include "shell/DataPaths.hpp"
@@ -21,34 +25,61 @@ constexpr auto kAutosaveEvery = std::chrono::seconds(5);
 
 } // namespace
 
-std::filesystem::path EditorScreen::schemaPath() const
+EditorFiles::EditorFiles(EditorContext& context, PlayTest& play, SceneTools& tools)
+    : m_ctx(context), m_play(play), m_tools(tools)
+{
+    // An unsaved scene from a run that ended without saving is offered back (never in scripted runs).
+    if (m_ctx.app.scripted())
+        return;
+    const auto dir = defaultDataDirectory();
+    try
+    {
+        if (auto saved = dir.empty() ? std::nullopt : readAutosave(autosavePath(dir), Catalog::builtin()))
+        {
+            EditorSource recovered;
+            recovered.level = std::move(saved->level);
+            recovered.path = saved->target;
+            recovered.issues = std::move(saved->geometryIssues);
+            m_recovered = std::move(recovered);
+        }
+    }
+    catch (const LevelLoadError& error)
+    {
+        std::cerr << "abalike: " << error.what() << "\n";
+    }
+}
+
+std::filesystem::path EditorFiles::schemaPath() const
 {
     return std::filesystem::path(levelsDirectory()) / "schema" / "level.schema.json";
 }
 
-std::filesystem::path EditorScreen::defaultSavePath() const
+std::filesystem::path EditorFiles::defaultSavePath() const
 {
-    if (!m_editor->path().empty())
-        return m_editor->path();
+    if (!m_ctx.scene().path().empty())
+        return m_ctx.scene().path();
     // A new scene goes with the player's files, not into the game's own levels.
     const std::filesystem::path data = defaultDataDirectory();
-    const std::string name = (m_editor->level().id.empty() ? std::string("scene") : m_editor->level().id) + ".json";
+    const std::string name = (m_ctx.scene().level().id.empty() ? std::string("scene") : m_ctx.scene().level().id) + ".json";
     return data.empty() ? std::filesystem::path(name) : data / "levels" / name;
 }
 
-void EditorScreen::requestSave()
+void EditorFiles::requestSave()
 {
-    if (m_editor->path().empty())
-    {
-        m_fileDialogSaves = true;
-        m_fileDialogPath = defaultSavePath().string();
-        m_showFileDialog = true;
-        return;
-    }
-    saveTo(m_editor->path());
+    if (m_ctx.scene().path().empty())
+        requestSaveAs();
+    else
+        saveTo(m_ctx.scene().path());
 }
 
-bool EditorScreen::saveTo(const std::filesystem::path& path)
+void EditorFiles::requestSaveAs()
+{
+    m_fileDialogSaves = true;
+    m_fileDialogPath = defaultSavePath().string();
+    m_showFileDialog = true;
+}
+
+bool EditorFiles::saveTo(const std::filesystem::path& path)
 {
     try
     {
@@ -56,38 +87,38 @@ bool EditorScreen::saveTo(const std::filesystem::path& path)
         if (path.has_parent_path() && !std::filesystem::exists(path.parent_path(), ec) &&
             path.parent_path() == defaultSavePath().parent_path())
             std::filesystem::create_directories(path.parent_path(), ec); // the player's own levels folder
-        const std::vector<LevelIssue> geometry = m_editor->save(path, schemaPath());
-        m_checks.setOpeningIssues({}, m_editor->revision());
+        const std::vector<LevelIssue> geometry = m_ctx.scene().save(path, schemaPath());
+        m_ctx.checks.setOpeningIssues({}, m_ctx.scene().revision());
         if (!geometry.empty())
-            m_checks.runGeometry(m_editor->level(), m_editor->revision());
-        m_message = "Saved " + path.string() +
+            m_ctx.checks.runGeometry(m_ctx.scene().level(), m_ctx.scene().revision());
+        m_ctx.message = "Saved " + path.string() +
                     (geometry.empty() ? std::string()
                                       : " (" + std::to_string(geometry.size()) +
                                             " geometry problem(s), marked: `abalike check` will fail it)");
-        m_messageIsError = !geometry.empty();
-        m_app.trace().write("editor-save", {{"path", path.string()}, {"problems", geometry.size()}});
-        if (!m_app.scripted())
+        m_ctx.messageIsError = !geometry.empty();
+        m_ctx.app.trace().write("editor-save", {{"path", path.string()}, {"problems", geometry.size()}});
+        if (!m_ctx.app.scripted())
             removeAutosave(autosavePath(defaultDataDirectory()));
         return true;
     }
     catch (const LevelLoadError& error)
     {
-        m_message = "Not saved: " + (error.issues().empty()
+        m_ctx.message = "Not saved: " + (error.issues().empty()
                                          ? std::string(error.what())
                                          : error.issues().front().pointer + ": " + error.issues().front().message);
     }
     catch (const std::exception& error)
     {
-        m_message = std::string("Not saved: ") + error.what();
+        m_ctx.message = std::string("Not saved: ") + error.what();
     }
-    m_messageIsError = true;
-    m_app.trace().write("editor-save-failed", {{"path", path.string()}, {"why", m_message}});
+    m_ctx.messageIsError = true;
+    m_ctx.app.trace().write("editor-save-failed", {{"path", path.string()}, {"why", m_ctx.message}});
     return false;
 }
 
-void EditorScreen::request(Pending action)
+void EditorFiles::request(Pending action)
 {
-    if (m_editor->dirty() && action != Pending::None)
+    if (m_ctx.scene().dirty() && action != Pending::None)
     {
         m_pending = action;
         m_showUnsaved = true;
@@ -96,24 +127,24 @@ void EditorScreen::request(Pending action)
     carryOut(action);
 }
 
-void EditorScreen::carryOut(Pending action)
+void EditorFiles::carryOut(Pending action)
 {
     m_pending = Pending::None;
     switch (action)
     {
     case Pending::Leave:
-        stopPlay();
-        m_app.screens().pop();
+        m_play.stop();
+        m_ctx.app.screens().pop();
         break;
     case Pending::Quit:
-        m_app.quit(0);
+        m_ctx.app.quit(0);
         break;
     case Pending::New:
         resetScene(sandboxSource());
         break;
     case Pending::Open:
         m_fileDialogSaves = false;
-        m_fileDialogPath = m_editor->path().empty() ? levelsDirectory() + "/" : m_editor->path().string();
+        m_fileDialogPath = m_ctx.scene().path().empty() ? levelsDirectory() + "/" : m_ctx.scene().path().string();
         m_showFileDialog = true;
         break;
     case Pending::None:
@@ -121,30 +152,25 @@ void EditorScreen::carryOut(Pending action)
     }
 }
 
-void EditorScreen::resetScene(EditorSource source)
+void EditorFiles::resetScene(EditorSource source)
 {
-    stopPlay();
-    m_editor = std::make_unique<SceneEditor>(source.level);
-    m_editor->setPath(source.path);
-    m_checks.clear();
-    m_checks.setOpeningIssues(source.issues, m_editor->revision());
-    m_scene.reset();
-    m_tool = Tool::Select;
-    m_viewFitted = false;
-    m_message = source.path.empty() ? "New sandbox scene" : "Opened " + source.path.string();
-    m_messageIsError = false;
-    m_app.trace().write("editor", {{"level", m_editor->level().id}, {"path", source.path.string()}});
+    m_play.stop();
+    m_ctx.replaceScene(source);
+    m_tools.reset();
+    m_ctx.message = source.path.empty() ? "New sandbox scene" : "Opened " + source.path.string();
+    m_ctx.messageIsError = false;
+    m_ctx.app.trace().write("editor", {{"level", m_ctx.scene().level().id}, {"path", source.path.string()}});
 }
 
-void EditorScreen::openFile(const std::filesystem::path& path)
+void EditorFiles::openFile(const std::filesystem::path& path)
 {
     // Open opens what is there; a new level starts from File > New or `abalike edit NEW.json`.
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
     {
-        m_message = std::filesystem::exists(path, ec) ? "\"" + path.string() + "\" is a folder, not a level file"
+        m_ctx.message = std::filesystem::exists(path, ec) ? "\"" + path.string() + "\" is a folder, not a level file"
                                                       : "No such file: \"" + path.string() + "\"";
-        m_messageIsError = true;
+        m_ctx.messageIsError = true;
         return;
     }
     try
@@ -154,19 +180,19 @@ void EditorScreen::openFile(const std::filesystem::path& path)
     }
     catch (const LevelLoadError& error)
     {
-        m_message = error.issues().empty() ? error.what() : error.issues().front().format();
-        m_messageIsError = true;
+        m_ctx.message = error.issues().empty() ? error.what() : error.issues().front().format();
+        m_ctx.messageIsError = true;
         for (const LevelIssue& issue : error.issues())
             std::cerr << issue.format() << "\n";
     }
 }
 
-void EditorScreen::autosaveIfDue()
+void EditorFiles::autosaveIfDue()
 {
     // Scripted runs never write the player's files.
-    if (m_app.scripted())
+    if (m_ctx.app.scripted())
         return;
-    if (!m_editor->dirty())
+    if (!m_ctx.scene().dirty())
     {
         // Undone back to what was saved: nothing is left to recover.
         if (m_autosaveWritten)
@@ -174,13 +200,13 @@ void EditorScreen::autosaveIfDue()
         m_autosaveWritten = false;
         return;
     }
-    if (m_editor->revision() == m_autosavedRevision)
+    if (m_ctx.scene().revision() == m_autosavedRevision)
         return;
     const auto now = std::chrono::steady_clock::now();
     if (now - m_lastAutosave < kAutosaveEvery)
         return;
     m_lastAutosave = now;
-    m_autosavedRevision = m_editor->revision();
+    m_autosavedRevision = m_ctx.scene().revision();
     const std::filesystem::path dir = defaultDataDirectory();
     if (dir.empty())
         return;
@@ -188,17 +214,17 @@ void EditorScreen::autosaveIfDue()
     {
         std::error_code ec;
         std::filesystem::create_directories(dir, ec);
-        writeAutosave(autosavePath(dir), m_editor->level(), m_editor->path(), Catalog::builtin());
+        writeAutosave(autosavePath(dir), m_ctx.scene().level(), m_ctx.scene().path(), Catalog::builtin());
         m_autosaveWritten = true;
     }
     catch (const std::exception& error)
     {
-        m_message = std::string("Autosave failed: ") + error.what();
-        m_messageIsError = true;
+        m_ctx.message = std::string("Autosave failed: ") + error.what();
+        m_ctx.messageIsError = true;
     }
 }
 
-void EditorScreen::dialogs()
+void EditorFiles::dialogs()
 {
     if (m_recovered && !ImGui::IsPopupOpen("Recover an unsaved scene"))
         ImGui::OpenPopup("Recover an unsaved scene");
@@ -210,13 +236,13 @@ void EditorScreen::dialogs()
     if (m_showFileDialog && !ImGui::IsPopupOpen(fileTitle))
         ImGui::OpenPopup(fileTitle);
     fileDialog();
-    m_modalOpen = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+    m_ctx.modalOpen = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
 }
 
-void EditorScreen::recoverDialog()
+void EditorFiles::recoverDialog()
 {
-    const ImVec2 centre(0.5f * static_cast<float>(m_app.windowSize().x),
-                        0.5f * static_cast<float>(m_app.windowSize().y));
+    const ImVec2 centre(0.5f * static_cast<float>(m_ctx.app.windowSize().x),
+                        0.5f * static_cast<float>(m_ctx.app.windowSize().y));
     ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     if (!ImGui::BeginPopupModal("Recover an unsaved scene", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
         return;
@@ -230,8 +256,8 @@ void EditorScreen::recoverDialog()
         EditorSource recovered = std::move(*m_recovered);
         m_recovered.reset();
         resetScene(std::move(recovered));
-        m_editor->markUnsaved();
-        m_message = "Recovered the unsaved scene; save it to keep it.";
+        m_ctx.scene().markUnsaved();
+        m_ctx.message = "Recovered the unsaved scene; save it to keep it.";
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
@@ -250,23 +276,23 @@ void EditorScreen::recoverDialog()
     ImGui::EndPopup();
 }
 
-void EditorScreen::unsavedDialog()
+void EditorFiles::unsavedDialog()
 {
-    const ImVec2 centre(0.5f * static_cast<float>(m_app.windowSize().x),
-                        0.5f * static_cast<float>(m_app.windowSize().y));
+    const ImVec2 centre(0.5f * static_cast<float>(m_ctx.app.windowSize().x),
+                        0.5f * static_cast<float>(m_ctx.app.windowSize().y));
     ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
         return;
-    const std::string name = m_editor->path().empty() ? m_editor->level().title : m_editor->path().string();
+    const std::string name = m_ctx.scene().path().empty() ? m_ctx.scene().level().title : m_ctx.scene().path().string();
     ImGui::Text("\"%s\" has changes that are not saved.", name.c_str());
     ImGui::TextDisabled("(An autosave keeps them in the data folder until you decide.)");
     if (ImGui::Button("Save"))
     {
         m_showUnsaved = false;
         ImGui::CloseCurrentPopup();
-        if (m_editor->path().empty())
+        if (m_ctx.scene().path().empty())
             requestSave(); // the save dialog carries on with the pending action once saved
-        else if (saveTo(m_editor->path()))
+        else if (saveTo(m_ctx.scene().path()))
             carryOut(m_pending);
         else
             m_pending = Pending::None;
@@ -276,7 +302,7 @@ void EditorScreen::unsavedDialog()
     {
         m_showUnsaved = false;
         ImGui::CloseCurrentPopup();
-        if (!m_app.scripted())
+        if (!m_ctx.app.scripted())
             removeAutosave(autosavePath(defaultDataDirectory()));
         carryOut(m_pending);
     }
@@ -290,12 +316,12 @@ void EditorScreen::unsavedDialog()
     ImGui::EndPopup();
 }
 
-void EditorScreen::fileDialog()
+void EditorFiles::fileDialog()
 {
     const char* title = m_fileDialogSaves ? "Save level as" : "Open a level";
-    const sf::Vector2f window(m_app.windowSize());
+    const sf::Vector2f window(m_ctx.app.windowSize());
     ImGui::SetNextWindowPos(ImVec2(0.5f * window.x, 0.5f * window.y), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(std::min(window.x - 40.0f, 720.0f * m_app.uiScale()), 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(std::min(window.x - 40.0f, 720.0f * m_ctx.app.uiScale()), 0.0f), ImGuiCond_Always);
     if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoResize))
         return;
     ImGui::TextUnformatted("File:");
@@ -320,8 +346,8 @@ void EditorScreen::fileDialog()
                     openFile(file);
             }
     ImGui::EndChild();
-    if (m_messageIsError && !m_message.empty())
-        ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.45f, 1.0f), "%s", m_message.c_str());
+    if (m_ctx.messageIsError && !m_ctx.message.empty())
+        ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.45f, 1.0f), "%s", m_ctx.message.c_str());
     const bool go = ImGui::Button(m_fileDialogSaves ? "Save" : "Open") || entered;
     ImGui::SameLine();
     if (ImGui::Button("Cancel"))

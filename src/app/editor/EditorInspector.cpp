@@ -1,4 +1,9 @@
-#include "editor/EditorScreen.hpp"
+#include "editor/EditorInspector.hpp"
+
+#include "editor/EditorContext.hpp"
+#include "editor/PanelStyle.hpp"
+#include "editor/PlayTest.hpp"
+#include "editor/SceneDrawing.hpp"
 
 #include "shell/App.hpp"
 
@@ -20,10 +25,6 @@ namespace abalike::app
 
 namespace
 {
-constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                         ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoFocusOnAppearing |
-                                         ImGuiWindowFlags_NoSavedSettings;
-
 bool sliderDouble(const char* label, double& value, double min, double max, const char* format,
                   ImGuiSliderFlags flags = 0)
 {
@@ -37,13 +38,6 @@ bool inputDouble(const char* label, double& value, bool& released, const char* f
     const bool changed = ImGui::InputDouble(label, &value, 0.0, 0.0, format);
     released |= ImGui::IsItemDeactivated();
     return changed;
-}
-
-void heading(const char* text)
-{
-    ImGui::Spacing();
-    ImGui::TextDisabled("%s", text);
-    ImGui::Separator();
 }
 
 const char* shapeNames[] = {"box", "circle", "triangle", "hollow_box"};
@@ -66,19 +60,37 @@ std::string readablePointers(const LevelDef& level, std::string text)
 }
 } // namespace
 
-void EditorScreen::inspectorPanel()
+void EditorInspector::setProperties(const LevelDef& properties, const char* label, const char* mergeKey)
+{
+    const std::string why = m_ctx.scene().setProperties(properties, label, mergeKey);
+    if (!why.empty())
+    {
+        m_ctx.message = why;
+        m_ctx.messageIsError = true;
+        return;
+    }
+    m_play.sync();
+}
+
+void EditorInspector::endGestureIfReleased()
+{
+    if (ImGui::IsItemDeactivated())
+        m_ctx.scene().endGesture();
+}
+
+void EditorInspector::panel()
 {
     const float menu = ImGui::GetFrameHeight();
     const float status = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().WindowPadding.y;
-    const sf::Vector2f window(m_app.windowSize());
-    const float width = window.x - sceneArea().left - sceneArea().width;
+    const sf::Vector2f window(m_ctx.app.windowSize());
+    const float width = window.x - m_ctx.sceneArea().left - m_ctx.sceneArea().width;
     ImGui::SetNextWindowPos(ImVec2(window.x - width, menu), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(width, window.y - menu - status), ImGuiCond_Always);
-    ImGui::Begin(playing() ? "Sandbox (playing)" : "Inspector", nullptr, kPanelFlags);
-    recordPanel();
+    ImGui::Begin(m_ctx.playing ? "Sandbox (playing)" : "Inspector", nullptr, kPanelFlags);
+    m_ctx.recordPanel();
     if (ImGui::BeginTabBar("tabs"))
     {
-        if (!playing() && ImGui::BeginTabItem("Object"))
+        if (!m_ctx.playing && ImGui::BeginTabItem("Object"))
         {
             selectionTab();
             ImGui::EndTabItem();
@@ -98,12 +110,12 @@ void EditorScreen::inspectorPanel()
             materialsTab();
             ImGui::EndTabItem();
         }
-        if (!playing() && ImGui::BeginTabItem("Level"))
+        if (!m_ctx.playing && ImGui::BeginTabItem("Level"))
         {
             levelTab();
             ImGui::EndTabItem();
         }
-        if (!playing() && ImGui::BeginTabItem("Checks"))
+        if (!m_ctx.playing && ImGui::BeginTabItem("Checks"))
         {
             checksTab();
             ImGui::EndTabItem();
@@ -113,9 +125,9 @@ void EditorScreen::inspectorPanel()
     ImGui::End();
 }
 
-void EditorScreen::selectionTab()
+void EditorInspector::selectionTab()
 {
-    const auto& selection = m_editor->selection();
+    const auto& selection = m_ctx.scene().selection();
     if (selection.empty())
     {
         ImGui::TextWrapped("Nothing selected. Click an object, drag a rectangle around several, or pick something "
@@ -130,10 +142,10 @@ void EditorScreen::selectionTab()
     else
     {
         const ObjectRef ref = selection[0];
-        ImGui::TextUnformatted(describe(m_editor->level(), ref).c_str());
+        ImGui::TextUnformatted(describe(m_ctx.scene().level(), ref).c_str());
         // Its mass as the world builds it (the scene's own material values included).
-        if (m_scene && (ref.kind == ObjectKind::Block || ref.kind == ObjectKind::Pig))
-            for (const Entity& entity : m_scene->world().entities())
+        if (m_drawing.session() && (ref.kind == ObjectKind::Block || ref.kind == ObjectKind::Pig))
+            for (const Entity& entity : m_drawing.session()->world().entities())
                 if (entity.body != nullptr && entity.defIndex == static_cast<int>(ref.index) &&
                     entity.kind == (ref.kind == ObjectKind::Block ? EntityKind::Block : EntityKind::Pig))
                 {
@@ -141,10 +153,10 @@ void EditorScreen::selectionTab()
                     ImGui::TextDisabled("  %.3g kg, breaks at %.3g N s", static_cast<double>(entity.body->GetMass()),
                                         entity.maxHealth);
                 }
-        ObjectDef def = objectDef(m_editor->level(), ref);
+        ObjectDef def = objectDef(m_ctx.scene().level(), ref);
         bool changed = false;
         const char* key = "";
-        ImGui::PushItemWidth(-110.0f * m_app.uiScale());
+        ImGui::PushItemWidth(-110.0f * m_ctx.app.uiScale());
         if (auto* block = std::get_if<BlockDef>(&def))
         {
             int shape = static_cast<int>(block->shape);
@@ -169,18 +181,18 @@ void EditorScreen::selectionTab()
                 block->material = materials[static_cast<std::size_t>(material)].name;
                 changed = true;
             }
-            changed |= inputDouble("x (m)", block->x, m_fieldReleased);
-            changed |= inputDouble("y (m)", block->y, m_fieldReleased);
+            changed |= inputDouble("x (m)", block->x, m_ctx.fieldReleased);
+            changed |= inputDouble("y (m)", block->y, m_ctx.fieldReleased);
             changed |= inputDouble(block->shape == BlockShape::Circle ? "Diameter (m)" : "Width (m)", block->widthM,
-                                   m_fieldReleased);
+                                   m_ctx.fieldReleased);
             if (block->shape != BlockShape::Circle)
-                changed |= inputDouble("Height (m)", block->heightM, m_fieldReleased);
+                changed |= inputDouble("Height (m)", block->heightM, m_ctx.fieldReleased);
             else
                 block->heightM = block->widthM;
             if (block->shape != BlockShape::Circle)
-                changed |= inputDouble("Angle (\u00B0)", block->angleDeg, m_fieldReleased, "%.1f");
+                changed |= inputDouble("Angle (\u00B0)", block->angleDeg, m_ctx.fieldReleased, "%.1f");
             if (block->shape == BlockShape::HollowBox)
-                changed |= inputDouble("Wall (m)", block->wallM, m_fieldReleased);
+                changed |= inputDouble("Wall (m)", block->wallM, m_ctx.fieldReleased);
             key = "object";
         }
         else if (auto* pig = std::get_if<PigDef>(&def))
@@ -199,23 +211,23 @@ void EditorScreen::selectionTab()
                 pig->type = pigs[static_cast<std::size_t>(type)].name;
                 changed = true;
             }
-            changed |= inputDouble("x (m)", pig->x, m_fieldReleased);
-            changed |= inputDouble("y (m)", pig->y, m_fieldReleased);
+            changed |= inputDouble("x (m)", pig->x, m_ctx.fieldReleased);
+            changed |= inputDouble("y (m)", pig->y, m_ctx.fieldReleased);
         }
         else if (auto* terrain = std::get_if<TerrainDef>(&def))
         {
-            changed |= inputDouble("x (m)", terrain->x, m_fieldReleased);
-            changed |= inputDouble("y (m)", terrain->y, m_fieldReleased);
-            changed |= inputDouble("Width (m)", terrain->widthM, m_fieldReleased);
-            changed |= inputDouble("Height (m)", terrain->heightM, m_fieldReleased);
-            changed |= inputDouble("Angle (\u00B0)", terrain->angleDeg, m_fieldReleased, "%.1f");
+            changed |= inputDouble("x (m)", terrain->x, m_ctx.fieldReleased);
+            changed |= inputDouble("y (m)", terrain->y, m_ctx.fieldReleased);
+            changed |= inputDouble("Width (m)", terrain->widthM, m_ctx.fieldReleased);
+            changed |= inputDouble("Height (m)", terrain->heightM, m_ctx.fieldReleased);
+            changed |= inputDouble("Angle (\u00B0)", terrain->angleDeg, m_ctx.fieldReleased, "%.1f");
         }
         else if (auto* sling = std::get_if<SlingshotDef>(&def))
         {
-            changed |= inputDouble("x (m)", sling->x, m_fieldReleased);
-            changed |= inputDouble("Pouch y (m)", sling->y, m_fieldReleased);
-            changed |= inputDouble("Force at full pull (N)", sling->maxForceN, m_fieldReleased, "%.0f");
-            changed |= inputDouble("Full pull (m)", sling->maxPullM, m_fieldReleased);
+            changed |= inputDouble("x (m)", sling->x, m_ctx.fieldReleased);
+            changed |= inputDouble("Pouch y (m)", sling->y, m_ctx.fieldReleased);
+            changed |= inputDouble("Force at full pull (N)", sling->maxForceN, m_ctx.fieldReleased, "%.0f");
+            changed |= inputDouble("Full pull (m)", sling->maxPullM, m_ctx.fieldReleased);
         }
         ImGui::PopItemWidth();
         (void)key;
@@ -223,46 +235,46 @@ void EditorScreen::selectionTab()
         {
             // Typed values are checked as the loader would; a value it refuses waits in the field until it is fixed.
             const std::string why =
-                m_editor->changeObject(ref, def, "Edit " + describe(m_editor->level(), ref), "object-fields");
-            m_message = why;
-            m_messageIsError = !why.empty();
+                m_ctx.scene().changeObject(ref, def, "Edit " + describe(m_ctx.scene().level(), ref), "object-fields");
+            m_ctx.message = why;
+            m_ctx.messageIsError = !why.empty();
         }
         // Typing into one field is one undo step; the next field, or the same one later, is another.
-        if (m_fieldReleased)
-            m_editor->endGesture();
-        m_fieldReleased = false;
-        for (const Finding* finding : m_checks.findingsOn(ref))
+        if (m_ctx.fieldReleased)
+            m_ctx.scene().endGesture();
+        m_ctx.fieldReleased = false;
+        for (const Finding* finding : m_ctx.checks.findingsOn(ref))
         {
             ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.5f, 0.45f, 1.0f));
-            ImGui::TextWrapped("! %s", readablePointers(m_editor->level(), finding->message).c_str());
+            ImGui::TextWrapped("! %s", readablePointers(m_ctx.scene().level(), finding->message).c_str());
             ImGui::PopStyleColor();
         }
     }
     ImGui::Spacing();
     if (ImGui::Button("Duplicate"))
-        m_editor->duplicateSelection();
+        m_ctx.scene().duplicateSelection();
     ImGui::SameLine();
     if (ImGui::Button("Delete"))
-        m_editor->deleteSelection();
+        m_ctx.scene().deleteSelection();
     ImGui::SameLine();
     if (ImGui::Button("\u21BA 15\u00B0"))
     {
-        m_editor->rotateSelection(15.0);
-        m_editor->endGesture();
+        m_ctx.scene().rotateSelection(15.0);
+        m_ctx.scene().endGesture();
     }
     ImGui::SameLine();
     if (ImGui::Button("\u21BB 15\u00B0"))
     {
-        m_editor->rotateSelection(-15.0);
-        m_editor->endGesture();
+        m_ctx.scene().rotateSelection(-15.0);
+        m_ctx.scene().endGesture();
     }
 }
 
-void EditorScreen::environmentTab()
+void EditorInspector::environmentTab()
 {
-    LevelDef next = m_editor->level();
+    LevelDef next = m_ctx.scene().level();
     EnvironmentDef& env = next.environment;
-    ImGui::PushItemWidth(-120.0f * m_app.uiScale());
+    ImGui::PushItemWidth(-120.0f * m_ctx.app.uiScale());
     heading("Gravity");
     if (sliderDouble("g (m/s\u00B2)", env.gravity, 0.0, 100.0, "%.2f", ImGuiSliderFlags_Logarithmic))
         setProperties(next, "Gravity", "gravity");
@@ -306,7 +318,7 @@ void EditorScreen::environmentTab()
     if (ImGui::Checkbox("Air resistance", &air))
     {
         if (air)
-            env.airDensity = standardAtmosphereDensity(m_altitudeM);
+            env.airDensity = standardAtmosphereDensity(m_play.altitudeM);
         else
         {
             // Wind acts only through drag: without air there is none.
@@ -321,10 +333,10 @@ void EditorScreen::environmentTab()
         if (sliderDouble("\u03C1 (kg/m\u00B3)", env.airDensity, 0.001, 10.0, "%.3f", ImGuiSliderFlags_Logarithmic))
             setProperties(next, "Air density", "air");
         endGestureIfReleased();
-        if (sliderDouble("Altitude (m)", m_altitudeM, 0.0, 20000.0, "%.0f"))
+        if (sliderDouble("Altitude (m)", m_play.altitudeM, 0.0, 20000.0, "%.0f"))
         {
             // The U.S. Standard Atmosphere 1976 gives the density at that height, as PhET's altitude slider does.
-            env.airDensity = standardAtmosphereDensity(m_altitudeM);
+            env.airDensity = standardAtmosphereDensity(m_play.altitudeM);
             setProperties(next, "Altitude", "air");
         }
         endGestureIfReleased();
@@ -411,61 +423,61 @@ void EditorScreen::environmentTab()
         }
     }
     ImGui::PopItemWidth();
-    if (playing())
+    if (m_ctx.playing)
         ImGui::TextWrapped("Changes act at once, on the bird in flight too (its shot then gets no prediction score).");
 }
 
-void EditorScreen::birdTab()
+void EditorInspector::birdTab()
 {
-    LevelDef next = m_editor->level();
-    ImGui::PushItemWidth(-120.0f * m_app.uiScale());
-    if (playing())
+    LevelDef next = m_ctx.scene().level();
+    ImGui::PushItemWidth(-120.0f * m_ctx.app.uiScale());
+    if (m_ctx.playing)
     {
         // The world runs or stands still; the panels work either way.
-        if (ImGui::Button(m_play->frozen() ? "Resume (P)" : "Pause (P)"))
-            m_play->setFrozen(!m_play->frozen());
+        if (ImGui::Button(m_play.play().frozen() ? "Resume (P)" : "Pause (P)"))
+            m_play.play().setFrozen(!m_play.play().frozen());
         ImGui::SameLine();
-        if (ImGui::Button("Step 1/60 s") && m_play->frozen())
-            m_play->stepOnce();
+        if (ImGui::Button("Step 1/60 s") && m_play.play().frozen())
+            m_play.play().stepOnce();
         heading("Launch");
-        const double maxSpeed = m_play->maxSpeedMps();
+        const double maxSpeed = m_play.play().maxSpeedMps();
         // The sliders show the aim however it was set (mouse, keys or these sliders).
-        if (const auto aim = m_play->aim(); aim && !ImGui::IsAnyItemActive())
+        if (const auto aim = m_play.play().aim(); aim && !ImGui::IsAnyItemActive())
         {
-            m_playAngleDeg = aim->angleDeg;
-            m_playSpeedMps = aim->speedMps;
+            m_play.angleDeg = aim->angleDeg;
+            m_play.speedMps = aim->speedMps;
         }
-        bool aimChanged = sliderDouble("Angle (\u00B0)", m_playAngleDeg, -90.0, 90.0, "%.1f");
-        m_playSpeedMps = std::min(m_playSpeedMps, maxSpeed);
-        ImGui::Checkbox("Set the pull instead of the speed", &m_aimByPull);
-        const auto band = m_play->session().band();
-        if (m_aimByPull && band)
+        bool aimChanged = sliderDouble("Angle (\u00B0)", m_play.angleDeg, -90.0, 90.0, "%.1f");
+        m_play.speedMps = std::min(m_play.speedMps, maxSpeed);
+        ImGui::Checkbox("Set the pull instead of the speed", &m_play.aimByPull);
+        const auto band = m_play.play().session().band();
+        if (m_play.aimByPull && band)
         {
             // The band stores E = 1/2 F x; the same pull gives every bird the same energy.
-            double pullM = band->forSpeed(m_playSpeedMps).pullM;
+            double pullM = band->forSpeed(m_play.speedMps).pullM;
             if (sliderDouble("Pull (m)", pullM, 0.0, band->maxPullM(), "%.2f"))
             {
-                m_playSpeedMps = band->atFraction(pullM / band->maxPullM()).speedMps;
+                m_play.speedMps = band->atFraction(pullM / band->maxPullM()).speedMps;
                 aimChanged = true;
             }
         }
         else
-            aimChanged |= sliderDouble("Speed (m/s)", m_playSpeedMps, 0.0, std::max(maxSpeed, 0.1), "%.2f");
+            aimChanged |= sliderDouble("Speed (m/s)", m_play.speedMps, 0.0, std::max(maxSpeed, 0.1), "%.2f");
         if (aimChanged)
-            m_play->aimAt(m_playAngleDeg, m_playSpeedMps);
-        if (const auto aim = m_play->aim())
+            m_play.play().aimAt(m_play.angleDeg, m_play.speedMps);
+        if (const auto aim = m_play.play().aim())
             ImGui::TextWrapped("%s\n%s", aimSummary(*aim).c_str(), aimLesson(*aim).c_str());
         if (ImGui::Button("Fire", ImVec2(-FLT_MIN, 0.0f)))
         {
-            m_play->aimAt(m_playAngleDeg, m_playSpeedMps);
-            m_play->fire();
+            m_play.play().aimAt(m_play.angleDeg, m_play.speedMps);
+            m_play.play().fire();
         }
         if (ImGui::Button("Play the scene again from the start (R)", ImVec2(-FLT_MIN, 0.0f)))
-            m_play->restart();
-        const GameSession& session = m_play->session();
+            m_play.play().restart();
+        const GameSession& session = m_play.play().session();
         ImGui::Text("Birds left: %d", session.birdsRemaining());
-        if (!m_message.empty())
-            ImGui::TextWrapped("%s", m_message.c_str());
+        if (!m_ctx.message.empty())
+            ImGui::TextWrapped("%s", m_ctx.message.c_str());
         if (session.finished())
             ImGui::TextWrapped("%s", session.phase() == Phase::Won
                                          ? "Every pig is down. R plays the scene again; Esc returns to editing."
@@ -474,7 +486,7 @@ void EditorScreen::birdTab()
 
     // The birds list and the slingshot belong to the scene; the running copy keeps its own until it is played
     // again, so they are edited while the scene is not playing.
-    if (!playing())
+    if (!m_ctx.playing)
         birdListAndSlingshot(next);
     heading("Custom bird (PhET Lab's ranges)");
     bool custom = next.customBird.has_value();
@@ -506,13 +518,13 @@ void EditorScreen::birdTab()
             setProperties(next, "Custom bird", "custom-bird");
         endGestureIfReleased();
         // Say what the world does with it, here as well as when it is played.
-        if (m_scene)
+        if (m_drawing.session())
         {
             const std::string text =
-                describeBirdBody(m_scene->world().birdBody(customBirdType(*m_editor->level().customBird)));
+                describeBirdBody(m_drawing.session()->world().birdBody(customBirdType(*m_ctx.scene().level().customBird)));
             if (!text.empty())
                 ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.3f, 1.0f), "%s",
-                                   m_app.universityWording() ? "Box2D:" : "Physics engine:");
+                                   m_ctx.app.universityWording() ? "Box2D:" : "Physics engine:");
             if (!text.empty())
                 ImGui::TextWrapped("%s", text.c_str());
         }
@@ -520,7 +532,7 @@ void EditorScreen::birdTab()
     ImGui::PopItemWidth();
 }
 
-void EditorScreen::birdListAndSlingshot(LevelDef& next)
+void EditorInspector::birdListAndSlingshot(LevelDef& next)
 {
     heading("Birds, in launch order");
     std::vector<std::string> names;
@@ -573,13 +585,13 @@ void EditorScreen::birdListAndSlingshot(LevelDef& next)
     endGestureIfReleased();
 }
 
-void EditorScreen::materialsTab()
+void EditorInspector::materialsTab()
 {
-    LevelDef next = m_editor->level();
+    LevelDef next = m_ctx.scene().level();
     const Catalog scene = levelCatalog(next, Catalog::builtin());
     ImGui::TextWrapped("This scene's values; the catalog's are the defaults. Blocks already in the air keep "
                        "theirs until the scene is played again.");
-    ImGui::PushItemWidth(-150.0f * m_app.uiScale());
+    ImGui::PushItemWidth(-150.0f * m_ctx.app.uiScale());
     for (const Material& base : Catalog::builtin().materials())
     {
         ImGui::PushID(base.name.c_str());
@@ -626,10 +638,10 @@ void EditorScreen::materialsTab()
     ImGui::PopItemWidth();
 }
 
-void EditorScreen::levelTab()
+void EditorInspector::levelTab()
 {
-    LevelDef next = m_editor->level();
-    ImGui::PushItemWidth(-110.0f * m_app.uiScale());
+    LevelDef next = m_ctx.scene().level();
+    ImGui::PushItemWidth(-110.0f * m_ctx.app.uiScale());
     const auto text = [&](const char* label, std::string& value, const char* undo, bool multiline = false)
     {
         // ImGui edits a buffer of ours; it follows the scene while the field is idle and is applied when let go.
@@ -715,7 +727,7 @@ void EditorScreen::levelTab()
     if (ImGui::Checkbox("Sandbox scene (may have no pig)", &next.sandbox))
         setProperties(next, next.sandbox ? "Sandbox scene" : "Campaign level", "");
     double ground = next.groundY;
-    if (inputDouble("Ground y (m)", ground, m_fieldReleased))
+    if (inputDouble("Ground y (m)", ground, m_ctx.fieldReleased))
     {
         next.groundY = cleanMetres(ground);
         setProperties(next, "Ground", "");
@@ -723,39 +735,39 @@ void EditorScreen::levelTab()
     ImGui::PopItemWidth();
 }
 
-void EditorScreen::checksTab()
+void EditorInspector::checksTab()
 {
     ImGui::TextWrapped("Findings are outlined in red on their objects; hover one for what was found.");
     if (ImGui::Button("Geometry and reach", ImVec2(-FLT_MIN, 0.0f)))
-        m_checks.runGeometry(m_editor->level(), m_editor->revision());
+        m_ctx.checks.runGeometry(m_ctx.scene().level(), m_ctx.scene().revision());
     if (ImGui::Button("Rest test (10 s)", ImVec2(-FLT_MIN, 0.0f)))
-        m_checks.runRest(m_editor->level(), m_editor->revision());
-    if (m_checks.solving())
-        ImGui::ProgressBar(m_checks.solverProgress(), ImVec2(-FLT_MIN, 0.0f), "solving...");
-    else if (m_editor->level().pigs.empty())
+        m_ctx.checks.runRest(m_ctx.scene().level(), m_ctx.scene().revision());
+    if (m_ctx.checks.solving())
+        ImGui::ProgressBar(m_ctx.checks.solverProgress(), ImVec2(-FLT_MIN, 0.0f), "solving...");
+    else if (m_ctx.scene().level().pigs.empty())
         ImGui::TextDisabled("Solve: place a pig first");
     else if (ImGui::Button("Solve", ImVec2(-FLT_MIN, 0.0f)))
-        m_checks.startSolver(m_editor->level(), m_editor->revision());
+        m_ctx.checks.startSolver(m_ctx.scene().level(), m_ctx.scene().revision());
     ImGui::Separator();
-    for (const std::string& summary : m_checks.summaries())
+    for (const std::string& summary : m_ctx.checks.summaries())
         ImGui::TextWrapped("%s", summary.c_str());
     ImGui::Separator();
     int id = 0;
-    for (const Finding& finding : m_checks.findings())
+    for (const Finding& finding : m_ctx.checks.findings())
     {
         ImGui::PushID(id++);
         const std::string where =
-            finding.object ? describe(m_editor->level(), *finding.object) : std::string("the level");
+            finding.object ? describe(m_ctx.scene().level(), *finding.object) : std::string("the level");
         // The object's name selects it; what was found wraps under it.
-        if (ImGui::Selectable(where.c_str(), finding.object && m_editor->isSelected(*finding.object)) &&
-            finding.object && exists(m_editor->level(), *finding.object))
-            m_editor->select(*finding.object);
+        if (ImGui::Selectable(where.c_str(), finding.object && m_ctx.scene().isSelected(*finding.object)) &&
+            finding.object && exists(m_ctx.scene().level(), *finding.object))
+            m_ctx.scene().select(*finding.object);
         ImGui::Indent();
-        ImGui::TextWrapped("%s", readablePointers(m_editor->level(), finding.message).c_str());
+        ImGui::TextWrapped("%s", readablePointers(m_ctx.scene().level(), finding.message).c_str());
         ImGui::Unindent();
         ImGui::PopID();
     }
-    const std::vector<LevelIssue> problems = m_editor->saveProblems();
+    const std::vector<LevelIssue> problems = m_ctx.scene().saveProblems();
     if (!problems.empty())
     {
         ImGui::Separator();
@@ -765,7 +777,7 @@ void EditorScreen::checksTab()
     }
 }
 
-void EditorScreen::multiSelectionFields(const std::vector<ObjectRef>& selection)
+void EditorInspector::multiSelectionFields(const std::vector<ObjectRef>& selection)
 {
     // The blocks' common fields, shown with the first block's value and set on every selected block at once.
     std::vector<ObjectRef> blocks;
@@ -774,9 +786,9 @@ void EditorScreen::multiSelectionFields(const std::vector<ObjectRef>& selection)
             blocks.push_back(ref);
     if (blocks.empty())
         return;
-    BlockDef first = std::get<BlockDef>(objectDef(m_editor->level(), blocks.front()));
+    BlockDef first = std::get<BlockDef>(objectDef(m_ctx.scene().level(), blocks.front()));
     ImGui::TextDisabled("For all %zu selected blocks:", blocks.size());
-    ImGui::PushItemWidth(-110.0f * m_app.uiScale());
+    ImGui::PushItemWidth(-110.0f * m_ctx.app.uiScale());
     const auto& materials = Catalog::builtin().materials();
     std::vector<const char*> names;
     int material = 0;
@@ -791,15 +803,15 @@ void EditorScreen::multiSelectionFields(const std::vector<ObjectRef>& selection)
         std::vector<ObjectDef> defs;
         for (const ObjectRef& ref : blocks)
         {
-            BlockDef block = std::get<BlockDef>(objectDef(m_editor->level(), ref));
+            BlockDef block = std::get<BlockDef>(objectDef(m_ctx.scene().level(), ref));
             change(block);
             defs.emplace_back(block);
         }
-        const std::string why = m_editor->changeObjects(blocks, defs, label, std::string("multi-") + label);
+        const std::string why = m_ctx.scene().changeObjects(blocks, defs, label, std::string("multi-") + label);
         if (!why.empty())
         {
-            m_message = why;
-            m_messageIsError = true;
+            m_ctx.message = why;
+            m_ctx.messageIsError = true;
         }
     };
     if (ImGui::Combo("Material", &material, names.data(), static_cast<int>(names.size())))
@@ -807,12 +819,12 @@ void EditorScreen::multiSelectionFields(const std::vector<ObjectRef>& selection)
         const std::string name = materials[static_cast<std::size_t>(material)].name;
         applyToAll("Material", [&](BlockDef& b) { b.material = name; });
     }
-    if (inputDouble("Width (m)", first.widthM, m_fieldReleased))
+    if (inputDouble("Width (m)", first.widthM, m_ctx.fieldReleased))
         applyToAll("Width", [&](BlockDef& b) { b.widthM = first.widthM; });
-    if (inputDouble("Height (m)", first.heightM, m_fieldReleased))
+    if (inputDouble("Height (m)", first.heightM, m_ctx.fieldReleased))
         applyToAll("Height",
                    [&](BlockDef& b) { b.heightM = b.shape == BlockShape::Circle ? b.widthM : first.heightM; });
-    if (inputDouble("Angle (\u00B0)", first.angleDeg, m_fieldReleased, "%.1f"))
+    if (inputDouble("Angle (\u00B0)", first.angleDeg, m_ctx.fieldReleased, "%.1f"))
         applyToAll("Angle", [&](BlockDef& b) { b.angleDeg = first.angleDeg; });
     ImGui::PopItemWidth();
 }

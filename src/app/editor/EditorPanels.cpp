@@ -1,4 +1,14 @@
-#include "editor/EditorScreen.hpp"
+#include "editor/EditorPanels.hpp"
+
+#include "editor/EditorClipboard.hpp"
+#include "editor/EditorContext.hpp"
+#include "editor/EditorFiles.hpp"
+#include "editor/EditorInspector.hpp"
+#include "editor/EditorSource.hpp"
+#include "editor/PanelStyle.hpp"
+#include "editor/PlayTest.hpp"
+#include "editor/SceneTools.hpp"
+#include "shell/DataPaths.hpp"
 
 #include "shell/App.hpp"
 
@@ -11,11 +21,6 @@ namespace abalike::app
 
 namespace
 {
-/// Panel flags: placed by the editor every frame, never taking focus by appearing (keys stay with the scene).
-constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                         ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoFocusOnAppearing |
-                                         ImGuiWindowFlags_NoSavedSettings;
-
 const char* shapeLabel(BlockShape shape)
 {
     switch (shape)
@@ -32,14 +37,6 @@ const char* shapeLabel(BlockShape shape)
     return "box";
 }
 
-/// A section heading (ImGui 1.86 has no SeparatorText).
-void heading(const char* text)
-{
-    ImGui::Spacing();
-    ImGui::TextDisabled("%s", text);
-    ImGui::Separator();
-}
-
 std::string capitalised(std::string text)
 {
     if (!text.empty() && text[0] >= 'a' && text[0] <= 'z')
@@ -48,103 +45,74 @@ std::string capitalised(std::string text)
 }
 } // namespace
 
-void EditorScreen::recordPanel()
+void EditorPanels::build()
 {
-    const ImVec2 pos = ImGui::GetWindowPos();
-    const ImVec2 size = ImGui::GetWindowSize();
-    m_panels.emplace_back(pos.x, pos.y, size.x, size.y);
-}
-
-void EditorScreen::setProperties(const LevelDef& properties, const char* label, const char* mergeKey)
-{
-    const std::string why = m_editor->setProperties(properties, label, mergeKey);
-    if (!why.empty())
-    {
-        m_message = why;
-        m_messageIsError = true;
-        return;
-    }
-    syncPlay();
-}
-
-void EditorScreen::endGestureIfReleased()
-{
-    if (ImGui::IsItemDeactivated())
-        m_editor->endGesture();
-}
-
-void EditorScreen::buildUi()
-{
-    m_panels.clear();
-    if (m_focusScene)
+    m_ctx.panels.clear();
+    if (m_ctx.focusScene)
     {
         ImGui::SetWindowFocus(nullptr);
-        m_focusScene = false;
+        m_ctx.focusScene = false;
     }
     menuBar();
-    if (!playing())
+    if (!m_ctx.playing)
         palettePanel();
-    inspectorPanel();
-    if (!playing())
+    m_inspector.panel();
+    if (!m_ctx.playing)
         statusBar(); // in play mode the HUD's own hints have the bottom line
     findingTooltip();
-    dialogs();
+    m_files.dialogs();
 }
 
-void EditorScreen::menuBar()
+void EditorPanels::menuBar()
 {
     if (!ImGui::BeginMainMenuBar())
         return;
-    recordPanel();
+    m_ctx.recordPanel();
     if (ImGui::BeginMenu("File"))
     {
         if (ImGui::MenuItem("New sandbox scene", "Ctrl+N"))
-            request(Pending::New);
+            m_files.request(EditorFiles::Pending::New);
         if (ImGui::MenuItem("Open...", "Ctrl+O"))
-            request(Pending::Open);
+            m_files.request(EditorFiles::Pending::Open);
         if (ImGui::MenuItem("Save", "Ctrl+S"))
-            requestSave();
+            m_files.requestSave();
         if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S"))
-        {
-            m_fileDialogSaves = true;
-            m_fileDialogPath = defaultSavePath().string();
-            m_showFileDialog = true;
-        }
+            m_files.requestSaveAs();
         ImGui::Separator();
         if (ImGui::MenuItem("Close editor", "Esc"))
-            request(Pending::Leave);
+            m_files.request(EditorFiles::Pending::Leave);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit"))
     {
-        const std::string undo = "Undo " + m_editor->undoLabel();
-        const std::string redo = "Redo " + m_editor->redoLabel();
-        if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, m_editor->canUndo()))
-            m_editor->undo();
-        if (ImGui::MenuItem(redo.c_str(), "Ctrl+Y", false, m_editor->canRedo()))
-            m_editor->redo();
+        const std::string undo = "Undo " + m_ctx.scene().undoLabel();
+        const std::string redo = "Redo " + m_ctx.scene().redoLabel();
+        if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, m_ctx.scene().canUndo()))
+            m_ctx.scene().undo();
+        if (ImGui::MenuItem(redo.c_str(), "Ctrl+Y", false, m_ctx.scene().canRedo()))
+            m_ctx.scene().redo();
         ImGui::Separator();
-        const bool any = !m_editor->selection().empty();
+        const bool any = !m_ctx.scene().selection().empty();
         if (ImGui::MenuItem("Cut", "Ctrl+X", false, any))
-            copySelection(true);
+            m_clipboard.copySelection(true);
         if (ImGui::MenuItem("Copy", "Ctrl+C", false, any))
-            copySelection(false);
+            m_clipboard.copySelection(false);
         if (ImGui::MenuItem("Paste", "Ctrl+V"))
-            pasteClipboard();
+            m_clipboard.paste();
         if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, any))
-            m_editor->duplicateSelection();
+            m_ctx.scene().duplicateSelection();
         if (ImGui::MenuItem("Mirror left to right", "Ctrl+M", false, any))
-            m_editor->mirrorSelection();
+            m_ctx.scene().mirrorSelection();
         if (ImGui::MenuItem("Delete", "Del", false, any))
-            m_editor->deleteSelection();
+            m_ctx.scene().deleteSelection();
         if (ImGui::MenuItem("Rotate left 15\u00B0", "Q", false, any))
-            m_editor->rotateSelection(15.0);
+            m_ctx.scene().rotateSelection(15.0);
         if (ImGui::MenuItem("Rotate right 15\u00B0", "E", false, any))
-            m_editor->rotateSelection(-15.0);
+            m_ctx.scene().rotateSelection(-15.0);
         if (ImGui::MenuItem("Select all", "Ctrl+A"))
-            m_editor->selectAll();
+            m_ctx.scene().selectAll();
         ImGui::Separator();
-        const bool several = m_editor->selection().size() >= 2;
+        const bool several = m_ctx.scene().selection().size() >= 2;
         if (ImGui::BeginMenu("Align", several))
         {
             static constexpr std::pair<const char*, Align> kAligns[] = {{"Left edges", Align::Left},
@@ -155,58 +123,83 @@ void EditorScreen::menuBar()
                                                                         {"Tops", Align::Top}};
             for (const auto& [label, align] : kAligns)
                 if (ImGui::MenuItem(label))
-                    m_editor->alignSelection(align);
+                    m_ctx.scene().alignSelection(align);
             ImGui::EndMenu();
         }
-        const bool three = m_editor->selection().size() >= 3;
+        const bool three = m_ctx.scene().selection().size() >= 3;
         if (ImGui::MenuItem("Distribute left to right", nullptr, false, three))
-            m_editor->distributeSelection(true);
+            m_ctx.scene().distributeSelection(true);
         if (ImGui::MenuItem("Distribute bottom to top", nullptr, false, three))
-            m_editor->distributeSelection(false);
-        m_editor->endGesture();
+            m_ctx.scene().distributeSelection(false);
+        m_ctx.scene().endGesture();
         ImGui::EndMenu();
     }
     prefabMenu();
     if (ImGui::BeginMenu("View"))
     {
-        SnapSettings& snap = m_editor->snapSettings();
+        SnapSettings& snap = m_ctx.scene().snapSettings();
         ImGui::MenuItem("Snap to grid", "G", &snap.grid);
         ImGui::MenuItem("Snap to surfaces", "M", &snap.surfaces);
         if (ImGui::MenuItem("Fit the scene", "F"))
-            fitView();
+            m_ctx.fitView();
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Check"))
     {
         if (ImGui::MenuItem("Geometry and reach"))
-            m_checks.runGeometry(m_editor->level(), m_editor->revision());
+            m_ctx.checks.runGeometry(m_ctx.scene().level(), m_ctx.scene().revision());
         if (ImGui::MenuItem("Rest test (10 s)"))
-            m_checks.runRest(m_editor->level(), m_editor->revision());
-        if (ImGui::MenuItem("Solve", nullptr, false, !m_checks.solving() && !m_editor->level().pigs.empty()))
-            m_checks.startSolver(m_editor->level(), m_editor->revision());
+            m_ctx.checks.runRest(m_ctx.scene().level(), m_ctx.scene().revision());
+        if (ImGui::MenuItem("Solve", nullptr, false, !m_ctx.checks.solving() && !m_ctx.scene().level().pigs.empty()))
+            m_ctx.checks.startSolver(m_ctx.scene().level(), m_ctx.scene().revision());
         ImGui::EndMenu();
     }
-    if (ImGui::MenuItem(playing() ? "Stop (Esc)" : "Play (F5)"))
-        playing() ? stopPlay() : startPlay();
+    if (ImGui::MenuItem(m_ctx.playing ? "Stop (Esc)" : "Play (F5)"))
+        m_play.playing() ? m_play.stop() : m_play.start();
     ImGui::EndMainMenuBar();
 }
 
-void EditorScreen::palettePanel()
+void EditorPanels::prefabMenu()
+{
+    if (!ImGui::BeginMenu("Insert"))
+        return;
+    m_ctx.recordPanel();
+    const bool any = !m_ctx.scene().selection().empty();
+    if (ImGui::MenuItem("Save selection as prefab", nullptr, false, any))
+        m_clipboard.saveSelectionAsPrefab();
+    ImGui::Separator();
+    const auto listFolder = [&](const char* title, const std::filesystem::path& folder)
+    {
+        ImGui::TextDisabled("%s", title);
+        const std::vector<std::filesystem::path> files =
+            folder.empty() ? std::vector<std::filesystem::path>{} : levelFilesIn(folder);
+        if (files.empty())
+            ImGui::TextDisabled("  (none in %s)", folder.string().c_str());
+        for (const std::filesystem::path& file : files)
+            if (ImGui::MenuItem(("  " + file.stem().string()).c_str()))
+                m_clipboard.insertPrefab(file);
+    };
+    listFolder("Structures", std::filesystem::path(levelsDirectory()) / "structures");
+    listFolder("My prefabs", EditorClipboard::userPrefabFolder());
+    ImGui::EndMenu();
+}
+
+void EditorPanels::palettePanel()
 {
     const float menu = ImGui::GetFrameHeight();
     const float status = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().WindowPadding.y;
     ImGui::SetNextWindowPos(ImVec2(0.0f, menu), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(sceneArea().left, static_cast<float>(m_app.windowSize().y) - menu - status),
+    ImGui::SetNextWindowSize(ImVec2(m_ctx.sceneArea().left, static_cast<float>(m_ctx.app.windowSize().y) - menu - status),
                              ImGuiCond_Always);
     if (!ImGui::Begin("Palette", nullptr, kPanelFlags))
     {
-        recordPanel();
+        m_ctx.recordPanel();
         ImGui::End();
         return;
     }
-    recordPanel();
-    if (ImGui::RadioButton("Select and move (V)", m_tool == Tool::Select))
-        m_tool = Tool::Select;
+    m_ctx.recordPanel();
+    if (ImGui::RadioButton("Select and move (V)", m_tools.tool == SceneTools::Tool::Select))
+        m_tools.tool = SceneTools::Tool::Select;
 
     heading("Blocks (B)");
     const float buttonWidth = 0.5f * (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x);
@@ -217,7 +210,7 @@ void EditorScreen::palettePanel()
              {BlockShape::Box, BlockShape::Circle, BlockShape::Triangle, BlockShape::HollowBox})
         {
             const bool active =
-                m_tool == Tool::Block && m_blockTemplate.material == material.name && m_blockTemplate.shape == shape;
+                m_tools.tool == SceneTools::Tool::Block && m_tools.blockTemplate.material == material.name && m_tools.blockTemplate.shape == shape;
             const std::string label = material.look.label + " " + shapeLabel(shape);
             if (column++ % 2 == 1)
                 ImGui::SameLine();
@@ -225,15 +218,15 @@ void EditorScreen::palettePanel()
                 ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
             if (ImGui::Button(label.c_str(), ImVec2(buttonWidth, 0.0f)))
             {
-                m_tool = Tool::Block;
-                m_blockTemplate.material = material.name;
-                m_blockTemplate.shape = shape;
+                m_tools.tool = SceneTools::Tool::Block;
+                m_tools.blockTemplate.material = material.name;
+                m_tools.blockTemplate.shape = shape;
                 if (shape == BlockShape::Circle)
-                    m_blockTemplate.heightM = m_blockTemplate.widthM;
+                    m_tools.blockTemplate.heightM = m_tools.blockTemplate.widthM;
                 if (shape == BlockShape::HollowBox)
                 {
-                    m_blockTemplate.widthM = std::max(m_blockTemplate.widthM, 1.0);
-                    m_blockTemplate.heightM = std::max(m_blockTemplate.heightM, 1.0);
+                    m_tools.blockTemplate.widthM = std::max(m_tools.blockTemplate.widthM, 1.0);
+                    m_tools.blockTemplate.heightM = std::max(m_tools.blockTemplate.heightM, 1.0);
                 }
             }
             if (active)
@@ -244,11 +237,11 @@ void EditorScreen::palettePanel()
     const double minSize = 0.1;
     const double maxSize = 10.0;
     ImGui::TextUnformatted("Width, height (m)");
-    double size[2] = {m_blockTemplate.widthM, m_blockTemplate.heightM};
+    double size[2] = {m_tools.blockTemplate.widthM, m_tools.blockTemplate.heightM};
     if (ImGui::InputScalarN("##blocksize", ImGuiDataType_Double, size, 2, nullptr, nullptr, "%.2f"))
     {
-        m_blockTemplate.widthM = std::clamp(size[0], minSize, maxSize);
-        m_blockTemplate.heightM = m_blockTemplate.shape == BlockShape::Circle ? m_blockTemplate.widthM
+        m_tools.blockTemplate.widthM = std::clamp(size[0], minSize, maxSize);
+        m_tools.blockTemplate.heightM = m_tools.blockTemplate.shape == BlockShape::Circle ? m_tools.blockTemplate.widthM
                                                                               : std::clamp(size[1], minSize, maxSize);
     }
     ImGui::PopItemWidth();
@@ -259,14 +252,14 @@ void EditorScreen::palettePanel()
     {
         if (column++ % 2 == 1)
             ImGui::SameLine();
-        const bool active = m_tool == Tool::Pig && m_pigTemplate.type == type.name;
+        const bool active = m_tools.tool == SceneTools::Tool::Pig && m_tools.pigTemplate.type == type.name;
         if (active)
             ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
         const std::string label = capitalised(type.name) + " pig";
         if (ImGui::Button(label.c_str(), ImVec2(buttonWidth, 0.0f)))
         {
-            m_tool = Tool::Pig;
-            m_pigTemplate.type = type.name;
+            m_tools.tool = SceneTools::Tool::Pig;
+            m_tools.pigTemplate.type = type.name;
         }
         if (active)
             ImGui::PopStyleColor();
@@ -274,18 +267,15 @@ void EditorScreen::palettePanel()
 
     heading("Scenery");
     if (ImGui::Button("Terrain (T)", ImVec2(buttonWidth, 0.0f)))
-    {
-        m_tool = Tool::Terrain;
-        m_terrainTemplate = TerrainDef{0.0, 0.0, 4.0, 1.0, 0.0, {}};
-    }
+        m_tools.chooseTerrainBox();
     ImGui::SameLine();
     if (ImGui::Button("Hill (H)", ImVec2(buttonWidth, 0.0f)))
-        chooseHillTool();
+        m_tools.chooseHill();
     if (ImGui::Button("Slingshot (L)", ImVec2(buttonWidth, 0.0f)))
-        m_tool = Tool::Slingshot;
+        m_tools.tool = SceneTools::Tool::Slingshot;
 
     heading("Snapping");
-    SnapSettings& snap = m_editor->snapSettings();
+    SnapSettings& snap = m_ctx.scene().snapSettings();
     ImGui::Checkbox("Grid (G)", &snap.grid);
     ImGui::SameLine();
     ImGui::Checkbox("Surfaces (M)", &snap.surfaces);
@@ -314,46 +304,46 @@ void EditorScreen::palettePanel()
     ImGui::End();
 }
 
-void EditorScreen::statusBar()
+void EditorPanels::statusBar()
 {
     const float height = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().WindowPadding.y;
-    const sf::Vector2f window(m_app.windowSize());
+    const sf::Vector2f window(m_ctx.app.windowSize());
     ImGui::SetNextWindowPos(ImVec2(0.0f, window.y - height), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(window.x, height), ImGuiCond_Always);
     ImGui::Begin("##status", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
-    recordPanel();
-    const std::string file = m_editor->path().empty() ? std::string("(not saved yet)") : m_editor->path().string();
-    ImGui::Text("%s%s", file.c_str(), m_editor->dirty() ? "  \u2022 modified" : "");
+    m_ctx.recordPanel();
+    const std::string file = m_ctx.scene().path().empty() ? std::string("(not saved yet)") : m_ctx.scene().path().string();
+    ImGui::Text("%s%s", file.c_str(), m_ctx.scene().dirty() ? "  \u2022 modified" : "");
     ImGui::SameLine();
-    if (m_pointerOnScene)
+    if (m_tools.pointerOnScene)
     {
-        const sf::Vector2f world = m_view.toWorld(m_pointer);
+        const sf::Vector2f world = m_ctx.view.toWorld(m_tools.pointer);
         ImGui::Text("  x %.2f m, y %.2f m", world.x, world.y);
         ImGui::SameLine();
     }
-    if (!m_message.empty())
+    if (!m_ctx.message.empty())
     {
-        if (m_messageIsError)
-            ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.45f, 1.0f), "  %s", m_message.c_str());
+        if (m_ctx.messageIsError)
+            ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.45f, 1.0f), "  %s", m_ctx.message.c_str());
         else
-            ImGui::Text("  %s", m_message.c_str());
+            ImGui::Text("  %s", m_ctx.message.c_str());
     }
     ImGui::End();
 }
 
-void EditorScreen::findingTooltip()
+void EditorPanels::findingTooltip()
 {
-    if (playing() || !m_pointerOnScene || ImGui::IsAnyItemHovered())
+    if (m_ctx.playing || !m_tools.pointerOnScene || ImGui::IsAnyItemHovered())
         return;
-    const sf::Vector2f world = m_view.toWorld(m_pointer);
-    const auto hit = m_editor->objectAt(world.x, world.y);
+    const sf::Vector2f world = m_ctx.view.toWorld(m_tools.pointer);
+    const auto hit = m_ctx.scene().objectAt(world.x, world.y);
     if (!hit)
         return;
-    const auto findings = m_checks.findingsOn(*hit);
+    const auto findings = m_ctx.checks.findingsOn(*hit);
     if (findings.empty())
         return;
     ImGui::BeginTooltip();
-    ImGui::TextUnformatted(describe(m_editor->level(), *hit).c_str());
+    ImGui::TextUnformatted(describe(m_ctx.scene().level(), *hit).c_str());
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
     for (const Finding* finding : findings)
         ImGui::BulletText("%s", finding->message.c_str());

@@ -1,5 +1,7 @@
-#include "editor/EditorScreen.hpp"
+#include "editor/SceneTools.hpp"
 
+#include "editor/EditorContext.hpp"
+#include "editor/PlayTest.hpp"
 #include "shell/App.hpp"
 
 #include <abalike/edit/Snapping.hpp>
@@ -56,32 +58,32 @@ std::optional<sf::Vector2f> handleCorner(const ObjectDef& def)
 }
 } // namespace
 
-std::optional<ObjectRef> EditorScreen::resizeHandleAt(sf::Vector2f pixel) const
+std::optional<ObjectRef> SceneTools::resizeHandleAt(sf::Vector2f pixel) const
 {
-    if (m_editor->selection().size() != 1)
+    if (m_ctx.scene().selection().size() != 1)
         return std::nullopt;
-    const ObjectRef ref = m_editor->selection()[0];
-    if (ref.kind == ObjectKind::Terrain && m_editor->level().terrain[ref.index].isPolygon())
+    const ObjectRef ref = m_ctx.scene().selection()[0];
+    if (ref.kind == ObjectKind::Terrain && m_ctx.scene().level().terrain[ref.index].isPolygon())
         return std::nullopt; // its corners have their own handles
-    const auto corner = handleCorner(objectDef(m_editor->level(), ref));
+    const auto corner = handleCorner(objectDef(m_ctx.scene().level(), ref));
     if (!corner)
         return std::nullopt;
-    const sf::Vector2f at = m_view.camera(m_app.windowSize()).toScreen(*corner);
-    const float reach = (kHandlePx + 3.0f) * m_app.uiScale();
+    const sf::Vector2f at = m_ctx.view.camera(m_ctx.app.windowSize()).toScreen(*corner);
+    const float reach = (kHandlePx + 3.0f) * m_ctx.app.uiScale();
     if (std::abs(at.x - pixel.x) <= reach && std::abs(at.y - pixel.y) <= reach)
         return ref;
     return std::nullopt;
 }
 
-std::vector<EditorScreen::VertexHandle> EditorScreen::vertexHandles() const
+std::vector<SceneTools::VertexHandle> SceneTools::vertexHandles() const
 {
     std::vector<VertexHandle> handles;
-    if (m_editor->selection().size() != 1 || m_tool != Tool::Select)
+    if (m_ctx.scene().selection().size() != 1 || tool != Tool::Select)
         return handles;
-    const ObjectRef ref = m_editor->selection()[0];
-    if (ref.kind != ObjectKind::Terrain || !m_editor->level().terrain[ref.index].isPolygon())
+    const ObjectRef ref = m_ctx.scene().selection()[0];
+    if (ref.kind != ObjectKind::Terrain || !m_ctx.scene().level().terrain[ref.index].isPolygon())
         return handles;
-    const std::size_t corners = m_editor->level().terrain[ref.index].points.size();
+    const std::size_t corners = m_ctx.scene().level().terrain[ref.index].points.size();
     for (std::size_t i = 0; i < corners; ++i)
     {
         handles.push_back({ref.index, i, false});
@@ -90,9 +92,9 @@ std::vector<EditorScreen::VertexHandle> EditorScreen::vertexHandles() const
     return handles;
 }
 
-sf::Vector2f EditorScreen::vertexHandlePosition(const VertexHandle& handle) const
+sf::Vector2f SceneTools::vertexHandlePosition(const VertexHandle& handle) const
 {
-    const auto& points = m_editor->level().terrain[handle.terrain].points;
+    const auto& points = m_ctx.scene().level().terrain[handle.terrain].points;
     const auto& a = points[handle.vertex];
     if (!handle.edgeMiddle)
         return {static_cast<float>(a[0]), static_cast<float>(a[1])};
@@ -100,10 +102,10 @@ sf::Vector2f EditorScreen::vertexHandlePosition(const VertexHandle& handle) cons
     return {static_cast<float>(0.5 * (a[0] + b[0])), static_cast<float>(0.5 * (a[1] + b[1]))};
 }
 
-std::optional<EditorScreen::VertexHandle> EditorScreen::vertexHandleAt(sf::Vector2f pixel) const
+std::optional<SceneTools::VertexHandle> SceneTools::vertexHandleAt(sf::Vector2f pixel) const
 {
-    const Camera camera = m_view.camera(m_app.windowSize());
-    const float reach = (kHandlePx + 3.0f) * m_app.uiScale();
+    const Camera camera = m_ctx.view.camera(m_ctx.app.windowSize());
+    const float reach = (kHandlePx + 3.0f) * m_ctx.app.uiScale();
     std::optional<VertexHandle> best;
     float bestDistance = reach;
     for (const VertexHandle& handle : vertexHandles())
@@ -120,37 +122,37 @@ std::optional<EditorScreen::VertexHandle> EditorScreen::vertexHandleAt(sf::Vecto
     return best;
 }
 
-void EditorScreen::pressVertexHandle(const VertexHandle& handle, bool ctrl)
+void SceneTools::pressVertexHandle(const VertexHandle& handle, bool ctrl)
 {
     std::string why;
     if (handle.edgeMiddle)
     {
         // A new corner in the edge's middle, at once dragged.
-        why = m_editor->insertVertex(handle.terrain, handle.vertex);
+        why = m_ctx.scene().insertVertex(handle.terrain, handle.vertex);
         if (why.empty())
             m_vertexDrag = VertexHandle{handle.terrain, handle.vertex + 1, false};
     }
     else if (ctrl)
-        why = m_editor->removeVertex(handle.terrain, handle.vertex);
+        why = m_ctx.scene().removeVertex(handle.terrain, handle.vertex);
     else
         m_vertexDrag = handle;
-    m_message = why;
-    m_messageIsError = !why.empty();
+    m_ctx.message = why;
+    m_ctx.messageIsError = !why.empty();
 }
 
-ObjectDef EditorScreen::toolObject(sf::Vector2f world) const
+ObjectDef SceneTools::toolObject(sf::Vector2f world) const
 {
-    switch (m_tool)
+    switch (tool)
     {
     case Tool::Block:
-        return withCentre(m_blockTemplate, world.x, world.y);
+        return withCentre(blockTemplate, world.x, world.y);
     case Tool::Pig:
-        return withCentre(m_pigTemplate, world.x, world.y);
+        return withCentre(pigTemplate, world.x, world.y);
     case Tool::Terrain:
-        return withCentre(m_terrainTemplate, world.x, world.y);
+        return withCentre(terrainTemplate, world.x, world.y);
     case Tool::Slingshot:
     {
-        SlingshotDef sling = m_editor->level().slingshot;
+        SlingshotDef sling = m_ctx.scene().level().slingshot;
         sling.x = world.x;
         sling.y = world.y;
         return sling;
@@ -158,25 +160,25 @@ ObjectDef EditorScreen::toolObject(sf::Vector2f world) const
     case Tool::Select:
         break;
     }
-    return m_blockTemplate;
+    return blockTemplate;
 }
 
-void EditorScreen::handleSceneMouse(const sf::Event& event)
+void SceneTools::handleMouse(const sf::Event& event, PlayTest& play)
 {
     const sf::Vector2f pixel = pixelOf(event);
-    m_pointer = pixel;
-    const bool busy = m_dragFrom || m_bandFrom || m_panFrom || m_resizing || m_vertexDrag;
+    pointer = pixel;
+    const bool busy = m_dragFrom || bandFrom || m_panFrom || m_resizing || m_vertexDrag;
     // A field being typed in keeps the pointer's moves, but not a press on the scene: that click both ends the typing
     // (Dear ImGui commits the field) and does what it does on the scene, so no first click is lost.
     const bool overPanels =
-        pointerOverPanels(pixel) || (ImGui::IsAnyItemActive() && event.type != sf::Event::MouseButtonPressed);
-    m_pointerOnScene = !overPanels;
+        m_ctx.pointerOverPanels(pixel) || (ImGui::IsAnyItemActive() && event.type != sf::Event::MouseButtonPressed);
+    pointerOnScene = !overPanels;
     if (overPanels && !busy)
         return;
 
     if (event.type == sf::Event::MouseWheelScrolled)
     {
-        m_view.zoomAt(pixel, std::pow(kZoomStep, event.mouseWheelScroll.delta));
+        m_ctx.view.zoomAt(pixel, std::pow(kZoomStep, event.mouseWheelScroll.delta));
         return;
     }
     // Panning is the same in both modes: the right or middle button.
@@ -190,7 +192,7 @@ void EditorScreen::handleSceneMouse(const sf::Event& event)
     {
         if (event.type == sf::Event::MouseMoved)
         {
-            m_view.pan(pixel - *m_panFrom);
+            m_ctx.view.pan(pixel - *m_panFrom);
             m_panFrom = pixel;
         }
         else if (event.type == sf::Event::MouseButtonReleased && event.mouseButton.button != sf::Mouse::Left)
@@ -198,11 +200,11 @@ void EditorScreen::handleSceneMouse(const sf::Event& event)
         return;
     }
     if (event.type == sf::Event::MouseButtonPressed)
-        m_focusScene = true; // the keys belong to the scene again
-    if (playing())
+        m_ctx.focusScene = true; // the keys belong to the scene again
+    if (m_ctx.playing)
     {
         // The play test is drawn in the scene area: its input is in that area's pixels.
-        const sf::FloatRect area = sceneArea();
+        const sf::FloatRect area = m_ctx.sceneArea();
         sf::Event local = event;
         if (event.type == sf::Event::MouseMoved)
         {
@@ -214,37 +216,37 @@ void EditorScreen::handleSceneMouse(const sf::Event& event)
             local.mouseButton.x -= static_cast<int>(area.left);
             local.mouseButton.y -= static_cast<int>(area.top);
         }
-        m_play->handleEvent(local);
+        play.handleSceneEvent(local);
         return;
     }
     if (event.type == sf::Event::MouseButtonPressed && event.mouseButton.button == sf::Mouse::Left)
-        pressOnScene(pixel, m_app.input().shift(), m_app.input().ctrl());
+        pressOnScene(pixel, m_ctx.app.input().shift(), m_ctx.app.input().ctrl());
     else if (event.type == sf::Event::MouseMoved)
         moveOnScene(pixel);
     else if (event.type == sf::Event::MouseButtonReleased && event.mouseButton.button == sf::Mouse::Left)
         releaseOnScene(pixel);
 }
 
-void EditorScreen::pressOnScene(sf::Vector2f pixel, bool shift, bool ctrl)
+void SceneTools::pressOnScene(sf::Vector2f pixel, bool shift, bool ctrl)
 {
-    const sf::Vector2f world = m_view.toWorld(pixel);
-    if (m_tool != Tool::Select)
+    const sf::Vector2f world = m_ctx.view.toWorld(pixel);
+    if (tool != Tool::Select)
     {
         try
         {
-            const ObjectRef placed = m_editor->place(toolObject(world));
-            const auto at = centreOf(objectDef(m_editor->level(), placed));
-            m_app.trace().write("editor-place", {{"object", pointerOf(placed)}, {"x", at[0]}, {"y", at[1]}});
-            m_message.clear();
+            const ObjectRef placed = m_ctx.scene().place(toolObject(world));
+            const auto at = centreOf(objectDef(m_ctx.scene().level(), placed));
+            m_ctx.app.trace().write("editor-place", {{"object", pointerOf(placed)}, {"x", at[0]}, {"y", at[1]}});
+            m_ctx.message.clear();
         }
         catch (const std::exception& error)
         {
-            m_message = error.what();
-            m_messageIsError = true;
+            m_ctx.message = error.what();
+            m_ctx.messageIsError = true;
         }
         // Shift places several; otherwise back to selecting, with the new object selected to adjust.
         if (!shift)
-            m_tool = Tool::Select;
+            tool = Tool::Select;
         return;
     }
     if (const auto vertex = vertexHandleAt(pixel))
@@ -257,47 +259,47 @@ void EditorScreen::pressOnScene(sf::Vector2f pixel, bool shift, bool ctrl)
         m_resizing = handle;
         return;
     }
-    const std::optional<ObjectRef> hit = m_editor->objectAt(world.x, world.y);
+    const std::optional<ObjectRef> hit = m_ctx.scene().objectAt(world.x, world.y);
     if (!hit)
     {
         // A rectangle selects what it encloses; Shift or Ctrl adds to the selection.
-        m_bandFrom = world;
+        bandFrom = world;
         m_bandAdds = shift || ctrl;
         return;
     }
     if (shift || ctrl)
     {
-        m_editor->select(*hit, SelectMode::Toggle);
+        m_ctx.scene().select(*hit, SelectMode::Toggle);
         return;
     }
-    m_editor->beginDrag(*hit);
+    m_ctx.scene().beginDrag(*hit);
     m_dragFrom = world;
 }
 
-void EditorScreen::moveOnScene(sf::Vector2f pixel)
+void SceneTools::moveOnScene(sf::Vector2f pixel)
 {
-    const sf::Vector2f world = m_view.toWorld(pixel);
+    const sf::Vector2f world = m_ctx.view.toWorld(pixel);
     if (m_dragFrom)
-        m_editor->dragTo(world.x - m_dragFrom->x, world.y - m_dragFrom->y);
+        m_ctx.scene().dragTo(world.x - m_dragFrom->x, world.y - m_dragFrom->y);
     else if (m_vertexDrag)
     {
         // On the grid when it is on (a corner is a point: it snaps to the grid itself).
         double x = world.x;
         double y = world.y;
-        if (m_editor->snapSettings().grid)
+        if (m_ctx.scene().snapSettings().grid)
         {
-            const double g = m_editor->snapSettings().gridM;
+            const double g = m_ctx.scene().snapSettings().gridM;
             x = std::round(x / g) * g;
             y = std::round(y / g) * g;
         }
-        const std::string why = m_editor->moveVertex(m_vertexDrag->terrain, m_vertexDrag->vertex, x, y, "vertex-drag");
-        m_message = why;
-        m_messageIsError = !why.empty();
+        const std::string why = m_ctx.scene().moveVertex(m_vertexDrag->terrain, m_vertexDrag->vertex, x, y, "vertex-drag");
+        m_ctx.message = why;
+        m_ctx.messageIsError = !why.empty();
     }
     else if (m_resizing)
     {
         // The handle follows the pointer in the object's own frame; the bottom edge stays where it is.
-        const ObjectDef def = objectDef(m_editor->level(), *m_resizing);
+        const ObjectDef def = objectDef(m_ctx.scene().level(), *m_resizing);
         double x = 0.0, y = 0.0, h = 0.0, a = 0.0;
         if (const auto* b = std::get_if<BlockDef>(&def))
             std::tie(x, y, h, a) = std::tuple(b->x, b->y, b->heightM, b->angleDeg);
@@ -309,47 +311,74 @@ void EditorScreen::moveOnScene(sf::Vector2f pixel)
         const double dy = world.y - y;
         const double localX = c * dx + s * dy;
         const double localY = -s * dx + c * dy;
-        const double step = m_editor->snapSettings().grid ? m_editor->snapSettings().gridM : 0.01;
+        const double step = m_ctx.scene().snapSettings().grid ? m_ctx.scene().snapSettings().gridM : 0.01;
         const auto snapped = [step](double v)
         {
             return std::max(step, std::round(v / step) * step);
         };
         const double width = snapped(2.0 * localX);
         const double height = snapped(localY + h / 2.0);
-        const std::string why = m_editor->resizeObject(*m_resizing, width, height, "resize-handle");
+        const std::string why = m_ctx.scene().resizeObject(*m_resizing, width, height, "resize-handle");
         if (!why.empty())
         {
-            m_message = why;
-            m_messageIsError = true;
+            m_ctx.message = why;
+            m_ctx.messageIsError = true;
         }
     }
 }
 
-void EditorScreen::releaseOnScene(sf::Vector2f pixel)
+void SceneTools::releaseOnScene(sf::Vector2f pixel)
 {
-    const sf::Vector2f world = m_view.toWorld(pixel);
+    const sf::Vector2f world = m_ctx.view.toWorld(pixel);
     if (m_dragFrom)
     {
-        m_editor->endDrag();
+        m_ctx.scene().endDrag();
         m_dragFrom.reset();
     }
     if (m_resizing || m_vertexDrag)
     {
-        m_editor->endGesture();
+        m_ctx.scene().endGesture();
         m_resizing.reset();
         m_vertexDrag.reset();
     }
-    if (m_bandFrom)
+    if (bandFrom)
     {
-        const sf::Vector2f from = *m_bandFrom;
-        m_bandFrom.reset();
-        const bool click = std::hypot(world.x - from.x, world.y - from.y) * m_view.pixelsPerMetre() < 4.0f;
+        const sf::Vector2f from = *bandFrom;
+        bandFrom.reset();
+        const bool click = std::hypot(world.x - from.x, world.y - from.y) * m_ctx.view.pixelsPerMetre() < 4.0f;
         if (click && !m_bandAdds)
-            m_editor->clearSelection();
+            m_ctx.scene().clearSelection();
         else if (!click)
-            m_editor->selectInRect(from.x, from.y, world.x, world.y,
+            m_ctx.scene().selectInRect(from.x, from.y, world.x, world.y,
                                    m_bandAdds ? SelectMode::Add : SelectMode::Replace);
     }
+}
+
+std::array<double, 2> SceneTools::insertionPoint() const
+{
+    if (pointerOnScene)
+    {
+        const sf::Vector2f world = m_ctx.view.toWorld(pointer);
+        return {world.x, world.y};
+    }
+    const sf::FloatRect area = m_ctx.sceneArea();
+    const sf::Vector2f centre = m_ctx.view.toWorld({area.left + 0.5f * area.width, area.top + 0.5f * area.height});
+    return {centre.x, m_ctx.scene().level().groundY};
+}
+
+void SceneTools::chooseHill()
+{
+    tool = Tool::Terrain;
+    terrainTemplate = TerrainDef{};
+    terrainTemplate.points = {{-3.0, -0.75}, {3.0, -0.75}, {2.0, 0.25}, {0.5, 0.75}, {-0.5, 0.75}, {-2.0, 0.25}};
+    terrainTemplate.widthM = 6.0;
+    terrainTemplate.heightM = 1.5;
+}
+
+void SceneTools::chooseTerrainBox()
+{
+    tool = Tool::Terrain;
+    terrainTemplate = TerrainDef{0.0, 0.0, 4.0, 1.0, 0.0, {}};
 }
 
 } // namespace abalike::app

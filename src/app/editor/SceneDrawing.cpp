@@ -1,5 +1,7 @@
-#include "editor/EditorScreen.hpp"
+#include "editor/SceneDrawing.hpp"
 
+#include "editor/EditorContext.hpp"
+#include "editor/SceneTools.hpp"
 #include "render/Palette.hpp"
 #include "shell/App.hpp"
 
@@ -31,24 +33,23 @@ std::vector<sf::Vector2f> closed(const std::vector<std::array<double, 2>>& outli
 }
 } // namespace
 
-void EditorScreen::addOutline(const Camera& camera, const ObjectRef& ref, float widthPx, sf::Color colour)
+void SceneDrawing::addOutline(const Camera& camera, const ObjectRef& ref, float widthPx, sf::Color colour)
 {
-    const std::vector<sf::Vector2f> points = closed(m_editor->outline(ref));
+    const std::vector<sf::Vector2f> points = closed(m_ctx.scene().outline(ref));
     m_mesh.addPolyline(points, widthPx * camera.metresPerPixel(), colour);
 }
 
-void EditorScreen::drawGrid(const Camera& camera, sf::Vector2u size)
+void SceneDrawing::drawGrid(const Camera& camera)
 {
-    if (!m_editor->snapSettings().grid)
+    if (!m_ctx.scene().snapSettings().grid)
         return;
     // The snapping grid where it is at least 16 px apart; every metre stronger.
-    double step = m_editor->snapSettings().gridM;
+    double step = m_ctx.scene().snapSettings().gridM;
     while (step * camera.pixelsPerMetre() < 16.0)
         step *= 2.0;
     const sf::FloatRect visible = camera.visibleWorld();
-    (void)size;
     const float thin = camera.metresPerPixel();
-    const double groundY = m_editor->level().groundY;
+    const double groundY = m_ctx.scene().level().groundY;
     const double x0 = std::floor(visible.left / step) * step;
     for (double x = x0; x <= visible.left + visible.width; x += step)
     {
@@ -65,38 +66,38 @@ void EditorScreen::drawGrid(const Camera& camera, sf::Vector2u size)
     }
 }
 
-void EditorScreen::drawOverlay(sf::RenderTarget& target)
+void SceneDrawing::drawOverlay(sf::RenderTarget& target)
 {
-    const Camera camera = m_view.camera(target.getSize());
-    const float scale = m_app.uiScale();
+    const Camera camera = m_ctx.view.camera(target.getSize());
+    const float scale = m_ctx.app.uiScale();
     m_mesh.clear();
-    drawGrid(camera, target.getSize());
+    drawGrid(camera);
 
     // Findings in red on their objects (paler once the scene has changed since the check ran).
-    for (const Finding& finding : m_checks.findings())
+    for (const Finding& finding : m_ctx.checks.findings())
     {
-        if (!finding.object || !exists(m_editor->level(), *finding.object))
+        if (!finding.object || !exists(m_ctx.scene().level(), *finding.object))
             continue;
-        const auto ran = m_checks.ranOn(finding.source);
-        const bool stale = ran && *ran != m_editor->revision();
+        const auto ran = m_ctx.checks.ranOn(finding.source);
+        const bool stale = ran && *ran != m_ctx.scene().revision();
         addOutline(camera, *finding.object, 4.0f * scale, stale ? kStale : kFinding);
     }
-    for (const ObjectRef& ref : m_editor->selection())
+    for (const ObjectRef& ref : m_ctx.scene().selection())
         addOutline(camera, ref, 3.0f * scale, kSelected);
 
     // The resize handle of a single selected block or terrain piece.
-    if (m_editor->selection().size() == 1 && m_tool == Tool::Select)
+    if (m_ctx.scene().selection().size() == 1 && m_tools.tool == SceneTools::Tool::Select)
     {
-        const ObjectRef ref = m_editor->selection()[0];
-        const bool polygon = ref.kind == ObjectKind::Terrain && m_editor->level().terrain[ref.index].isPolygon();
+        const ObjectRef ref = m_ctx.scene().selection()[0];
+        const bool polygon = ref.kind == ObjectKind::Terrain && m_ctx.scene().level().terrain[ref.index].isPolygon();
         if (polygon)
         {
             // A polygon's corners (squares: drag to move, Ctrl+click to remove) and its edges' middles (rings:
             // click to add a corner there).
             const float half = 6.0f * scale * camera.metresPerPixel();
-            for (const VertexHandle& handle : vertexHandles())
+            for (const SceneTools::VertexHandle& handle : m_tools.vertexHandles())
             {
-                const sf::Vector2f at = vertexHandlePosition(handle);
+                const sf::Vector2f at = m_tools.vertexHandlePosition(handle);
                 if (handle.edgeMiddle)
                     m_mesh.addRing(at, half, 2.0f * scale * camera.metresPerPixel(), kSelected, 16);
                 else
@@ -106,8 +107,8 @@ void EditorScreen::drawOverlay(sf::RenderTarget& target)
         }
         else if (ref.kind == ObjectKind::Block || ref.kind == ObjectKind::Terrain)
         {
-            const auto outline = m_editor->outline(ref);
-            const ObjectDef def = objectDef(m_editor->level(), ref);
+            const auto outline = m_ctx.scene().outline(ref);
+            const ObjectDef def = objectDef(m_ctx.scene().level(), ref);
             // The top-right corner in the object's frame: the outline's third vertex for boxes and frames.
             double a = 0.0;
             double cx = 0.0, cy = 0.0, w = 0.0, h = 0.0;
@@ -125,25 +126,53 @@ void EditorScreen::drawOverlay(sf::RenderTarget& target)
     }
 
     // Where the current tool would put its object, snapped as it will be.
-    if (m_tool != Tool::Select && m_pointerOnScene)
+    if (m_tools.tool != SceneTools::Tool::Select && m_tools.pointerOnScene)
     {
-        const sf::Vector2f world = m_view.toWorld(m_pointer);
-        const ObjectDef object = toolObject(world);
-        const SnapResult at = m_editor->snap(object);
+        const sf::Vector2f world = m_ctx.view.toWorld(m_tools.pointer);
+        const ObjectDef object = m_tools.toolObject(world);
+        const SnapResult at = m_ctx.scene().snap(object);
         const ObjectDef placed = withCentre(object, at.x, at.y);
-        const std::vector<sf::Vector2f> points = closed(m_editor->outlineOf(placed));
+        const std::vector<sf::Vector2f> points = closed(m_ctx.scene().outlineOf(placed));
         m_mesh.addPolyline(points, 2.0f * scale * camera.metresPerPixel(), kGhost);
     }
 
     // The selection rectangle being dragged out.
-    if (m_bandFrom)
+    if (m_tools.bandFrom)
     {
-        const sf::Vector2f a = *m_bandFrom;
-        const sf::Vector2f b = m_view.toWorld(m_pointer);
+        const sf::Vector2f a = *m_tools.bandFrom;
+        const sf::Vector2f b = m_ctx.view.toWorld(m_tools.pointer);
         const std::vector<sf::Vector2f> band{{a.x, a.y}, {b.x, a.y}, {b.x, b.y}, {a.x, b.y}, {a.x, a.y}};
         m_mesh.addPolyline(band, 1.5f * scale * camera.metresPerPixel(), kBand);
     }
     m_mesh.draw(target, camera.transform());
+}
+
+void SceneDrawing::refresh()
+{
+    const SceneEditor& scene = m_ctx.scene();
+    if (m_session && m_generation == m_ctx.sceneGeneration && m_revision == scene.revision())
+        return;
+    m_generation = m_ctx.sceneGeneration;
+    m_revision = scene.revision();
+    try
+    {
+        m_session = std::make_unique<GameSession>(scene.level(), Catalog::builtin());
+        m_error.clear();
+    }
+    catch (const std::exception& error)
+    {
+        m_error = error.what(); // the model keeps the level loadable; say so if it ever is not
+    }
+}
+
+void SceneDrawing::draw(sf::RenderTarget& target)
+{
+    if (!m_session)
+        return;
+    const Camera camera = m_ctx.view.camera(target.getSize());
+    m_renderer.drawBackground(target, camera, *m_session);
+    m_renderer.drawForeground(target, camera, *m_session, {0.0f, 0.0f});
+    drawOverlay(target);
 }
 
 } // namespace abalike::app

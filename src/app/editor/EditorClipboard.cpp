@@ -1,0 +1,118 @@
+#include "editor/EditorClipboard.hpp"
+
+#include "editor/EditorContext.hpp"
+#include "editor/EditorSource.hpp"
+#include "editor/SceneTools.hpp"
+
+#include "shell/App.hpp"
+#include "shell/DataPaths.hpp"
+
+#include <SFML/Window/Clipboard.hpp>
+#include <abalike/level/LevelWriter.hpp>
+#include <abalike/save/AtomicWrite.hpp>
+#include <abalike/save/DataDirectory.hpp>
+#include <abalike/world/Catalog.hpp>
+#include <imgui.h>
+
+namespace abalike::app
+{
+
+namespace
+{
+
+} // namespace
+
+std::filesystem::path EditorClipboard::userPrefabFolder()
+{
+    const std::filesystem::path data = defaultDataDirectory();
+    return data.empty() ? std::filesystem::path() : data / "prefabs";
+}
+
+void EditorClipboard::copySelection(bool cut)
+{
+    const std::string text = m_ctx.scene().copySelection();
+    if (text.empty())
+    {
+        m_ctx.message = "Nothing to copy: select blocks, pigs or terrain";
+        m_ctx.messageIsError = true;
+        return;
+    }
+    sf::Clipboard::setString(sf::String::fromUtf8(text.begin(), text.end()));
+    const std::size_t count = m_ctx.scene().selection().size();
+    if (cut)
+        m_ctx.scene().deleteSelection();
+    m_ctx.message = std::string(cut ? "Cut " : "Copied ") + std::to_string(count) + (count == 1 ? " object" : " objects") +
+                " (as level JSON: paste it in any level)";
+    m_ctx.messageIsError = false;
+    m_ctx.app.trace().write("editor-copy", {{"objects", count}, {"cut", cut}});
+}
+
+void EditorClipboard::paste()
+{
+    const std::basic_string<sf::Uint8> utf8 = sf::Clipboard::getString().toUtf8();
+    const std::string text(utf8.begin(), utf8.end());
+    const std::string why = m_ctx.scene().paste(text, m_tools.insertionPoint());
+    m_ctx.message =
+        why.empty() ? "Pasted " + std::to_string(m_ctx.scene().selection().size()) + " objects" : "Cannot paste: " + why;
+    m_ctx.messageIsError = !why.empty();
+    m_ctx.app.trace().write("editor-paste", {{"objects", why.empty() ? m_ctx.scene().selection().size() : 0}, {"why", why}});
+}
+
+void EditorClipboard::insertPrefab(const std::filesystem::path& file)
+{
+    try
+    {
+        const EditableLevel prefab = loadLevelForEditing(file.string(), Catalog::builtin());
+        const std::string why =
+            m_ctx.scene().insertBodies(prefab.level, m_tools.insertionPoint(), "Insert " + file.stem().string());
+        m_ctx.message =
+            why.empty() ? "Inserted " + file.stem().string() : "Cannot insert " + file.stem().string() + ": " + why;
+        m_ctx.messageIsError = !why.empty();
+    }
+    catch (const LevelLoadError& error)
+    {
+        m_ctx.message = error.issues().empty() ? error.what() : error.issues().front().format();
+        m_ctx.messageIsError = true;
+    }
+    m_ctx.app.trace().write("editor-prefab", {{"file", file.string()}, {"error", m_ctx.messageIsError}});
+}
+
+void EditorClipboard::saveSelectionAsPrefab()
+{
+    const std::string text = m_ctx.scene().copySelection();
+    const std::filesystem::path folder = userPrefabFolder();
+    if (text.empty() || folder.empty())
+    {
+        m_ctx.message = text.empty() ? "Nothing to save: select blocks, pigs or terrain"
+                                 : "No data folder for prefabs (set HOME or ABALIKE_DATA_DIR)";
+        m_ctx.messageIsError = true;
+        return;
+    }
+    // prefabs/LEVEL-N.json with the first free N: saving never overwrites an earlier prefab.
+    std::string stem = m_ctx.scene().level().id.empty() ? std::string("prefab") : m_ctx.scene().level().id;
+    for (char& c : stem)
+        if (c == '/' || c == '\\')
+            c = '-';
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    std::filesystem::path path;
+    for (int n = 1;; ++n)
+    {
+        path = folder / (stem + "-" + std::to_string(n) + ".json");
+        if (!std::filesystem::exists(path, ec))
+            break;
+    }
+    try
+    {
+        writeFileAtomically(path, text);
+        m_ctx.message = "Saved the selection as the prefab " + path.string();
+        m_ctx.messageIsError = false;
+    }
+    catch (const std::exception& error)
+    {
+        m_ctx.message = std::string("Cannot save the prefab: ") + error.what();
+        m_ctx.messageIsError = true;
+    }
+}
+
+} // namespace abalike::app

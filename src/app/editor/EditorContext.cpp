@@ -1,0 +1,67 @@
+#include "editor/EditorContext.hpp"
+
+#include "shell/App.hpp"
+
+#include <algorithm>
+#include <imgui.h>
+
+namespace abalike::app
+{
+
+EditorContext::EditorContext(App& owner, const EditorSource& source)
+    : app(owner), editor(std::make_unique<SceneEditor>(source.level))
+{
+    editor->setPath(source.path);
+    checks.setOpeningIssues(source.issues, editor->revision());
+}
+
+void EditorContext::replaceScene(const EditorSource& source)
+{
+    editor = std::make_unique<SceneEditor>(source.level);
+    editor->setPath(source.path);
+    checks.clear();
+    checks.setOpeningIssues(source.issues, editor->revision());
+    ++sceneGeneration;
+    viewFitted = false;
+}
+
+void EditorContext::say(std::string text, bool error)
+{
+    message = std::move(text);
+    messageIsError = error;
+}
+
+sf::FloatRect EditorContext::sceneArea() const
+{
+    const sf::Vector2f size(app.windowSize());
+    const float scale = app.uiScale();
+    // The menu bar and the status bar: a line of 16 px text with ImGui's frame and window padding.
+    const float top = 22.0f * scale;
+    const float bottom = playing ? 0.0f : 38.0f * scale;
+    const float left = playing ? 0.0f : 220.0f * scale;
+    const float right = 350.0f * scale;
+    return {left, top, std::max(50.0f, size.x - left - right), std::max(50.0f, size.y - top - bottom)};
+}
+
+void EditorContext::recordPanel()
+{
+    const ImVec2 pos = ImGui::GetWindowPos();
+    const ImVec2 size = ImGui::GetWindowSize();
+    panels.emplace_back(pos.x, pos.y, size.x, size.y);
+}
+
+bool EditorContext::pointerOverPanels(sf::Vector2f pixel) const
+{
+    for (const sf::FloatRect& panel : panels)
+        if (panel.contains(pixel))
+            return true;
+    return false;
+}
+
+void EditorContext::fitView()
+{
+    view.fit(scene().level(), Catalog::builtin(), sceneArea(), app.windowSize());
+    viewFitted = true;
+}
+
+} // namespace abalike::app
