@@ -167,8 +167,7 @@ void EditorChecks::recheckAfterEdits(const SceneEditor& scene, bool busy, Trace&
     std::size_t geometry = 0;
     for (const Finding& finding : findings())
         geometry += finding.source == FindingSource::Geometry ? 1 : 0;
-    trace.write("editor-recheck",
-                        {{"revision", scene.revision()}, {"geometry_findings", geometry}, {"rest", rest}});
+    trace.write("editor-recheck", {{"revision", scene.revision()}, {"geometry_findings", geometry}, {"rest", rest}});
 }
 
 } // namespace abalike::app

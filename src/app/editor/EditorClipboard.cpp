@@ -41,8 +41,8 @@ void EditorClipboard::copySelection(bool cut)
     const std::size_t count = m_ctx.scene().selection().size();
     if (cut)
         m_ctx.scene().deleteSelection();
-    m_ctx.message = std::string(cut ? "Cut " : "Copied ") + std::to_string(count) + (count == 1 ? " object" : " objects") +
-                " (as level JSON: paste it in any level)";
+    m_ctx.message = std::string(cut ? "Cut " : "Copied ") + std::to_string(count) +
+                    (count == 1 ? " object" : " objects") + " (as level JSON: paste it in any level)";
     m_ctx.messageIsError = false;
     m_ctx.app.trace().write("editor-copy", {{"objects", count}, {"cut", cut}});
 }
@@ -52,10 +52,11 @@ void EditorClipboard::paste()
     const std::basic_string<sf::Uint8> utf8 = sf::Clipboard::getString().toUtf8();
     const std::string text(utf8.begin(), utf8.end());
     const std::string why = m_ctx.scene().paste(text, m_tools.insertionPoint());
-    m_ctx.message =
-        why.empty() ? "Pasted " + std::to_string(m_ctx.scene().selection().size()) + " objects" : "Cannot paste: " + why;
+    m_ctx.message = why.empty() ? "Pasted " + std::to_string(m_ctx.scene().selection().size()) + " objects"
+                                : "Cannot paste: " + why;
     m_ctx.messageIsError = !why.empty();
-    m_ctx.app.trace().write("editor-paste", {{"objects", why.empty() ? m_ctx.scene().selection().size() : 0}, {"why", why}});
+    m_ctx.app.trace().write("editor-paste",
+                            {{"objects", why.empty() ? m_ctx.scene().selection().size() : 0}, {"why", why}});
 }
 
 void EditorClipboard::insertPrefab(const std::filesystem::path& file)
@@ -84,7 +85,7 @@ void EditorClipboard::saveSelectionAsPrefab()
     if (text.empty() || folder.empty())
     {
         m_ctx.message = text.empty() ? "Nothing to save: select blocks, pigs or terrain"
-                                 : "No data folder for prefabs (set HOME or ABALIKE_DATA_DIR)";
+                                     : "No data folder for prefabs (set HOME or ABALIKE_DATA_DIR)";
         m_ctx.messageIsError = true;
         return;
     }

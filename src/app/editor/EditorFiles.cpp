@@ -60,7 +60,8 @@ std::filesystem::path EditorFiles::defaultSavePath() const
         return m_ctx.scene().path();
     // A new scene goes with the player's files, not into the game's own levels.
     const std::filesystem::path data = defaultDataDirectory();
-    const std::string name = (m_ctx.scene().level().id.empty() ? std::string("scene") : m_ctx.scene().level().id) + ".json";
+    const std::string name =
+        (m_ctx.scene().level().id.empty() ? std::string("scene") : m_ctx.scene().level().id) + ".json";
     return data.empty() ? std::filesystem::path(name) : data / "levels" / name;
 }
 
@@ -92,9 +93,9 @@ bool EditorFiles::saveTo(const std::filesystem::path& path)
         if (!geometry.empty())
             m_ctx.checks.runGeometry(m_ctx.scene().level(), m_ctx.scene().revision());
         m_ctx.message = "Saved " + path.string() +
-                    (geometry.empty() ? std::string()
-                                      : " (" + std::to_string(geometry.size()) +
-                                            " geometry problem(s), marked: `abalike check` will fail it)");
+                        (geometry.empty() ? std::string()
+                                          : " (" + std::to_string(geometry.size()) +
+                                                " geometry problem(s), marked: `abalike check` will fail it)");
         m_ctx.messageIsError = !geometry.empty();
         m_ctx.app.trace().write("editor-save", {{"path", path.string()}, {"problems", geometry.size()}});
         if (!m_ctx.app.scripted())
@@ -104,8 +105,8 @@ bool EditorFiles::saveTo(const std::filesystem::path& path)
     catch (const LevelLoadError& error)
     {
         m_ctx.message = "Not saved: " + (error.issues().empty()
-                                         ? std::string(error.what())
-                                         : error.issues().front().pointer + ": " + error.issues().front().message);
+                                             ? std::string(error.what())
+                                             : error.issues().front().pointer + ": " + error.issues().front().message);
     }
     catch (const std::exception& error)
     {
@@ -169,7 +170,7 @@ void EditorFiles::openFile(const std::filesystem::path& path)
     if (!std::filesystem::is_regular_file(path, ec))
     {
         m_ctx.message = std::filesystem::exists(path, ec) ? "\"" + path.string() + "\" is a folder, not a level file"
-                                                      : "No such file: \"" + path.string() + "\"";
+                                                          : "No such file: \"" + path.string() + "\"";
         m_ctx.messageIsError = true;
         return;
     }

@@ -42,6 +42,25 @@ bool inputDouble(const char* label, double& value, bool& released, const char* f
 
 const char* shapeNames[] = {"box", "circle", "triangle", "hollow_box"};
 
+/// A drop-down of the catalog's names (materials, pig types): true when another one is picked into name.
+template <class Item>
+bool catalogCombo(const char* label, const std::vector<Item>& items, std::string& name)
+{
+    std::vector<const char*> names;
+    int chosen = 0;
+    for (std::size_t i = 0; i < items.size(); ++i)
+    {
+        names.push_back(items[i].name.c_str());
+        if (items[i].name == name)
+            chosen = static_cast<int>(i);
+    }
+    const int before = chosen;
+    if (!ImGui::Combo(label, &chosen, names.data(), static_cast<int>(names.size())) || chosen == before)
+        return false;
+    name = items[static_cast<std::size_t>(chosen)].name;
+    return true;
+}
+
 /// The loader's messages name objects by JSON pointer ("overlaps /blocks/0"); the editor names them as it lists them.
 std::string readablePointers(const LevelDef& level, std::string text)
 {
@@ -167,20 +186,7 @@ void EditorInspector::selectionTab()
                     block->heightM = block->widthM;
                 changed = true;
             }
-            int material = 0;
-            const auto& materials = Catalog::builtin().materials();
-            std::vector<const char*> names;
-            for (std::size_t i = 0; i < materials.size(); ++i)
-            {
-                names.push_back(materials[i].name.c_str());
-                if (materials[i].name == block->material)
-                    material = static_cast<int>(i);
-            }
-            if (ImGui::Combo("Material", &material, names.data(), static_cast<int>(names.size())))
-            {
-                block->material = materials[static_cast<std::size_t>(material)].name;
-                changed = true;
-            }
+            changed |= catalogCombo("Material", Catalog::builtin().materials(), block->material);
             changed |= inputDouble("x (m)", block->x, m_ctx.fieldReleased);
             changed |= inputDouble("y (m)", block->y, m_ctx.fieldReleased);
             changed |= inputDouble(block->shape == BlockShape::Circle ? "Diameter (m)" : "Width (m)", block->widthM,
@@ -197,20 +203,7 @@ void EditorInspector::selectionTab()
         }
         else if (auto* pig = std::get_if<PigDef>(&def))
         {
-            int type = 0;
-            const auto& pigs = Catalog::builtin().pigs();
-            std::vector<const char*> names;
-            for (std::size_t i = 0; i < pigs.size(); ++i)
-            {
-                names.push_back(pigs[i].name.c_str());
-                if (pigs[i].name == pig->type)
-                    type = static_cast<int>(i);
-            }
-            if (ImGui::Combo("Type", &type, names.data(), static_cast<int>(names.size())))
-            {
-                pig->type = pigs[static_cast<std::size_t>(type)].name;
-                changed = true;
-            }
+            changed |= catalogCombo("Type", Catalog::builtin().pigs(), pig->type);
             changed |= inputDouble("x (m)", pig->x, m_ctx.fieldReleased);
             changed |= inputDouble("y (m)", pig->y, m_ctx.fieldReleased);
         }
@@ -520,8 +513,8 @@ void EditorInspector::birdTab()
         // Say what the world does with it, here as well as when it is played.
         if (m_drawing.session())
         {
-            const std::string text =
-                describeBirdBody(m_drawing.session()->world().birdBody(customBirdType(*m_ctx.scene().level().customBird)));
+            const std::string text = describeBirdBody(
+                m_drawing.session()->world().birdBody(customBirdType(*m_ctx.scene().level().customBird)));
             if (!text.empty())
                 ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.3f, 1.0f), "%s",
                                    m_ctx.app.universityWording() ? "Box2D:" : "Physics engine:");
@@ -789,15 +782,6 @@ void EditorInspector::multiSelectionFields(const std::vector<ObjectRef>& selecti
     BlockDef first = std::get<BlockDef>(objectDef(m_ctx.scene().level(), blocks.front()));
     ImGui::TextDisabled("For all %zu selected blocks:", blocks.size());
     ImGui::PushItemWidth(-110.0f * m_ctx.app.uiScale());
-    const auto& materials = Catalog::builtin().materials();
-    std::vector<const char*> names;
-    int material = 0;
-    for (std::size_t i = 0; i < materials.size(); ++i)
-    {
-        names.push_back(materials[i].name.c_str());
-        if (materials[i].name == first.material)
-            material = static_cast<int>(i);
-    }
     const auto applyToAll = [&](const char* label, const auto& change)
     {
         std::vector<ObjectDef> defs;
@@ -814,11 +798,8 @@ void EditorInspector::multiSelectionFields(const std::vector<ObjectRef>& selecti
             m_ctx.messageIsError = true;
         }
     };
-    if (ImGui::Combo("Material", &material, names.data(), static_cast<int>(names.size())))
-    {
-        const std::string name = materials[static_cast<std::size_t>(material)].name;
+    if (std::string name = first.material; catalogCombo("Material", Catalog::builtin().materials(), name))
         applyToAll("Material", [&](BlockDef& b) { b.material = name; });
-    }
     if (inputDouble("Width (m)", first.widthM, m_ctx.fieldReleased))
         applyToAll("Width", [&](BlockDef& b) { b.widthM = first.widthM; });
     if (inputDouble("Height (m)", first.heightM, m_ctx.fieldReleased))

@@ -31,7 +31,8 @@ void EditorScreen::handleKey(const sf::Event::KeyEvent& key)
         }
         return;
     }
-    const double step = key.shift ? 0.01 : (m_ctx.scene().snapSettings().grid ? m_ctx.scene().snapSettings().gridM : 0.05);
+    const double step =
+        key.shift ? 0.01 : (m_ctx.scene().snapSettings().grid ? m_ctx.scene().snapSettings().gridM : 0.05);
     if (key.control)
     {
         handleCommandKey(key);
@@ -168,8 +169,8 @@ void EditorScreen::resizeByKey(const sf::Event::KeyEvent& key)
         const double change = (key.code == K::RBracket ? 1.0 : -1.0) * resizeStep;
         if (w > 0.0)
         {
-            const std::string why =
-                key.shift ? m_ctx.scene().resizeObject(ref, w, h + change) : m_ctx.scene().resizeObject(ref, w + change, h);
+            const std::string why = key.shift ? m_ctx.scene().resizeObject(ref, w, h + change)
+                                              : m_ctx.scene().resizeObject(ref, w + change, h);
             if (!why.empty())
             {
                 m_ctx.message = why;

@@ -189,8 +189,8 @@ void EditorPanels::palettePanel()
     const float menu = ImGui::GetFrameHeight();
     const float status = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().WindowPadding.y;
     ImGui::SetNextWindowPos(ImVec2(0.0f, menu), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(m_ctx.sceneArea().left, static_cast<float>(m_ctx.app.windowSize().y) - menu - status),
-                             ImGuiCond_Always);
+    ImGui::SetNextWindowSize(
+        ImVec2(m_ctx.sceneArea().left, static_cast<float>(m_ctx.app.windowSize().y) - menu - status), ImGuiCond_Always);
     if (!ImGui::Begin("Palette", nullptr, kPanelFlags))
     {
         m_ctx.recordPanel();
@@ -209,8 +209,8 @@ void EditorPanels::palettePanel()
         for (const BlockShape shape :
              {BlockShape::Box, BlockShape::Circle, BlockShape::Triangle, BlockShape::HollowBox})
         {
-            const bool active =
-                m_tools.tool == SceneTools::Tool::Block && m_tools.blockTemplate.material == material.name && m_tools.blockTemplate.shape == shape;
+            const bool active = m_tools.tool == SceneTools::Tool::Block &&
+                                m_tools.blockTemplate.material == material.name && m_tools.blockTemplate.shape == shape;
             const std::string label = material.look.label + " " + shapeLabel(shape);
             if (column++ % 2 == 1)
                 ImGui::SameLine();
@@ -241,8 +241,9 @@ void EditorPanels::palettePanel()
     if (ImGui::InputScalarN("##blocksize", ImGuiDataType_Double, size, 2, nullptr, nullptr, "%.2f"))
     {
         m_tools.blockTemplate.widthM = std::clamp(size[0], minSize, maxSize);
-        m_tools.blockTemplate.heightM = m_tools.blockTemplate.shape == BlockShape::Circle ? m_tools.blockTemplate.widthM
-                                                                              : std::clamp(size[1], minSize, maxSize);
+        m_tools.blockTemplate.heightM = m_tools.blockTemplate.shape == BlockShape::Circle
+                                            ? m_tools.blockTemplate.widthM
+                                            : std::clamp(size[1], minSize, maxSize);
     }
     ImGui::PopItemWidth();
 
@@ -312,7 +313,8 @@ void EditorPanels::statusBar()
     ImGui::SetNextWindowSize(ImVec2(window.x, height), ImGuiCond_Always);
     ImGui::Begin("##status", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
     m_ctx.recordPanel();
-    const std::string file = m_ctx.scene().path().empty() ? std::string("(not saved yet)") : m_ctx.scene().path().string();
+    const std::string file =
+        m_ctx.scene().path().empty() ? std::string("(not saved yet)") : m_ctx.scene().path().string();
     ImGui::Text("%s%s", file.c_str(), m_ctx.scene().dirty() ? "  \u2022 modified" : "");
     ImGui::SameLine();
     if (m_tools.pointerOnScene)

@@ -1,6 +1,7 @@
 #include "design/ParallelFor.hpp"
 
 #include <abalike/design/Difficulty.hpp>
+#include <abalike/util/SplitMix64.hpp>
 #include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelFlight.hpp>
 
@@ -14,15 +15,6 @@ namespace
 {
 constexpr double kMinAngleDeg = 0.0;
 constexpr double kMaxAngleDeg = 90.0;
-
-/// SplitMix64: spreads (seed, sample) into well-mixed, independent generator seeds.
-std::uint64_t mix(std::uint64_t x)
-{
-    x += 0x9E3779B97F4A7C15ull;
-    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-    return x ^ (x >> 31);
-}
 
 /// Uniform in [lo, hi] from the raw generator: std::uniform_real_distribution is not the same on every library.
 double uniform(std::mt19937_64& random, double lo, double hi)
@@ -45,7 +37,7 @@ Difficulty measureDifficulty(const LevelDef& level, std::size_t samples, std::ui
         samples, workerCount(threads),
         [&](std::size_t i)
         {
-            std::mt19937_64 random(mix(seed ^ mix(i)));
+            std::mt19937_64 random(SplitMix64::mix(seed ^ SplitMix64::mix(i)));
             std::vector<ScriptedShot> shots;
             for (const double top : topSpeed)
             {

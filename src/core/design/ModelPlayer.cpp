@@ -1,6 +1,8 @@
 #include "design/ParallelFor.hpp"
 
+#include <abalike/design/AimRange.hpp>
 #include <abalike/design/ModelPlayer.hpp>
+#include <abalike/util/SplitMix64.hpp>
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/LevelFlight.hpp>
 #include <abalike/world/RestCheck.hpp>
@@ -17,32 +19,17 @@ namespace abalike
 namespace
 {
 
-constexpr double kMinAngleDeg = -10.0; ///< as the solver: a slingshot on a cliff shoots down
-constexpr double kMaxAngleDeg = 80.0;
 constexpr double kAngleStepDeg = 5.0;
 constexpr double kPullShares[] = {0.6, 0.8, 1.0};
 constexpr double kZ90 = 1.6448536269514722; ///< two-sided 90 %
 
-/// splitmix64: a small generator whose sequence is the same on every platform (std::normal_distribution is not).
-struct SplitMix
+/// A standard normal number by Box-Muller (std::normal_distribution is not the same on every library).
+double normal(SplitMix64& random)
 {
-    std::uint64_t state;
-    std::uint64_t next()
-    {
-        std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    double uniform() { return (static_cast<double>(next() >> 11) + 0.5) / 9007199254740992.0; } // (0, 1)
-    /// Box-Muller.
-    double normal()
-    {
-        const double u = uniform();
-        const double v = uniform();
-        return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * std::numbers::pi * v);
-    }
-};
+    const double u = random.uniform();
+    const double v = random.uniform();
+    return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * std::numbers::pi * v);
+}
 
 using Rank = std::tuple<bool, int, int>; ///< won, -pigs left, score: larger is better
 
@@ -72,7 +59,7 @@ ScriptedShot modelPlayerShot(const LevelDef& level, const std::vector<ScriptedSh
     const SlingshotBand band = slingshotBand(level.slingshot, *bird, catalog);
     ScriptedShot best;
     std::optional<Rank> bestRank;
-    for (double angle = kMinAngleDeg; angle <= kMaxAngleDeg + 1e-9; angle += kAngleStepDeg)
+    for (double angle = kAimMinAngleDeg; angle <= kAimMaxAngleDeg + 1e-9; angle += kAngleStepDeg)
         for (const double share : kPullShares)
         {
             std::vector<ScriptedShot> shots = fired;
@@ -114,7 +101,7 @@ PlayerDifficulty measurePlayerDifficulty(const LevelDef& level, const Catalog& c
         options.runs, workerCount(options.threads),
         [&](std::size_t run)
         {
-            SplitMix random{options.seed * 0x100000001B3ull + run};
+            SplitMix64 random(options.seed * 0x100000001B3ull + run);
             std::vector<ScriptedShot> fired;
             for (std::size_t b = 0; b < level.birds.size(); ++b)
             {
@@ -122,8 +109,8 @@ PlayerDifficulty measurePlayerDifficulty(const LevelDef& level, const Catalog& c
                 const BirdType* bird = catalog.findBird(level.birds[b]);
                 const SlingshotBand band = slingshotBand(level.slingshot, *bird, catalog);
                 const double share =
-                    std::clamp(band.forSpeed(shot.speedMps).fraction + aim.pullSigma * random.normal(), 0.0, 1.0);
-                shot.angleDeg = std::clamp(shot.angleDeg + aim.angleSigmaDeg * random.normal(), -90.0, 90.0);
+                    std::clamp(band.forSpeed(shot.speedMps).fraction + aim.pullSigma * normal(random), 0.0, 1.0);
+                shot.angleDeg = std::clamp(shot.angleDeg + aim.angleSigmaDeg * normal(random), -90.0, 90.0);
                 shot.speedMps = band.atFraction(share).speedMps;
                 fired.push_back(shot);
                 const auto session = simulateShots(level, fired, catalog);

@@ -1,5 +1,6 @@
 #include "design/ParallelFor.hpp"
 
+#include <abalike/design/AimRange.hpp>
 #include <abalike/design/Solver.hpp>
 #include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelFlight.hpp>
@@ -17,8 +18,6 @@ namespace
 {
 
 /// The coarse grid aims between these angles: flatter shots hit the ground, steeper ones rarely help.
-constexpr double kMinAngleDeg = -10.0;
-constexpr double kMaxAngleDeg = 80.0;
 /// Ability times tried, as fractions of the time to the bird's first contact without it.
 constexpr double kAbilityFractions[] = {0.3, 0.5, 0.7, 0.9};
 /// Best candidates of a bird that are refined and tried with abilities.
@@ -124,14 +123,14 @@ private:
                 for (const double fraction : m_options.speedFractions)
                 {
                     const double t = m_options.angleSteps > 1 ? double(a) / (m_options.angleSteps - 1) : 0.5;
-                    const double angle = roundTo(kMinAngleDeg + t * (kMaxAngleDeg - kMinAngleDeg), 10);
+                    const double angle = roundTo(kAimMinAngleDeg + t * (kAimMaxAngleDeg - kAimMinAngleDeg), 10);
                     candidates.push_back({p, {angle, floorTo(fraction * top, 100), std::nullopt}});
                 }
         std::vector<Evaluated> ranked;
         evaluate(prefixes, candidates, ranked);
 
         // Refine around the best few: a smaller step each round.
-        double angleStep = (kMaxAngleDeg - kMinAngleDeg) / std::max(1, m_options.angleSteps - 1) / 2;
+        double angleStep = (kAimMaxAngleDeg - kAimMinAngleDeg) / std::max(1, m_options.angleSteps - 1) / 2;
         double speedStep = 0.05 * top;
         for (int round = 0; round < m_options.refineRounds; ++round)
         {
