@@ -22,7 +22,7 @@ target_compile_definitions(abalike_app PRIVATE ABALIKE_DATA_FROM_INSTALLED_EXE="
 # Debian's hardening for the shipped program (dpkg-buildflags' defaults plus bindnow); sanitizer builds keep
 # their own checks, which fortified libc calls would get in the way of.
 if(NOT ABALIKE_SANITIZE AND NOT ABALIKE_FUZZ)
-    foreach(_target abalike abalike_app abalike_plot)
+    foreach(_target abalike abalike_app abalike_cli abalike_plot)
         target_compile_definitions(${_target} PRIVATE $<$<NOT:$<CONFIG:Debug>>:_FORTIFY_SOURCE=2>)
         target_compile_options(${_target} PRIVATE -fstack-protector-strong)
     endforeach()

@@ -8,7 +8,7 @@ namespace abalike
 namespace
 {
 
-LevelDef firstLevel()
+LevelDef scoringLevel()
 {
     return loadLevel(std::string(ABALIKE_SOURCE_DIR) + "/levels/1-1-first-flight.json", Catalog::builtin());
 }
@@ -25,7 +25,7 @@ TEST(Scoring, AccuracyFallsLinearlyToZeroAtTheTolerance)
 
 TEST(Scoring, TheBreakdownAddsUpAndExplainsEachLine)
 {
-    const auto session = simulateShots(firstLevel(), {{55.0, 17.0}, {10.0, 23.0}});
+    const auto session = simulateShots(scoringLevel(), {{55.0, 17.0}, {10.0, 23.0}});
     ASSERT_EQ(session->phase(), Phase::Won);
     const ScoreBreakdown s = session->score();
     const ScoringRules& rules = session->catalog().scoring();
@@ -53,7 +53,7 @@ TEST(Scoring, TheBreakdownAddsUpAndExplainsEachLine)
 
 TEST(Scoring, AShotIntoTheGroundEarnsNoAccuracy)
 {
-    const auto session = simulateShots(firstLevel(), {{5.0, 8.0}});
+    const auto session = simulateShots(scoringLevel(), {{5.0, 8.0}});
     const ShotRecord& shot = session->shots()[0];
     ASSERT_TRUE(shot.deviationM.has_value());
     EXPECT_EQ(shot.firstTouched, EntityKind::Ground);
@@ -71,7 +71,7 @@ TEST(Scoring, StarsFollowTheLevelsThresholds)
 
 TEST(Slingshot, SamePullSendsAHeavyBirdSlowerAndTheErrorNamesTheTopSpeed)
 {
-    LevelDef level = firstLevel();
+    LevelDef level = scoringLevel();
     level.birds = {"blue", "black"};
     level.slingshot.maxForceN = 1200.0; // 1 200 J at the full 2 m pull
     GameSession session(level);

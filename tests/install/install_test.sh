@@ -42,7 +42,7 @@ if command -v appstreamcli >/dev/null; then
 fi
 
 # What runs from the prefix only: the source tree's files are not there (the smoke script is copied out first).
-cp "$src/tests/window/play_smoke.sh" "$work/play_smoke.sh"
+cp "$src/tests/window/play_smoke.sh" "$src/tests/window/xvfb.sh" "$work/"
 cat >"$work/from-prefix.sh" <<SCRIPT
 set -euo pipefail
 fail() { echo "FAIL: \$*" >&2; exit 1; }

@@ -9,7 +9,7 @@ namespace
 {
 
 /// Parses text expected to fail and returns every formatted problem, one per line.
-std::string errorsOf(const std::string& text)
+std::string loaderErrorsOf(const std::string& text)
 {
     try
     {
@@ -34,23 +34,23 @@ const char* const kValid = R"({
 
 TEST(LevelErrors, ValidMinimalLevelLoads)
 {
-    EXPECT_EQ(errorsOf(kValid), "");
+    EXPECT_EQ(loaderErrorsOf(kValid), "");
 }
 
 TEST(LevelErrors, SyntaxErrorGivesLineAndColumn)
 {
-    const std::string errors = errorsOf("{\n  \"format\": 1,\n  \"id\": \"t\"\n  \"title\": \"T\"\n}");
+    const std::string errors = loaderErrorsOf("{\n  \"format\": 1,\n  \"id\": \"t\"\n  \"title\": \"T\"\n}");
     EXPECT_NE(errors.find("level.json:4:3: error: /: invalid JSON"), std::string::npos) << errors;
 }
 
 TEST(LevelErrors, EmptyFile)
 {
-    EXPECT_NE(errorsOf("  \n").find("empty file"), std::string::npos);
+    EXPECT_NE(loaderErrorsOf("  \n").find("empty file"), std::string::npos);
 }
 
 TEST(LevelErrors, DeepNestingIsRejectedWithoutParsing)
 {
-    EXPECT_NE(errorsOf(std::string(100000, '[') + std::string(100000, ']')).find("nested too deeply"),
+    EXPECT_NE(loaderErrorsOf(std::string(100000, '[') + std::string(100000, ']')).find("nested too deeply"),
               std::string::npos);
 }
 
@@ -58,12 +58,12 @@ TEST(LevelErrors, HugeNumberIsAnError)
 {
     std::string text = kValid;
     text.replace(text.find("\"x\": 10"), 7, "\"x\": 1e400");
-    EXPECT_NE(errorsOf(text).find("error"), std::string::npos);
+    EXPECT_NE(loaderErrorsOf(text).find("error"), std::string::npos);
 }
 
 TEST(LevelErrors, ReportsEveryProblemWithPointerAndSuggestion)
 {
-    const std::string errors = errorsOf(R"({
+    const std::string errors = loaderErrorsOf(R"({
   "format": 1, "id": "t", "title": "T",
   "slingshot": {"x": 0, "y": 1.5},
   "birds": ["red", "bleu"],

@@ -221,7 +221,7 @@ TEST(ScienceBirdsImport, LeavesBodiesFarFromTheirSupportForTheRestCheck)
 }
 
 /// The one error importing text gives, as "LINE:COL message".
-std::string errorOf(const std::string& bytes)
+std::string importErrorOf(const std::string& bytes)
 {
     try
     {
@@ -240,39 +240,39 @@ std::string errorOf(const std::string& bytes)
 TEST(ScienceBirdsImport, RefusesWhatScienceBirdsCannotLoadWithItsPlace)
 {
     const std::string head = "<Level>\n<GameObjects>\n";
-    EXPECT_EQ(errorOf(head + "  <Block type=\"RectHuge\" material=\"wood\" x=\"1\" y=\"-3\"/>\n</GameObjects></Level>"),
+    EXPECT_EQ(importErrorOf(head + "  <Block type=\"RectHuge\" material=\"wood\" x=\"1\" y=\"-3\"/>\n</GameObjects></Level>"),
               "3:3 <Block type=\"RectHuge\"> is not a Science Birds block (expected one of SquareHole, RectFat, "
               "SquareSmall, SquareTiny, RectTiny, RectSmall, RectMedium, RectBig, Circle, CircleSmall, Triangle, "
               "TriangleHole)\n");
-    EXPECT_EQ(errorOf(head + "<Block type=\"RectBig\" material=\"glass\" x=\"1\" y=\"-3\"/></GameObjects></Level>"),
+    EXPECT_EQ(importErrorOf(head + "<Block type=\"RectBig\" material=\"glass\" x=\"1\" y=\"-3\"/></GameObjects></Level>"),
               "3:1 <Block material=\"glass\"> is not a Science Birds material (expected wood, ice or stone)\n");
-    EXPECT_EQ(errorOf(head + "<Pig type=\"BasicSmall\" x=\"1,5\" y=\"-3\"/></GameObjects></Level>"),
+    EXPECT_EQ(importErrorOf(head + "<Pig type=\"BasicSmall\" x=\"1,5\" y=\"-3\"/></GameObjects></Level>"),
               "3:1 <Pig> x=\"1,5\" is not a number (expected e.g. x=\"1.5\")\n");
-    EXPECT_EQ(errorOf(head + "<Pig type=\"BasicSmall\" y=\"-3\"/></GameObjects></Level>"),
+    EXPECT_EQ(importErrorOf(head + "<Pig type=\"BasicSmall\" y=\"-3\"/></GameObjects></Level>"),
               "3:1 <Pig> has no x (expected a number, e.g. x=\"1.5\")\n");
-    EXPECT_EQ(errorOf(head + "<Pig type=\"BasicTiny\" x=\"1\" y=\"-3\"/></GameObjects></Level>"),
+    EXPECT_EQ(importErrorOf(head + "<Pig type=\"BasicTiny\" x=\"1\" y=\"-3\"/></GameObjects></Level>"),
               "3:1 <Pig type=\"BasicTiny\"> is not a Science Birds pig (expected one of BasicBig, BasicMedium, "
               "BasicSmall)\n");
-    EXPECT_EQ(errorOf("<Level>\n<Birds><Bird type=\"BirdGreen\"/></Birds>\n<GameObjects/></Level>"),
+    EXPECT_EQ(importErrorOf("<Level>\n<Birds><Bird type=\"BirdGreen\"/></Birds>\n<GameObjects/></Level>"),
               "2:8 <Bird type=\"BirdGreen\"> is not a Science Birds bird (expected one of BirdBlack, BirdBlue, "
               "BirdRed, BirdWhite, BirdYellow)\n");
-    EXPECT_EQ(errorOf("<Level>\n<GameObjects>\n</Level>\n<Pig/>"), "3:3 not well-formed XML: Start-end tags mismatch\n");
-    EXPECT_EQ(errorOf("<Levels/>"), "1:1 not a Science Birds level (expected a <Level> element)\n");
-    EXPECT_EQ(errorOf(head + "<Platform x=\"1\" y=\"0\" scaleX=\"0\"/></GameObjects></Level>"),
+    EXPECT_EQ(importErrorOf("<Level>\n<GameObjects>\n</Level>\n<Pig/>"), "3:3 not well-formed XML: Start-end tags mismatch\n");
+    EXPECT_EQ(importErrorOf("<Levels/>"), "1:1 not a Science Birds level (expected a <Level> element)\n");
+    EXPECT_EQ(importErrorOf(head + "<Platform x=\"1\" y=\"0\" scaleX=\"0\"/></GameObjects></Level>"),
               "3:1 <Platform> scaleX and scaleY must be greater than 0\n");
-    EXPECT_EQ(errorOf(head + "<Pig type=\"BasicSmall\" x=\"1e9\" y=\"-3\"/></GameObjects></Level>"),
+    EXPECT_EQ(importErrorOf(head + "<Pig type=\"BasicSmall\" x=\"1e9\" y=\"-3\"/></GameObjects></Level>"),
               "3:1 <Pig> x=\"1e9\" is outside the world (at most 2000 from the origin)\n");
-    EXPECT_EQ(errorOf("<Level>\n<BirdsAmount>many</BirdsAmount>\n<GameObjects/></Level>"),
+    EXPECT_EQ(importErrorOf("<Level>\n<BirdsAmount>many</BirdsAmount>\n<GameObjects/></Level>"),
               "2:1 <BirdsAmount> is \"many\" (expected a whole number of birds from 1 to 20)\n");
     // A level of ours needs a pig; the check says so at the level.
-    EXPECT_NE(errorOf("<Level><GameObjects/></Level>").find("in the imported level: "), std::string::npos);
+    EXPECT_NE(importErrorOf("<Level><GameObjects/></Level>").find("in the imported level: "), std::string::npos);
 }
 
 TEST(ScienceBirdsImport, RefusesBytesThatAreNotText)
 {
-    EXPECT_EQ(errorOf(std::string("\xFF\xFE<\0L\0x", 7)),
+    EXPECT_EQ(importErrorOf(std::string("\xFF\xFE<\0L\0x", 7)),
               "0:0 UTF-16 text with an odd number of bytes at byte 6 (expected UTF-8 or UTF-16 text)\n");
-    EXPECT_EQ(errorOf(std::string("\xFF\xFE<\0\x00\xD8L\0", 8)),
+    EXPECT_EQ(importErrorOf(std::string("\xFF\xFE<\0\x00\xD8L\0", 8)),
               "0:0 a lone UTF-16 surrogate at byte 4 (expected UTF-8 or UTF-16 text)\n");
 }
 

@@ -8,7 +8,7 @@ namespace
 {
 
 /// The message parseProgress gives for text, or "" when it parses.
-std::string errorOf(const std::string& text)
+std::string progressErrorOf(const std::string& text)
 {
     try
     {
@@ -95,7 +95,7 @@ class ProgressErrors : public ::testing::TestWithParam<BadProgress>
 
 TEST_P(ProgressErrors, SayWhatIsWrong)
 {
-    const std::string message = errorOf(GetParam().text);
+    const std::string message = progressErrorOf(GetParam().text);
     EXPECT_NE(message.find(GetParam().expected), std::string::npos) << message;
 }
 
@@ -135,7 +135,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(Progress, LongValuesAreShortenedInMessages)
 {
-    const std::string message = errorOf(R"({"format": 1, "unlocked": [[")" + std::string(1000, 'x') + "\"]]}");
+    const std::string message = progressErrorOf(R"({"format": 1, "unlocked": [[")" + std::string(1000, 'x') + "\"]]}");
     EXPECT_NE(message.find("expected a string"), std::string::npos) << message;
     EXPECT_LT(message.size(), 120u) << message;
 }

@@ -8,7 +8,7 @@ namespace abalike
 namespace
 {
 
-std::string errorOf(const std::string& text)
+std::string settingsErrorOf(const std::string& text)
 {
     try
     {
@@ -87,17 +87,17 @@ TEST(Settings, AFileFromTheFirstReleaseStillReads)
 
 TEST(Settings, NewKeysAreCheckedToo)
 {
-    EXPECT_NE(errorOf(R"({"format": 1, "text_scale": 3})").find("/text_scale: expected a number from 1"),
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "text_scale": 3})").find("/text_scale: expected a number from 1"),
               std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": 1, "text_scale": 0.5})").find("/text_scale"), std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": 1, "palette": "neon"})").find("/palette: expected \"standard\" or"),
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "text_scale": 0.5})").find("/text_scale"), std::string::npos);
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "palette": "neon"})").find("/palette: expected \"standard\" or"),
               std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": 1, "palette": 2})").find("/palette"), std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": 1, "mute": "yes"})").find("/mute: expected true or false"), std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": 1, "teaching_overlay": 0})").find("/teaching_overlay"), std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": 1, "preview": "half"})").find("/preview: expected \"full\", \"short\" or \"off\""),
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "palette": 2})").find("/palette"), std::string::npos);
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "mute": "yes"})").find("/mute: expected true or false"), std::string::npos);
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "teaching_overlay": 0})").find("/teaching_overlay"), std::string::npos);
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "preview": "half"})").find("/preview: expected \"full\", \"short\" or \"off\""),
               std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": 1, "wording": "college"})").find("/wording: expected \"school\" or \"university\""),
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "wording": "college"})").find("/wording: expected \"school\" or \"university\""),
               std::string::npos);
 }
 
@@ -119,23 +119,23 @@ TEST(Settings, WritesOnlyWhatItCanReadBack)
 
 TEST(Settings, ValuesOutOfRangeAreErrors)
 {
-    EXPECT_NE(errorOf(R"({"format": 1, "music_volume": 1.5})").find("/music_volume: expected a number from 0"),
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "music_volume": 1.5})").find("/music_volume: expected a number from 0"),
               std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": 1, "effects_volume": "loud"})").find("/effects_volume"), std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": 1, "fullscreen": 1})").find("/fullscreen: expected true or false, got 1"),
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "effects_volume": "loud"})").find("/effects_volume"), std::string::npos);
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "fullscreen": 1})").find("/fullscreen: expected true or false, got 1"),
               std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": 1, "window": [100, 100]})").find("/window/0: expected a whole number from 320"),
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "window": [100, 100]})").find("/window/0: expected a whole number from 320"),
               std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": 1, "window": [1280]})").find("/window: expected [WIDTH, HEIGHT]"),
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "window": [1280]})").find("/window: expected [WIDTH, HEIGHT]"),
               std::string::npos);
 }
 
 TEST(Settings, NonFiniteNumbersAreRejected)
 {
-    EXPECT_NE(errorOf(R"({"format": 1, "music_volume": NaN})").find("not valid JSON"), std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": 1, "music_volume": -Infinity})").find("not valid JSON"), std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": 1, "music_volume": 1e400})").find("number overflow"), std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": 1, "music_volume": null})").find("/music_volume"), std::string::npos);
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "music_volume": NaN})").find("not valid JSON"), std::string::npos);
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "music_volume": -Infinity})").find("not valid JSON"), std::string::npos);
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "music_volume": 1e400})").find("number overflow"), std::string::npos);
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "music_volume": null})").find("/music_volume"), std::string::npos);
 }
 
 } // namespace

@@ -11,7 +11,6 @@ namespace abalike::test
 namespace
 {
 
-const std::string kSize = " --size 1280x720";
 
 std::string readText(const std::filesystem::path& path)
 {
@@ -43,8 +42,8 @@ protected:
         const std::string path = m_dir.write("script.json", json);
         return " --script '" + path + "'";
     }
-    GameRun edit(const std::string& args) const { return runGame("edit " + args + kSize, data()); }
-    GameRun play(const std::string& args) const { return runGame("play " + args + kSize, data()); }
+    GameRun edit(const std::string& args) const { return runGame("edit " + args + kWindowSize, data()); }
+    GameRun play(const std::string& args) const { return runGame("play " + args + kWindowSize, data()); }
 
     ScratchDir m_dir;
 };

@@ -14,6 +14,9 @@
 namespace abalike::test
 {
 
+/// The window every flow runs in unless it asks for another.
+inline const std::string kWindowSize = " --size 1280x720";
+
 /// A folder of its own for one test, removed when the test ends.
 class ScratchDir
 {
@@ -68,7 +71,7 @@ struct GameRun
 };
 
 /// Runs `abalike ARGS --trace FILE` with the player's files in dataDir; the display comes from the environment
-/// (ctest starts this test binary under xvfb-run).
+/// (ctest starts this test binary under tests/window/xvfb.sh).
 inline GameRun runGame(const std::string& args, const std::filesystem::path& dataDir)
 {
     static int counter = 0;

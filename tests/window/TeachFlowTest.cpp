@@ -18,7 +18,6 @@ namespace abalike::test
 namespace
 {
 
-const std::string kSize = " --size 1280x720";
 
 class TeachFlow : public ::testing::Test
 {
@@ -29,7 +28,7 @@ protected:
     }
     std::filesystem::path data() const { return m_dir.path() / "data"; }
     std::string script(const std::string& json) const { return " --script '" + m_dir.write("script.json", json) + "'"; }
-    GameRun play(const std::string& args) const { return runGame("play " + args + kSize, data()); }
+    GameRun play(const std::string& args) const { return runGame("play " + args + kWindowSize, data()); }
 
     ScratchDir m_dir;
 };

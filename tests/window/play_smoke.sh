@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
 # Window smoke test: runs the real game under a virtual display, fires a scripted shot and checks the screenshot
 # is a real 1280x720 frame. Usage: play_smoke.sh ABALIKE OUT_DIR [play arguments...]
-# ABALIKE_SMOKE_FRAMES sets how many frames it plays (default 240); ABALIKE_XVFB_FROM the first display number
-# xvfb-run tries (default 99: tests that run side by side start from different numbers).
+# ABALIKE_SMOKE_FRAMES sets how many frames it plays (default 240). The display is xvfb.sh's, beside this script.
 set -euo pipefail
 abalike="$1"
 out="$2"
@@ -10,7 +9,7 @@ shift 2
 mkdir -p "$out"
 png="$out/frame-$$.png"
 rm -f "$png"
-xvfb-run -a -n "${ABALIKE_XVFB_FROM:-99}" -s "-screen 0 1280x720x24" "$abalike" play "$@" --frames "${ABALIKE_SMOKE_FRAMES:-240}" --screenshot "$png" --size 1280x720
+"$(dirname "$0")/xvfb.sh" 1280x720 "$abalike" play "$@" --frames "${ABALIKE_SMOKE_FRAMES:-240}" --screenshot "$png" --size 1280x720
 [[ -s "$png" ]] || { echo "no screenshot written"; exit 1; }
 # PNG signature, then IHDR width and height as big-endian 32-bit numbers at bytes 16..23.
 signature=$(od -An -tx1 -N8 "$png" | tr -d ' \n')

@@ -146,7 +146,7 @@ CauseTally tallyWinningShots(const std::vector<LevelDef>& levels)
     return tally;
 }
 
-double percentile(std::vector<double> values, double p)
+double interpolatedPercentile(std::vector<double> values, double p)
 {
     if (values.empty())
         return 0.0;
@@ -251,11 +251,11 @@ int runFeelBench(const BenchOptions& options)
        << verdict(keepShare >= kKeepSignTarget) << "**; reverses <= " << fixed(100 * kReverseTarget, 0) << " %: **"
        << verdict(reverseShare <= kReverseTarget) << "**.\n\n";
 
-    const double median = percentile(turns, 0.5);
-    const double p90 = percentile(turns, 0.9);
+    const double median = interpolatedPercentile(turns, 0.5);
+    const double p90 = interpolatedPercentile(turns, 0.9);
     const double worst = turns.empty() ? 0.0 : *std::max_element(turns.begin(), turns.end());
-    const double readyMedian = percentile(readyAfterContact, 0.5);
-    const double readyP90 = percentile(readyAfterContact, 0.9);
+    const double readyMedian = interpolatedPercentile(readyAfterContact, 0.5);
+    const double readyP90 = interpolatedPercentile(readyAfterContact, 0.9);
     const double readyMax =
         readyAfterContact.empty() ? 0.0 : *std::max_element(readyAfterContact.begin(), readyAfterContact.end());
     md << "## Pace of turns\n\nShots of the grid that did not win (" << turns.size()

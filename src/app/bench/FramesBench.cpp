@@ -81,7 +81,7 @@ double targetLoadMs(const SceneFrames& scene)
 
 volatile std::size_t g_sink = 0;
 
-double percentile(std::vector<double> values, double fraction)
+double nearestRankPercentile(std::vector<double> values, double fraction)
 {
     if (values.empty())
         return 0.0;
@@ -106,7 +106,7 @@ double previewMedianMs(const LevelDef& level, const ScriptedShot& shot, int call
         g_sink = g_sink + flight.steps; // keeps the call from being optimised away
         ms.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
     }
-    return percentile(ms, 0.5);
+    return nearestRankPercentile(ms, 0.5);
 }
 
 /// Keeps a scene's frame times; the first frame is the load (the settle step, the first glyphs and shaders),
@@ -172,7 +172,7 @@ double partMedianMs(const SceneFrames& scene, double FrameTimes::*part)
     ms.reserve(scene.frames.size());
     for (const FrameTimes& times : scene.frames)
         ms.push_back(1000.0 * (times.*part));
-    return percentile(std::move(ms), 0.5);
+    return nearestRankPercentile(std::move(ms), 0.5);
 }
 
 /// Every frame of every scene with its parts in ms, to find where a scene's slowest frames go.
@@ -303,7 +303,7 @@ int runFramesBench(const BenchOptions& options)
         std::vector<double> totalMs;
         for (const FrameTimes& times : scene.frames)
             totalMs.push_back(1000.0 * times.totalS);
-        const double p99 = percentile(totalMs, 0.99);
+        const double p99 = nearestRankPercentile(totalMs, 0.99);
         const double target = targetP99Ms(scene);
         const double loadTarget = targetLoadMs(scene);
         const auto verdict = [&missed](bool met, double limit)
@@ -315,7 +315,7 @@ int runFramesBench(const BenchOptions& options)
             {scene.name, scene.kind, std::to_string(scene.size.width) + "x" + std::to_string(scene.size.height),
              std::to_string(scene.bodies), formatSignificant(scene.loadMs), formatSignificant(scene.settledLoadMs),
              verdict(scene.settledLoadMs <= loadTarget, loadTarget), std::to_string(scene.frames.size()),
-             formatSignificant(percentile(totalMs, 0.5)), formatSignificant(p99), verdict(p99 <= target, target),
+             formatSignificant(nearestRankPercentile(totalMs, 0.5)), formatSignificant(p99), verdict(p99 <= target, target),
              formatSignificant(partMedianMs(scene, &FrameTimes::physicsS)),
              formatSignificant(partMedianMs(scene, &FrameTimes::updateS)),
              formatSignificant(partMedianMs(scene, &FrameTimes::drawS)),

@@ -5,6 +5,7 @@
 #include "shell/App.hpp"
 
 #include <abalike/edit/Snapping.hpp>
+#include <abalike/util/Angles.hpp>
 #include <cmath>
 #include <imgui.h>
 
@@ -15,7 +16,6 @@ namespace
 {
 constexpr float kZoomStep = 1.15f;
 constexpr float kHandlePx = 9.0f; ///< half the size of a resize handle
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
 
 sf::Vector2f pixelOf(const sf::Event& event)
 {
@@ -292,7 +292,8 @@ void SceneTools::moveOnScene(sf::Vector2f pixel)
             x = std::round(x / g) * g;
             y = std::round(y / g) * g;
         }
-        const std::string why = m_ctx.scene().moveVertex(m_vertexDrag->terrain, m_vertexDrag->vertex, x, y, "vertex-drag");
+        const std::string why =
+            m_ctx.scene().moveVertex(m_vertexDrag->terrain, m_vertexDrag->vertex, x, y, "vertex-drag");
         m_ctx.message = why;
         m_ctx.messageIsError = !why.empty();
     }
@@ -350,7 +351,7 @@ void SceneTools::releaseOnScene(sf::Vector2f pixel)
             m_ctx.scene().clearSelection();
         else if (!click)
             m_ctx.scene().selectInRect(from.x, from.y, world.x, world.y,
-                                   m_bandAdds ? SelectMode::Add : SelectMode::Replace);
+                                       m_bandAdds ? SelectMode::Add : SelectMode::Replace);
     }
 }
 

@@ -1,5 +1,6 @@
 #include "input/AimController.hpp"
 
+#include <abalike/util/Angles.hpp>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -9,7 +10,6 @@ namespace abalike::app
 
 namespace
 {
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 constexpr double kAngleStepDeg = 0.5;
 constexpr double kCoarseAngleStepDeg = 5.0;
 constexpr double kFineAngleStepDeg = 0.1;

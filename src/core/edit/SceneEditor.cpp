@@ -8,6 +8,7 @@
 #include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelWriter.hpp>
 #include <abalike/save/AtomicWrite.hpp>
+#include <abalike/util/Angles.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -22,7 +23,6 @@ namespace abalike
 namespace
 {
 
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 /// Half the width of the slingshot's frame and how far above the pouch it reaches, for picking it (m).
 constexpr double kSlingshotPickHalfWidthM = 0.4;
 constexpr double kSlingshotPickAboveM = 0.4;

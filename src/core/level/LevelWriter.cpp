@@ -13,7 +13,8 @@ namespace abalike
 namespace
 {
 
-using json = nlohmann::ordered_json;
+/// Keys in the order they are set: the file lists them as the format documents them.
+using OrderedJson = nlohmann::ordered_json;
 
 /// Lines longer than this are broken up, one item per line.
 constexpr std::size_t kLineWidth = 120;
@@ -28,24 +29,24 @@ std::string number(double value)
 
 std::string text(const std::string& value)
 {
-    return json(value).dump(-1, ' ', false, json::error_handler_t::replace);
+    return OrderedJson(value).dump(-1, ' ', false, OrderedJson::error_handler_t::replace);
 }
 
 /// A number whose text is already decided. It rides in the tree as a binary node, a type a level never has, so
 /// the printer can tell it from a string and write it as it is.
-json raw(std::string text)
+OrderedJson raw(std::string text)
 {
-    return json::binary_t(std::vector<std::uint8_t>(text.begin(), text.end()));
+    return OrderedJson::binary_t(std::vector<std::uint8_t>(text.begin(), text.end()));
 }
 
-json num(double value)
+OrderedJson num(double value)
 {
     return raw(number(value));
 }
 
-std::string inlineForm(const json& value);
+std::string inlineForm(const OrderedJson& value);
 
-std::string scalar(const json& value)
+std::string scalar(const OrderedJson& value)
 {
     if (value.is_binary())
     {
@@ -57,7 +58,7 @@ std::string scalar(const json& value)
     return value.dump();
 }
 
-std::string inlineForm(const json& value)
+std::string inlineForm(const OrderedJson& value)
 {
     if (value.is_object())
     {
@@ -82,7 +83,7 @@ std::string inlineForm(const json& value)
 
 /// Writes value at the given indentation: inline when it fits the line, else one item per line. expand forces the
 /// one-item-per-line form for this value (not its items).
-void print(std::string& out, const json& value, std::size_t indent, std::size_t column, bool expand)
+void print(std::string& out, const OrderedJson& value, std::size_t indent, std::size_t column, bool expand)
 {
     const bool container = value.is_object() || value.is_array();
     if (!container || value.empty())
@@ -114,10 +115,10 @@ void print(std::string& out, const json& value, std::size_t indent, std::size_t 
     out += std::string(indent, ' ') + (value.is_object() ? "}" : "]");
 }
 
-json blockJson(const BlockDef& b)
+OrderedJson blockJson(const BlockDef& b)
 {
     const BlockDef defaults;
-    json out = json::object();
+    OrderedJson out = OrderedJson::object();
     if (b.shape != BlockShape::Box)
         out["shape"] = blockShapeName(b.shape);
     out["material"] = b.material;
@@ -133,27 +134,27 @@ json blockJson(const BlockDef& b)
     return out;
 }
 
-json environmentJson(const EnvironmentDef& e)
+OrderedJson environmentJson(const EnvironmentDef& e)
 {
     const EnvironmentDef defaults;
-    json out = json::object();
+    OrderedJson out = OrderedJson::object();
     if (e.gravity != defaults.gravity)
         out["gravity"] = num(e.gravity);
     if (e.airDensity != defaults.airDensity)
         out["air_density"] = num(e.airDensity);
     if (e.windX != 0.0 || e.windY != 0.0)
-        out["wind"] = json::array({num(e.windX), num(e.windY)});
+        out["wind"] = OrderedJson::array({num(e.windX), num(e.windY)});
     if (e.gusts && e.gusts->kind == GustDef::Kind::Steps)
     {
-        json steps = json::array();
+        OrderedJson steps = OrderedJson::array();
         for (const GustDef::Step& step : e.gusts->steps)
             steps.push_back({{"t", num(step.startS)}, {"wx", num(step.windX)}, {"wy", num(step.windY)}});
         out["gusts"] = std::move(steps);
     }
     else if (e.gusts)
     {
-        json sine = json::object();
-        sine["amplitude"] = json::array({num(e.gusts->amplitudeX), num(e.gusts->amplitudeY)});
+        OrderedJson sine = OrderedJson::object();
+        sine["amplitude"] = OrderedJson::array({num(e.gusts->amplitudeX), num(e.gusts->amplitudeY)});
         sine["period_s"] = num(e.gusts->periodS);
         if (e.gusts->phaseRad != 0.0)
         {
@@ -171,12 +172,12 @@ json environmentJson(const EnvironmentDef& e)
     return out;
 }
 
-json materialsJson(const std::vector<MaterialOverrideDef>& materials)
+OrderedJson materialsJson(const std::vector<MaterialOverrideDef>& materials)
 {
-    json out = json::object();
+    OrderedJson out = OrderedJson::object();
     for (const MaterialOverrideDef& m : materials)
     {
-        json item = json::object();
+        OrderedJson item = OrderedJson::object();
         if (m.densityKgPerM3)
             item["density_kg_per_m3"] = num(*m.densityKgPerM3);
         if (m.friction)
@@ -220,7 +221,7 @@ std::string shortestNumber(double value)
 std::string writeLevelJson(const LevelDef& level, const std::string& schemaReference)
 {
     const LevelDef defaults;
-    json root = json::object();
+    OrderedJson root = OrderedJson::object();
     if (!schemaReference.empty())
         root["$schema"] = schemaReference;
     root["format"] = level.format;
@@ -236,7 +237,7 @@ std::string writeLevelJson(const LevelDef& level, const std::string& schemaRefer
         root["sandbox"] = true;
     if (level.groundY != 0.0)
         root["ground"] = {{"y", num(level.groundY)}};
-    json sling = {{"x", num(level.slingshot.x)}, {"y", num(level.slingshot.y)}};
+    OrderedJson sling = {{"x", num(level.slingshot.x)}, {"y", num(level.slingshot.y)}};
     if (level.slingshot.maxForceN != defaults.slingshot.maxForceN)
         sling["max_force_n"] = num(level.slingshot.maxForceN);
     if (level.slingshot.maxPullM != defaults.slingshot.maxPullM)
@@ -249,36 +250,36 @@ std::string writeLevelJson(const LevelDef& level, const std::string& schemaRefer
                                {"drag_coefficient", num(level.customBird->dragCoefficient)}};
     if (!level.blocks.empty())
     {
-        json blocks = json::array();
+        OrderedJson blocks = OrderedJson::array();
         for (const BlockDef& b : level.blocks)
             blocks.push_back(blockJson(b));
         root["blocks"] = std::move(blocks);
     }
-    json pigs = json::array();
+    OrderedJson pigs = OrderedJson::array();
     for (const PigDef& p : level.pigs)
         pigs.push_back({{"type", p.type}, {"x", num(p.x)}, {"y", num(p.y)}});
     root["pigs"] = std::move(pigs);
     if (!level.terrain.empty())
     {
-        json terrain = json::array();
+        OrderedJson terrain = OrderedJson::array();
         for (const TerrainDef& t : level.terrain)
         {
             if (t.isPolygon())
             {
-                json points = json::array();
+                OrderedJson points = OrderedJson::array();
                 for (const auto& [x, y] : t.points)
-                    points.push_back(json::array({num(x), num(y)}));
+                    points.push_back(OrderedJson::array({num(x), num(y)}));
                 terrain.push_back({{"points", std::move(points)}});
                 continue;
             }
-            json item = {{"x", num(t.x)}, {"y", num(t.y)}, {"w", num(t.widthM)}, {"h", num(t.heightM)}};
+            OrderedJson item = {{"x", num(t.x)}, {"y", num(t.y)}, {"w", num(t.widthM)}, {"h", num(t.heightM)}};
             if (t.angleDeg != 0.0)
                 item["angle_deg"] = num(t.angleDeg);
             terrain.push_back(std::move(item));
         }
         root["terrain"] = std::move(terrain);
     }
-    if (json environment = environmentJson(level.environment); !environment.empty())
+    if (OrderedJson environment = environmentJson(level.environment); !environment.empty())
         root["environment"] = std::move(environment);
     if (level.theme)
         root["theme"] = worldThemeName(*level.theme);
@@ -289,7 +290,7 @@ std::string writeLevelJson(const LevelDef& level, const std::string& schemaRefer
     if (level.timeLimitS)
         root["time_limit_s"] = num(*level.timeLimitS);
     if (level.referenceShot)
-        root["reference_shot"] = json::array({num(level.referenceShot->angleDeg), num(level.referenceShot->speedMps)});
+        root["reference_shot"] = OrderedJson::array({num(level.referenceShot->angleDeg), num(level.referenceShot->speedMps)});
 
     // The top level and the lists designers edit line by line are always one item per line.
     std::string out = "{\n";

@@ -3,6 +3,7 @@
 #include "world/Skin.hpp"
 #include "world/WorldBodies.hpp"
 
+#include <abalike/util/Angles.hpp>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -13,8 +14,6 @@ namespace abalike
 
 namespace
 {
-
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 /// Things further than this outside the level's own extent have left the world.
 constexpr double kWorldMarginM = 60.0;

@@ -1,5 +1,6 @@
 #include "world/ContactRecorder.hpp"
 
+#include <abalike/util/Angles.hpp>
 #include <abalike/world/RestCheck.hpp>
 #include <cmath>
 #include <iomanip>
@@ -12,7 +13,6 @@ namespace abalike
 namespace
 {
 
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 /// A contact whose normal is steeper than 30 degrees from the horizontal holds one body up on the other.
 constexpr float kSupportNormalY = 0.5f;
 
