@@ -275,10 +275,10 @@ TEST(ControlsTable, EveryPlayActionHasAKeyAndAMouseWay)
     }
 }
 
-TEST(ControlsTable, TheReadmePrintsExactlyThisTable)
+TEST(ControlsTable, ThePlayersGuidePrintsExactlyThisTable)
 {
-    std::ifstream file(std::string(ABALIKE_SOURCE_DIR) + "/README.md");
-    ASSERT_TRUE(file) << "README.md not found";
+    std::ifstream file(std::string(ABALIKE_SOURCE_DIR) + "/docs/playing.md");
+    ASSERT_TRUE(file) << "docs/playing.md not found";
     std::stringstream text;
     text << file.rdbuf();
     const std::string readme = text.str();
@@ -286,9 +286,9 @@ TEST(ControlsTable, TheReadmePrintsExactlyThisTable)
     const std::string end = "<!-- end of controls table -->";
     const std::size_t from = readme.find(begin);
     const std::size_t to = readme.find(end);
-    ASSERT_NE(from, std::string::npos) << "README.md has no controls table marker";
+    ASSERT_NE(from, std::string::npos) << "docs/playing.md has no controls table marker";
     ASSERT_NE(to, std::string::npos);
     EXPECT_EQ(readme.substr(from + begin.size(), to - from - begin.size()), controlTableMarkdown())
-        << "Paste this between the markers in README.md:\n"
+        << "Paste this between the markers in docs/playing.md:\n"
         << controlTableMarkdown();
 }
