@@ -32,15 +32,16 @@ protected:
     std::filesystem::path m_dir;
 };
 
-const std::string kTower = "<?xml version=\"1.0\" encoding=\"utf-16\"?>\r\n"
-                           "<Level>\r\n"
-                           "  <Birds><Bird type=\"BirdRed\"/><Bird type=\"BirdYellow\"/></Birds>\r\n"
-                           "  <Slingshot x=\"-8\" y=\"-2.5\">\r\n"
-                           "  <GameObjects>\r\n"
-                           "    <Block type=\"SquareSmall\" material=\"stone\" x=\"3\" y=\"-3.26\" rotation=\"0\" />\r\n"
-                           "    <Pig type=\"BasicSmall\" material=\"\" x=\"3\" y=\"-2.82\" rotation=\"0\" />\r\n"
-                           "  </GameObjects>\r\n"
-                           "</Level>\r\n";
+const std::string kTower =
+    "<?xml version=\"1.0\" encoding=\"utf-16\"?>\r\n"
+    "<Level>\r\n"
+    "  <Birds><Bird type=\"BirdRed\"/><Bird type=\"BirdYellow\"/></Birds>\r\n"
+    "  <Slingshot x=\"-8\" y=\"-2.5\">\r\n"
+    "  <GameObjects>\r\n"
+    "    <Block type=\"SquareSmall\" material=\"stone\" x=\"3\" y=\"-3.26\" rotation=\"0\" />\r\n"
+    "    <Pig type=\"BasicSmall\" material=\"\" x=\"3\" y=\"-2.82\" rotation=\"0\" />\r\n"
+    "  </GameObjects>\r\n"
+    "</Level>\r\n";
 
 TEST_F(ImportCli, WritesALevelThatChecksAndReportsEachChangeAtItsLine)
 {

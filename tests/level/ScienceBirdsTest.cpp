@@ -240,12 +240,14 @@ std::string importErrorOf(const std::string& bytes)
 TEST(ScienceBirdsImport, RefusesWhatScienceBirdsCannotLoadWithItsPlace)
 {
     const std::string head = "<Level>\n<GameObjects>\n";
-    EXPECT_EQ(importErrorOf(head + "  <Block type=\"RectHuge\" material=\"wood\" x=\"1\" y=\"-3\"/>\n</GameObjects></Level>"),
-              "3:3 <Block type=\"RectHuge\"> is not a Science Birds block (expected one of SquareHole, RectFat, "
-              "SquareSmall, SquareTiny, RectTiny, RectSmall, RectMedium, RectBig, Circle, CircleSmall, Triangle, "
-              "TriangleHole)\n");
-    EXPECT_EQ(importErrorOf(head + "<Block type=\"RectBig\" material=\"glass\" x=\"1\" y=\"-3\"/></GameObjects></Level>"),
-              "3:1 <Block material=\"glass\"> is not a Science Birds material (expected wood, ice or stone)\n");
+    EXPECT_EQ(
+        importErrorOf(head + "  <Block type=\"RectHuge\" material=\"wood\" x=\"1\" y=\"-3\"/>\n</GameObjects></Level>"),
+        "3:3 <Block type=\"RectHuge\"> is not a Science Birds block (expected one of SquareHole, RectFat, "
+        "SquareSmall, SquareTiny, RectTiny, RectSmall, RectMedium, RectBig, Circle, CircleSmall, Triangle, "
+        "TriangleHole)\n");
+    EXPECT_EQ(
+        importErrorOf(head + "<Block type=\"RectBig\" material=\"glass\" x=\"1\" y=\"-3\"/></GameObjects></Level>"),
+        "3:1 <Block material=\"glass\"> is not a Science Birds material (expected wood, ice or stone)\n");
     EXPECT_EQ(importErrorOf(head + "<Pig type=\"BasicSmall\" x=\"1,5\" y=\"-3\"/></GameObjects></Level>"),
               "3:1 <Pig> x=\"1,5\" is not a number (expected e.g. x=\"1.5\")\n");
     EXPECT_EQ(importErrorOf(head + "<Pig type=\"BasicSmall\" y=\"-3\"/></GameObjects></Level>"),
@@ -256,7 +258,8 @@ TEST(ScienceBirdsImport, RefusesWhatScienceBirdsCannotLoadWithItsPlace)
     EXPECT_EQ(importErrorOf("<Level>\n<Birds><Bird type=\"BirdGreen\"/></Birds>\n<GameObjects/></Level>"),
               "2:8 <Bird type=\"BirdGreen\"> is not a Science Birds bird (expected one of BirdBlack, BirdBlue, "
               "BirdRed, BirdWhite, BirdYellow)\n");
-    EXPECT_EQ(importErrorOf("<Level>\n<GameObjects>\n</Level>\n<Pig/>"), "3:3 not well-formed XML: Start-end tags mismatch\n");
+    EXPECT_EQ(importErrorOf("<Level>\n<GameObjects>\n</Level>\n<Pig/>"),
+              "3:3 not well-formed XML: Start-end tags mismatch\n");
     EXPECT_EQ(importErrorOf("<Levels/>"), "1:1 not a Science Birds level (expected a <Level> element)\n");
     EXPECT_EQ(importErrorOf(head + "<Platform x=\"1\" y=\"0\" scaleX=\"0\"/></GameObjects></Level>"),
               "3:1 <Platform> scaleX and scaleY must be greater than 0\n");

@@ -93,11 +93,14 @@ TEST(Settings, NewKeysAreCheckedToo)
     EXPECT_NE(settingsErrorOf(R"({"format": 1, "palette": "neon"})").find("/palette: expected \"standard\" or"),
               std::string::npos);
     EXPECT_NE(settingsErrorOf(R"({"format": 1, "palette": 2})").find("/palette"), std::string::npos);
-    EXPECT_NE(settingsErrorOf(R"({"format": 1, "mute": "yes"})").find("/mute: expected true or false"), std::string::npos);
-    EXPECT_NE(settingsErrorOf(R"({"format": 1, "teaching_overlay": 0})").find("/teaching_overlay"), std::string::npos);
-    EXPECT_NE(settingsErrorOf(R"({"format": 1, "preview": "half"})").find("/preview: expected \"full\", \"short\" or \"off\""),
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "mute": "yes"})").find("/mute: expected true or false"),
               std::string::npos);
-    EXPECT_NE(settingsErrorOf(R"({"format": 1, "wording": "college"})").find("/wording: expected \"school\" or \"university\""),
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "teaching_overlay": 0})").find("/teaching_overlay"), std::string::npos);
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "preview": "half"})")
+                  .find("/preview: expected \"full\", \"short\" or \"off\""),
+              std::string::npos);
+    EXPECT_NE(settingsErrorOf(R"({"format": 1, "wording": "college"})")
+                  .find("/wording: expected \"school\" or \"university\""),
               std::string::npos);
 }
 
@@ -124,8 +127,9 @@ TEST(Settings, ValuesOutOfRangeAreErrors)
     EXPECT_NE(settingsErrorOf(R"({"format": 1, "effects_volume": "loud"})").find("/effects_volume"), std::string::npos);
     EXPECT_NE(settingsErrorOf(R"({"format": 1, "fullscreen": 1})").find("/fullscreen: expected true or false, got 1"),
               std::string::npos);
-    EXPECT_NE(settingsErrorOf(R"({"format": 1, "window": [100, 100]})").find("/window/0: expected a whole number from 320"),
-              std::string::npos);
+    EXPECT_NE(
+        settingsErrorOf(R"({"format": 1, "window": [100, 100]})").find("/window/0: expected a whole number from 320"),
+        std::string::npos);
     EXPECT_NE(settingsErrorOf(R"({"format": 1, "window": [1280]})").find("/window: expected [WIDTH, HEIGHT]"),
               std::string::npos);
 }

@@ -11,7 +11,6 @@ namespace abalike::test
 namespace
 {
 
-
 std::string readText(const std::filesystem::path& path)
 {
     std::ifstream in(path);

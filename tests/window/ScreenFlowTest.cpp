@@ -13,7 +13,6 @@ namespace abalike::test
 namespace
 {
 
-
 class ScreenFlow : public ::testing::Test
 {
 protected:

@@ -18,7 +18,6 @@ namespace abalike::test
 namespace
 {
 
-
 class TeachFlow : public ::testing::Test
 {
 protected:

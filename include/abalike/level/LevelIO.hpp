@@ -71,7 +71,7 @@ struct CampaignEpisode
     std::string id;
     std::string title;
     std::vector<std::string> levelPaths; ///< resolved against the manifest's folder
-    std::vector<LevelIssue> levelPlaces;  ///< where each level is listed in the manifest (file, line, column, pointer)
+    std::vector<LevelIssue> levelPlaces; ///< where each level is listed in the manifest (file, line, column, pointer)
 };
 
 /// True if the file is a JSON object with "episodes" (a campaign manifest) rather than a level; false for anything

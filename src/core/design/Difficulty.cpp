@@ -1,9 +1,9 @@
 #include "design/ParallelFor.hpp"
 
 #include <abalike/design/Difficulty.hpp>
-#include <abalike/util/SplitMix64.hpp>
 #include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelFlight.hpp>
+#include <abalike/util/SplitMix64.hpp>
 
 #include <chrono>
 #include <random>

@@ -2,9 +2,9 @@
 
 #include <abalike/design/AimRange.hpp>
 #include <abalike/design/ModelPlayer.hpp>
-#include <abalike/util/SplitMix64.hpp>
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/LevelFlight.hpp>
+#include <abalike/util/SplitMix64.hpp>
 #include <abalike/world/RestCheck.hpp>
 #include <algorithm>
 #include <chrono>

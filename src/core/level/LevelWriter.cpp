@@ -290,7 +290,8 @@ std::string writeLevelJson(const LevelDef& level, const std::string& schemaRefer
     if (level.timeLimitS)
         root["time_limit_s"] = num(*level.timeLimitS);
     if (level.referenceShot)
-        root["reference_shot"] = OrderedJson::array({num(level.referenceShot->angleDeg), num(level.referenceShot->speedMps)});
+        root["reference_shot"] =
+            OrderedJson::array({num(level.referenceShot->angleDeg), num(level.referenceShot->speedMps)});
 
     // The top level and the lists designers edit line by line are always one item per line.
     std::string out = "{\n";
