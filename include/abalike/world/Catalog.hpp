@@ -80,6 +80,8 @@ class Catalog
 public:
     /// The table compiled in from assets/catalog.json.
     static const Catalog& builtin();
+    /// Its text, for a variant of it (a benchmark's rules before a change).
+    static std::string_view builtinJson();
 
     /// Parses a catalog from JSON text; throws std::runtime_error naming what is wrong, with the file's name and,
     /// for a name that matches nothing (an ability), its line and column.

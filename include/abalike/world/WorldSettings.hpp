@@ -41,6 +41,11 @@ struct WorldSettings
     /// whatever struck it keeps the rest of its momentum. false keeps Box2D's impulse as solved, as if the broken
     /// body had been unbreakable for that step (the rule before; tests and `bench feel` compare the two).
     bool breakThrough = true;
+    /// A block that breaks hands the momentum it took in its last step to the bodies it was pushing (by their
+    /// contact impulses, at the contact points) instead of taking it away as debris: momentum is conserved through a
+    /// break, and a tower hit high tips over (Damage::handOnMomentum). false deletes it with the block (the rule
+    /// before; `bench feel` compares the two).
+    bool handOnMomentum = true;
     /// Reuse settle steps (SettleCache): a world whose bodies and settings match one settled before starts from its
     /// state. Either way the settled state passes through the same restore, so results do not depend on the cache;
     /// false solves the settle step in place as Box2D leaves it (benchmarks that time it or compare with raw Box2D).

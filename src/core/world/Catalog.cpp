@@ -179,6 +179,11 @@ Catalog Catalog::fromJson(std::string_view text, const std::string& fileName)
     return catalog;
 }
 
+std::string_view Catalog::builtinJson()
+{
+    return embedded::kCatalogJson;
+}
+
 const Catalog& Catalog::builtin()
 {
     static const Catalog catalog = fromJson(embedded::kCatalogJson);

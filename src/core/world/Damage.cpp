@@ -37,15 +37,18 @@ void Damage::applyStep(int watched)
             anyBreaks = true;
         }
     }
+    std::vector<b2Vec2> givenBack(entities.size(), b2Vec2(0.0f, 0.0f));
     if (anyBreaks && m_bodies.settings().breakThrough)
-        refundBreakingContacts(keptShare, watched);
+        refundBreakingContacts(keptShare, watched, givenBack);
+    if (anyBreaks && m_bodies.settings().handOnMomentum)
+        handOnMomentum(keptShare, givenBack);
     for (const auto& [index, impulse] : totals)
         if (damageable(entities[static_cast<std::size_t>(index)]))
             damageEntity(index, impulse, causeOf(index));
     explodeCrates();
 }
 
-void Damage::refundBreakingContacts(const std::vector<double>& keptShare, int watched)
+void Damage::refundBreakingContacts(const std::vector<double>& keptShare, int watched, std::vector<b2Vec2>& givenBack)
 {
     // The solver stopped the striker as if the struck body were unbreakable. A brittle body cannot push back more
     // than its strength: give each surviving partner the rest of the impulse back along the normal, at the contact
@@ -67,10 +70,81 @@ void Damage::refundBreakingContacts(const std::vector<double>& keptShare, int wa
             const float sign = brokenIsA ? -1.0f : 1.0f;
             const b2Vec2 impulse = (sign * static_cast<float>(refund)) * hit.normal;
             body->ApplyLinearImpulse(impulse, hit.point, true);
+            givenBack[static_cast<std::size_t>(broken)] += impulse;
             if (broken == watched)
                 m_watchedRefund = {m_watchedRefund[0] + impulse.x, m_watchedRefund[1] + impulse.y};
         }
     }
+}
+
+void Damage::handOnMomentum(const std::vector<double>& keptShare, const std::vector<b2Vec2>& givenBack)
+{
+    // A block that breaks leaves as debris, which is only drawn: the momentum it took in this step must not leave
+    // the world with it. It goes on to the bodies the block was pushing (its touching contacts whose normal points
+    // along its momentum, weighted by their contact impulses), at the contact points, so a tower hit high tips over
+    // instead of losing its top block's share of the blow.
+    struct Push
+    {
+        b2Body* body = nullptr;
+        b2Vec2 point{0.0f, 0.0f};
+        float weight = 0.0f;
+    };
+    std::vector<Push> pushes;
+    for (std::size_t i = 0; i < keptShare.size(); ++i)
+    {
+        const Entity& broken = m_bodies.entities()[i];
+        if (keptShare[i] >= 1.0 || broken.kind != EntityKind::Block || broken.body == nullptr)
+            continue;
+        b2Body* body = broken.body;
+        // What the block took: Box2D's velocity after the step, less what break-through gave back to its strikers.
+        const b2Vec2 momentum = body->GetMass() * body->GetLinearVelocity() - givenBack[i];
+        if (momentum.LengthSquared() <= 0.0f)
+            continue;
+        pushes.clear();
+        float total = 0.0f;
+        for (b2ContactEdge* edge = body->GetContactList(); edge != nullptr; edge = edge->next)
+        {
+            b2Contact* contact = edge->contact;
+            b2Body* other = edge->other;
+            const int otherIndex = entityIndexOf(other);
+            if (!contact->IsTouching() || !contact->IsEnabled() || other->GetType() != b2_dynamicBody ||
+                otherIndex < 0 || keptShare[static_cast<std::size_t>(otherIndex)] < 1.0)
+                continue;
+            b2WorldManifold manifold;
+            contact->GetWorldManifold(&manifold);
+            // The manifold's normal points from fixture A to fixture B: turn it to point from the broken block.
+            const b2Vec2 normal = contact->GetFixtureA()->GetBody() == body ? manifold.normal : -manifold.normal;
+            const int points = contact->GetManifold()->pointCount;
+            float impulse = 0.0f;
+            b2Vec2 at(0.0f, 0.0f);
+            for (int p = 0; p < points; ++p)
+            {
+                impulse += contact->GetManifold()->points[p].normalImpulse;
+                at += (1.0f / static_cast<float>(points)) * manifold.points[p];
+            }
+            if (b2Dot(momentum, normal) <= 0.0f || !(impulse > 0.0f))
+                continue; // not pushed by the block, or not pressed at all
+            pushes.push_back({other, at, impulse});
+            total += impulse;
+        }
+        for (const Push& push : pushes)
+            push.body->ApplyLinearImpulse((push.weight / total) * momentum, push.point, true);
+    }
+}
+
+void Damage::releaseSlowBullets()
+{
+    std::erase_if(m_bullets,
+                  [this](int index)
+                  {
+                      b2Body* body = m_bodies.entity(index).body;
+                      if (body == nullptr)
+                          return true;
+                      if (body->GetLinearVelocity().Length() > kBulletSpeedMps)
+                          return false;
+                      body->SetBullet(false);
+                      return true;
+                  });
 }
 
 DefeatCause Damage::causeOf(int index) const
@@ -152,6 +226,13 @@ void Damage::blast(double x, double y, double radiusM, double impulseNs, std::ve
         const double uy = d > 1e-6 ? offset.y / d : 1.0;
         const b2Vec2 impulse(static_cast<float>(magnitude * ux), static_cast<float>(magnitude * uy));
         e.body->ApplyLinearImpulseToCenter(impulse, true);
+        // Flung this fast, a block or pig could pass through a thin plank within a step: Box2D sweeps it as a bullet
+        // (continuous collision against moving bodies too) until it slows down (releaseSlowBullets).
+        if (e.body->GetLinearVelocity().Length() > kBulletSpeedMps && !e.body->IsBullet())
+        {
+            e.body->SetBullet(true);
+            m_bullets.push_back(static_cast<int>(i));
+        }
         if (impulses != nullptr)
         {
             const b2Vec2 at = e.body->GetWorldCenter();

@@ -3,6 +3,7 @@
 #include <abalike/world/Ability.hpp>
 #include <abalike/world/Entity.hpp>
 #include <array>
+#include <box2d/b2_math.h>
 #include <vector>
 
 namespace abalike
@@ -31,17 +32,27 @@ public:
     void explodeCrates();
     /// TNT blasts since the last call.
     std::vector<BlastEvent> takeBlastEvents();
+    /// After a step: bodies a blast flung are swept as bullets until they are slower than kBulletSpeedMps.
+    void releaseSlowBullets();
+
+    /// Faster than this a flung block or pig crosses a 0.2 m plank's width in one 1/60 s step (12 m/s), so a blast
+    /// that sends it faster makes it a bullet.
+    static constexpr double kBulletSpeedMps = 10.0;
 
 private:
     /// Break-through: every surviving body that struck a breaking one gets back the rest of the contact impulse
     /// along the contact normal.
-    void refundBreakingContacts(const std::vector<double>& keptShare, int watched);
+    /// What each breaking body gave back is added to givenBack (per entity).
+    void refundBreakingContacts(const std::vector<double>& keptShare, int watched, std::vector<b2Vec2>& givenBack);
+    /// A breaking block's momentum goes on to the bodies it was pushing (WorldSettings::handOnMomentum).
+    void handOnMomentum(const std::vector<double>& keptShare, const std::vector<b2Vec2>& givenBack);
     DefeatCause causeOf(int index) const;
     void damageEntity(int index, double impulseNs, const DefeatCause& cause);
 
     WorldBodies& m_bodies;
     std::vector<BlastEvent> m_blasts;
     std::vector<int> m_cratesToExplode; ///< TNT crates that broke in this step, blasting after damage
+    std::vector<int> m_bullets;         ///< blocks and pigs a blast made bullets, until they slow down
     std::array<double, 2> m_watchedRefund{};
 };
 

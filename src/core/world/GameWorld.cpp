@@ -57,6 +57,7 @@ void GameWorld::step()
     m_bodies->tick();
 
     m_birds->afterStep(birdStart);
+    m_damage->releaseSlowBullets();
     m_damage->applyStep(m_impacts->pendingEntity());
     m_impacts->finishStep(m_damage->watchedRefund(), m_birds->birdIndex());
     removeOutOfBounds();
