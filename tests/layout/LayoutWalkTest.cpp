@@ -48,15 +48,21 @@ struct Setting
     bool overlay;
     unsigned width;
     unsigned height;
+    const char* mode; ///< "learn" or "game"
 };
 
 std::vector<Setting> everySetting()
 {
+    // Learn mode with the overlay on and off; game mode shows fewer panels (no feedback sentences, a power bar for the
+    // aim readout) and, with the overlay on, the same panels as learn: walked with the overlay off.
     std::vector<Setting> settings;
     for (const double scale : {1.0, 1.5, 2.0})
-        for (const bool overlay : {true, false})
-            for (const auto& [w, h] : {std::pair{1280u, 720u}, {1920u, 1080u}, {1024u, 768u}, {1280u, 400u}})
-                settings.push_back({scale, overlay, w, h});
+        for (const auto& [w, h] : {std::pair{1280u, 720u}, {1920u, 1080u}, {1024u, 768u}, {1280u, 400u}})
+        {
+            for (const bool overlay : {true, false})
+                settings.push_back({scale, overlay, w, h, "learn"});
+            settings.push_back({scale, false, w, h, "game"});
+        }
     return settings;
 }
 
@@ -81,7 +87,7 @@ std::string describe(const Setting& s)
 {
     std::ostringstream out;
     out << s.width << "x" << s.height << " text " << static_cast<int>(s.textScale * 100.0) << " % overlay "
-        << (s.overlay ? "on" : "off");
+        << (s.overlay ? "on" : "off") << " " << s.mode << " mode";
     return out.str();
 }
 
@@ -194,7 +200,8 @@ WalkedRun walk(const std::string& levelPath, const LevelDef& level, const Settin
     std::ofstream(data.path() / "settings.json") << nlohmann::json{
         {"format", 1},
         {"text_scale", setting.textScale},
-        {"teaching_overlay", setting.overlay}}.dump();
+        {"teaching_overlay", setting.overlay},
+        {"mode", setting.mode}}.dump();
     SaveStore store(data.path());
     store.load(SaveStore::Damaged::LeaveAlone);
 

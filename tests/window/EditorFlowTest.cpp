@@ -85,9 +85,9 @@ TEST_F(EditorFlow, AScriptedRunPlacesTwoBlocksAndAPigAndSaves)
 
 TEST_F(EditorFlow, TheTitleMenuOpensTheSandboxAndLevelSelectOpensTheEditor)
 {
-    // Title: Play, Level select, Tutorial, Lessons, Sandbox and editor, ...
+    // Title: Play, Level select, Learn, Sandbox and editor, ...
     const GameRun sandbox = play("--frames 20" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"},
-        {"frame": 4, "key": "Down"}, {"frame": 5, "key": "Down"}, {"frame": 6, "key": "Enter"}])"));
+        {"frame": 4, "key": "Down"}, {"frame": 6, "key": "Enter"}])"));
     ASSERT_EQ(sandbox.exitCode, 0) << sandbox.err;
     EXPECT_EQ(sandbox.finalScreens(), (std::vector<std::string>{"title", "editor"}));
     EXPECT_EQ(sandbox.values("editor", "level"), (std::vector<std::string>{"sandbox"}));

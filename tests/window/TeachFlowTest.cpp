@@ -27,27 +27,82 @@ protected:
     }
     std::filesystem::path data() const { return m_dir.path() / "data"; }
     std::string script(const std::string& json) const { return " --script '" + m_dir.write("script.json", json) + "'"; }
-    GameRun play(const std::string& args) const { return runGame("play " + args + kWindowSize, data()); }
+    /// The teaching flows check what the learn mode shows: they say so (the game mode is the default).
+    GameRun play(const std::string& args) const
+    {
+        return runGame("play " + args + kWindowSize + " --mode learn", data());
+    }
+    GameRun playGame(const std::string& args) const
+    {
+        return runGame("play " + args + kWindowSize + " --mode game", data());
+    }
 
     ScratchDir m_dir;
 };
 
-TEST_F(TeachFlow, TutorialAndLessonsOpenFromTheTitle)
+TEST_F(TeachFlow, TutorialAndLessonsOpenFromTheTitlesLearn)
 {
-    // Title: Play, Level select, Tutorial, Lessons, ...
-    const GameRun tutorial = play("--frames 12" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"},
-        {"frame": 4, "key": "Enter"}])"));
+    // Title: Play, Level select, Learn, ...; Learn: the campaign with its physics, Tutorial, Lessons, Back.
+    const GameRun tutorial = playGame("--frames 14" + script(R"([{"frame": 2, "key": "Down"},
+        {"frame": 3, "key": "Down"}, {"frame": 4, "key": "Enter"}, {"frame": 6, "key": "Down"},
+        {"frame": 7, "key": "Enter"}])"));
     ASSERT_EQ(tutorial.exitCode, 0) << tutorial.err;
     EXPECT_EQ(tutorial.values("level", "id"), (std::vector<std::string>{"tutorial"}));
-    EXPECT_EQ(tutorial.finalScreens(), (std::vector<std::string>{"title", "play"}));
+    EXPECT_EQ(tutorial.finalScreens(), (std::vector<std::string>{"title", "learn", "play"}));
 
     // Lessons, then the fourth lesson (wind).
-    const GameRun lessons = play("--frames 20" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"},
-        {"frame": 4, "key": "Down"}, {"frame": 5, "key": "Enter"}, {"frame": 8, "key": "Down"}, {"frame": 9, "key": "Down"},
-        {"frame": 10, "key": "Down"}, {"frame": 11, "key": "Enter"}])"));
+    const GameRun lessons = playGame("--frames 22" + script(R"([{"frame": 2, "key": "Down"},
+        {"frame": 3, "key": "Down"}, {"frame": 4, "key": "Enter"}, {"frame": 6, "key": "Down"},
+        {"frame": 7, "key": "Down"}, {"frame": 8, "key": "Enter"}, {"frame": 10, "key": "Down"},
+        {"frame": 11, "key": "Down"}, {"frame": 12, "key": "Down"}, {"frame": 13, "key": "Enter"}])"));
     ASSERT_EQ(lessons.exitCode, 0) << lessons.err;
-    EXPECT_EQ(lessons.values("push", "screen"), (std::vector<std::string>{"title", "lessons", "play"}));
+    EXPECT_EQ(lessons.values("push", "screen"), (std::vector<std::string>{"title", "learn", "lessons", "play"}));
     EXPECT_EQ(lessons.values("level", "id"), (std::vector<std::string>{"lesson-wind"}));
+}
+
+namespace
+{
+/// The kinds of the texts the run's last frame showed, by text.
+std::vector<std::pair<std::string, std::string>> shownKinds(const GameRun& run)
+{
+    std::vector<std::pair<std::string, std::string>> shown;
+    for (const nlohmann::json& line : run.trace)
+        if (line.value("event", "") == "texts")
+            for (std::size_t i = 0; i < line["shown"].size(); ++i)
+                shown.emplace_back(line["shown"][i].get<std::string>(), line["kinds"][i].get<std::string>());
+    return shown;
+}
+} // namespace
+
+TEST_F(TeachFlow, TheGameModeShowsNoPhysicsSentenceOrFormulaAndTheLearnModeDoes)
+{
+    // 1-1 after its reference shot, the next bird being aimed: the feedback sentences, the aim readout and the air.
+    const std::string args = sourceFile("levels/1-1-first-flight.json") + " --shot 30,18 --frames 330";
+    const GameRun game = playGame(args);
+    ASSERT_EQ(game.exitCode, 0) << game.err;
+    const GameRun learn = play(args);
+    ASSERT_EQ(learn.exitCode, 0) << learn.err;
+    int hud = 0;
+    for (const auto& [text, kind] : shownKinds(game))
+    {
+        EXPECT_NE(kind, "physics") << "game mode shows: " << text;
+        EXPECT_NE(kind, "formula") << "game mode shows: " << text;
+        EXPECT_EQ(text.find("m/s"), std::string::npos) << "game mode shows units: " << text;
+        hud += kind == "hud" ? 1 : 0;
+    }
+    EXPECT_GE(hud, 3) << "the level, the score, the birds and pigs, the aim";
+    int physics = 0;
+    int formula = 0;
+    bool feedback = false;
+    for (const auto& [text, kind] : shownKinds(learn))
+    {
+        physics += kind == "physics" ? 1 : 0;
+        formula += kind == "formula" ? 1 : 0;
+        feedback = feedback || (kind == "physics" && text.find("The bird hit") != std::string::npos);
+    }
+    EXPECT_TRUE(feedback) << "the feedback sentence on the shot's first contact";
+    EXPECT_GE(physics, 2) << "the aim's numbers and the sentences on the shot";
+    EXPECT_EQ(formula, 1) << "F = k x, E = 1/2 F x, ...";
 }
 
 TEST_F(TeachFlow, TTogglesTheTeachingOverlaySetting)
@@ -121,8 +176,8 @@ TEST_F(TeachFlow, SlowMotionStepsTheSameWorldAtAFractionOfThePace)
     // The same shot at real time and at half speed (Z): the same defeats at the same game times, each shown about
     // twice as many frames later. Slow motion shows the physics more slowly; it does not change it.
     const std::string level = sourceFile("levels/3-1-tailwind.json") + " --shot 30,30";
-    const GameRun real = play(level + " --frames 210");
-    const GameRun half = play(level + " --frames 420" + script(R"([{"frame": 1, "key": "Z"}])"));
+    const GameRun real = play(level + " --frames 290");
+    const GameRun half = play(level + " --frames 580" + script(R"([{"frame": 1, "key": "Z"}])"));
     ASSERT_EQ(real.exitCode, 0) << real.err;
     ASSERT_EQ(half.exitCode, 0) << half.err;
     const auto defeats = [](const GameRun& run)
@@ -193,12 +248,14 @@ TEST_F(TeachFlow, TheTutorialCompletesEvenWithTheOverlayHiddenAgain)
 {
     // A new player: aim, power, launch, the overlay on and off again, a tape with the right button, a second launch.
     // The measuring step used to wait for the overlay forever; and a single 0.5 degree key step must count as aiming.
-    const GameRun run = play("--frames 380" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"},
-        {"frame": 4, "key": "Enter"}, {"frame": 10, "key": "Up"}, {"frame": 12, "key": "Right"},
-        {"frame": 14, "key": "Space"}, {"frame": 20, "key": "T"}, {"frame": 30, "key": "T"},
-        {"frame": 40, "mouse": "press", "button": "right", "x": 300, "y": 500},
-        {"frame": 45, "mouse": "move", "x": 500, "y": 500},
-        {"frame": 50, "mouse": "release", "button": "right", "x": 500, "y": 500}, {"frame": 350, "key": "Space"}])"));
+    // Title: Learn, then its Tutorial.
+    const GameRun run = play("--frames 384" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"},
+        {"frame": 4, "key": "Enter"}, {"frame": 6, "key": "Down"}, {"frame": 7, "key": "Enter"},
+        {"frame": 14, "key": "Up"}, {"frame": 16, "key": "Right"},
+        {"frame": 18, "key": "Space"}, {"frame": 24, "key": "T"}, {"frame": 34, "key": "T"},
+        {"frame": 44, "mouse": "press", "button": "right", "x": 300, "y": 500},
+        {"frame": 49, "mouse": "move", "x": 500, "y": 500},
+        {"frame": 54, "mouse": "release", "button": "right", "x": 500, "y": 500}, {"frame": 354, "key": "Space"}])"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const std::string texts = shownTexts(run);
     EXPECT_NE(texts.find("Tutorial: the controls\ndone\nThat is every control."), std::string::npos) << texts;
@@ -454,7 +511,7 @@ void expectFeedbackLeavesInView(const std::filesystem::path& data, const std::st
                                 const std::string& size, int frames = 420)
 {
     const GameRun run = runGame("play " + sourceFile(level) + " --shot " + shot + " --frames " +
-                                    std::to_string(frames) + " --size " + size,
+                                    std::to_string(frames) + " --size " + size + " --mode learn",
                                 data);
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const auto [width, height, panels, keep] = lastLayout(run);
@@ -548,8 +605,9 @@ TEST_F(TeachFlow, AtLargeTextThePanelsAfterAShotNeverOverlapAndTheFeedbackShrink
     // over it, hid all three pigs: a summary that would cover a pig or the slingshot is left out, and the pigs are in
     // view. (Every level, window and text size: tests/layout.)
     std::ofstream(data() / "settings.json") << R"({"format": 1, "text_scale": 2.0, "teaching_overlay": true})";
-    const GameRun run = runGame(
-        "play " + sourceFile("levels/2-1-dominoes.json") + " --frames 300 --shot 32.5,12.75 --size 1280x720", data());
+    const GameRun run = runGame("play " + sourceFile("levels/2-1-dominoes.json") +
+                                    " --frames 300 --shot 32.5,12.75 --size 1280x720 --mode learn",
+                                data());
     ASSERT_EQ(run.exitCode, 0) << run.err;
     double width = 0.0;
     double height = 0.0;

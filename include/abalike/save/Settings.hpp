@@ -43,13 +43,29 @@ const char* wordingName(Wording wording);
 /// The wording of that name; nullopt for any other text.
 std::optional<Wording> parseWording(std::string_view name);
 
+/// What a level shows. Game: the genre's play (a short arc of preview dots, a power bar, no physics sentences or
+/// formulas). Learn: the teaching game (the full preview, the numbers with units, a sentence of physics after every
+/// shot). The teaching overlay (T) opens in either; the tutorial and the lessons always run in Learn.
+enum class PlayMode
+{
+    Game,
+    Learn,
+};
+
+/// "game" or "learn", as in settings.json and --mode.
+const char* playModeName(PlayMode mode);
+/// The mode of that name; nullopt for any other text.
+std::optional<PlayMode> parsePlayMode(std::string_view name);
+
 /// The player's preferences. Every field has a default, and a settings file may leave any of them out.
 struct Settings
 {
     double musicVolume = 0.7;                ///< 0 to 1
     double effectsVolume = 1.0;              ///< 0 to 1
-    PreviewMode preview = PreviewMode::Full; ///< the RK4 preview while aiming ("preview"; older files' show_preview)
-    bool showActualPath = true;              ///< trace the path the bird really flew
+    PlayMode mode = PlayMode::Game;          ///< what a level shows ("mode"; --mode wins for a run)
+    PreviewMode preview = PreviewMode::Full; ///< Learn's preview while aiming ("preview"; older files' show_preview)
+    PreviewMode gamePreview = PreviewMode::Short; ///< Game's preview while aiming ("game_preview")
+    bool showActualPath = true;                   ///< trace the path the bird really flew
     bool fullscreen = false;
     unsigned windowWidth = 1280; ///< 320 to 7680 pixels
     unsigned windowHeight = 720; ///< 240 to 4320 pixels
@@ -61,6 +77,10 @@ struct Settings
     bool teachingOverlay = false; ///< force arrows, energy bars and the other teaching aids on the play screen
     bool openAllLevels = false;   ///< every campaign level playable (a class); progress and stars are still kept
     Wording wording = Wording::School;
+
+    /// The preview each mode keeps: a saved "preview" from an earlier version stays with Learn.
+    PreviewMode previewFor(PlayMode playMode) const { return playMode == PlayMode::Game ? gamePreview : preview; }
+    PreviewMode& previewFor(PlayMode playMode) { return playMode == PlayMode::Game ? gamePreview : preview; }
 
     bool operator==(const Settings&) const = default;
 };

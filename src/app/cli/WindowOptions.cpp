@@ -31,6 +31,10 @@ void addWindowOptions(CLI::App& command, WindowArgs& args)
     command.add_option("--trace", args.trace, "write what happens (screens, levels, shots, results) as JSON lines");
     command.add_option("--size", args.size, "window size WIDTHxHEIGHT (default: the saved size, 1280x720 at first)");
     addWordingOption(command, args.wording);
+    command.add_option("--mode", args.mode,
+                       "game (the genre's play: a short preview, a power bar, no physics sentences) or learn (the full "
+                       "preview, numbers with units, a sentence of physics after every shot); default: the saved "
+                       "setting, game at first");
 }
 
 void applyWindowOptions(const WindowArgs& args, AppOptions& options)
@@ -58,6 +62,12 @@ void applyWindowOptions(const WindowArgs& args, AppOptions& options)
         options.height = height;
     }
     options.wording = parseWordingOption(args.wording);
+    if (!args.mode.empty())
+    {
+        options.mode = parsePlayMode(args.mode);
+        if (!options.mode)
+            throw UsageError("--mode: expected game or learn, got \"" + args.mode + "\"");
+    }
 }
 
 void loadWindowScript(const WindowArgs& args, const SaveStore& store, AppOptions& options)

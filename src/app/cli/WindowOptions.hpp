@@ -22,9 +22,10 @@ struct WindowArgs
     std::string trace;
     std::string size;
     std::string wording;
+    std::string mode;
 };
 
-/// Registers --frames, --screenshot, --script, --trace, --size and --wording on a subcommand.
+/// Registers --frames, --screenshot, --script, --trace, --size, --wording and --mode on a subcommand.
 void addWindowOptions(CLI::App& command, WindowArgs& args);
 
 /// Checks --frames, --screenshot, --trace, --size and --wording and fills them into options. Throws UsageError.

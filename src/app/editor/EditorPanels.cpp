@@ -115,12 +115,13 @@ void EditorPanels::menuBar()
         const bool several = m_ctx.scene().selection().size() >= 2;
         if (ImGui::BeginMenu("Align", several))
         {
-            static constexpr std::pair<const char*, Align> kAligns[] = {{"Left edges", Align::Left},
-                                                                        {"Centres (vertical line)", Align::CentreX},
-                                                                        {"Right edges", Align::Right},
-                                                                        {"Bottoms", Align::Bottom},
-                                                                        {"Centres (horizontal line)", Align::CentreY},
-                                                                        {"Tops", Align::Top}};
+            static constexpr std::pair<const char*, abalike::Align> kAligns[] = {
+                {"Left edges", abalike::Align::Left},
+                {"Centres (vertical line)", abalike::Align::CentreX},
+                {"Right edges", abalike::Align::Right},
+                {"Bottoms", abalike::Align::Bottom},
+                {"Centres (horizontal line)", abalike::Align::CentreY},
+                {"Tops", abalike::Align::Top}};
             for (const auto& [label, align] : kAligns)
                 if (ImGui::MenuItem(label))
                     m_ctx.scene().alignSelection(align);

@@ -17,6 +17,11 @@ ScenePlay::ScenePlay(App& app, const LevelDef& level, const Camera& camera)
 
 ScenePlay::~ScenePlay() = default;
 
+PlayMode ScenePlay::playMode() const
+{
+    return m_app.mode();
+}
+
 void ScenePlay::restart()
 {
     m_session = std::make_unique<GameSession>(m_level, Catalog::builtin());

@@ -35,6 +35,12 @@ void AimController::reset()
     m_dragMoved = false;
 }
 
+void AimController::rest()
+{
+    reset();
+    m_power = 0.0;
+}
+
 void AimController::set(double angleDeg, double powerFraction)
 {
     m_angleDeg = angleDeg;
@@ -62,6 +68,12 @@ bool AimController::grabs(sf::Vector2f pixel, const Camera& camera, sf::Vector2f
     const float pullPx = static_cast<float>(m_power) * fullPullPx(camera.windowSize());
     const sf::Vector2f handPx = pouchPx - pullPx * sf::Vector2f(static_cast<float>(std::cos(m_angleDeg * kDegToRad)),
                                                                 -static_cast<float>(std::sin(m_angleDeg * kDegToRad)));
+    if (m_birdCentre)
+    {
+        const float birdReach = std::max(kBirdGrabMinPx, 1.5f * m_birdRadiusM * camera.pixelsPerMetre());
+        if (distance(pixel, camera.toScreen(*m_birdCentre)) <= birdReach)
+            return true;
+    }
     return distance(world, pouch) <= grab || distance(world, pouch + pullOffset()) <= grab ||
            distance(pixel, handPx) <= kGrabRadiusPx;
 }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+
 #include "render/Camera.hpp"
 
 #include <SFML/Window/Event.hpp>
@@ -23,6 +25,8 @@ public:
 
     /// Back to 45 degrees at 50% power, not dragging.
     void reset();
+    /// The bird at rest in the pouch (no pull) at the default angle: the genre's start for each new bird.
+    void rest();
     /// Sets the aim directly (scripted shots); power is clamped to 0..1.
     void set(double angleDeg, double powerFraction);
 
@@ -37,6 +41,14 @@ public:
 
     /// Whether a left press at this window pixel takes hold of the bird (near the pouch or the bird).
     bool grabs(sf::Vector2f pixel, const Camera& camera, sf::Vector2f pouch) const;
+    /// Where the bird is drawn and how big it is (world metres): a press within 1.5 bird radii of it, and never less
+    /// than kBirdGrabMinPx, takes hold of it too, wherever the pull left it.
+    void setBird(std::optional<sf::Vector2f> centre, float radiusM)
+    {
+        m_birdCentre = centre;
+        m_birdRadiusM = radiusM;
+    }
+    static constexpr float kBirdGrabMinPx = 24.0f;
 
     double angleDeg() const { return m_angleDeg; }
     double powerFraction() const { return m_power; }
@@ -48,6 +60,8 @@ public:
     static double stepOnGrid(double value, double step, int direction);
 
 private:
+    std::optional<sf::Vector2f> m_birdCentre;
+    float m_birdRadiusM = 0.0f;
     enum class Step
     {
         Normal,

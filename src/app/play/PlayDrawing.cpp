@@ -63,7 +63,7 @@ void drawWorldPicture(sf::RenderTarget& target, PlayView& view, WorldRenderer& w
     if (lastShot != nullptr)
         overlay.drawShotMarkers(target, camera, *lastShot, opacity);
     // The preview setting: the whole path, its first half second (30 steps of 1/60 s), or none.
-    const PreviewMode previewMode = view.app().settings().preview;
+    const PreviewMode previewMode = view.app().settings().previewFor(view.playMode());
     if (const PredictedFlight* preview = view.preview(); preview != nullptr && previewMode != PreviewMode::Off)
         overlay.drawPreview(target, camera, *preview, previewMode == PreviewMode::Short ? 30 : 0);
 }
@@ -99,14 +99,15 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
     }
 
     target.setView(still);
-    hud.draw(target, target.getSize(), session, view.aim(), static_cast<float>(view.app().settings().textScale),
+    hud.draw(target, target.getSize(), session, view.aim(), view.playMode(),
+             static_cast<float>(view.app().settings().textScale),
              PlayToolbar::reservedWidthPx(view.app(), target.getSize()));
     for (const auto& layer : layers)
         layer->drawScreen(target, view);
     // Last, so that it can keep clear of every panel.
     if (lastShot != nullptr)
         overlay.drawShotLabel(target, camera, *lastShot, opacity, structureScreenBoxes(session, camera),
-                              static_cast<float>(view.app().settings().textScale));
+                              static_cast<float>(view.app().settings().textScale), view.playMode() == PlayMode::Game);
     if (std::vector<ScreenRegion>* keep = keepVisibleSink())
         *keep = keepVisibleBoxes(session, camera);
 }

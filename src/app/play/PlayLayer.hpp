@@ -29,6 +29,8 @@ public:
     virtual ~PlayView() = default;
 
     virtual App& app() = 0;
+    /// Game or learn: what this level shows (the tutorial and the lessons are always learn).
+    virtual PlayMode playMode() const = 0;
     virtual const GameSession& session() const = 0;
     virtual const Camera& camera() const = 0;
     /// The RK4 preview of the current aim while aiming, else null.

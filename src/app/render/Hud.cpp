@@ -37,20 +37,29 @@ float hudScale(sf::Vector2u size)
 }
 
 void Hud::draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session,
-               const std::optional<AimReadout>& aim, float textScale, float reservedRightPx) const
+               const std::optional<AimReadout>& aim, PlayMode mode, float textScale, float reservedRightPx) const
 {
     if (m_font == nullptr)
         return;
     const float scale = hudScale(size) * textScale;
-    const sf::FloatRect status = drawStatus(target, size, scale, session);
+    sf::FloatRect status;
+    {
+        const TextKindScope kind(TextKind::Hud);
+        status = drawStatus(target, size, scale, session);
+    }
     const float environmentBottom =
-        drawEnvironment(target, status.top + status.height + 6.0f * scale, scale, session.level());
+        drawEnvironment(target, status.top + status.height + 6.0f * scale, scale, session.level(), mode);
     const float left = status.left + status.width + 8.0f * scale;
     const float right = static_cast<float>(size.x) - reservedRightPx - 8.0f * scale;
-    if (aim)
+    if (aim && mode == PlayMode::Game)
+        drawPowerBar(target, size, scale, *aim, left, right, environmentBottom + 6.0f * scale);
+    else if (aim)
         drawAim(target, size, scale, *aim, left, right, environmentBottom + 6.0f * scale);
     else if (session.canActivateAbility())
+    {
+        const TextKindScope kind(TextKind::Hud);
         drawAbilityPrompt(target, size, scale, session, left, right, environmentBottom + 6.0f * scale);
+    }
     if (!session.finished())
         drawHint(target, size, scale, session.level());
 }
@@ -110,17 +119,34 @@ sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float
     return rect;
 }
 
-float Hud::drawEnvironment(sf::RenderTarget& target, float top, float scale, const LevelDef& level) const
+float Hud::drawEnvironment(sf::RenderTarget& target, float top, float scale, const LevelDef& level, PlayMode mode) const
 {
     const EnvironmentDef& air = level.environment;
-    std::string text = "g " + formatFixed(air.gravity, 2) + " m/s\u00B2   ";
-    if (air.airDensity <= 0.0)
+    const bool windy = air.gusts || air.windX != 0.0 || air.windY != 0.0;
+    if (mode == PlayMode::Game && !windy)
+        return top - 6.0f * scale; // the genre shows the air only when the wind blows
+    // Game mode: the wind's way and strength as arrows (one to three); learn mode: gravity and the air in SI units.
+    const TextKindScope kind(mode == PlayMode::Game ? TextKind::Hud : TextKind::Physics);
+    std::string text;
+    if (mode == PlayMode::Game)
+    {
+        const double windSpeed = std::hypot(air.windX, air.windY);
+        const int arrows = windSpeed <= 0.0 ? 0 : windSpeed < 4.0 ? 1 : windSpeed < 8.0 ? 2 : 3;
+        text = air.gusts ? "Gusty wind " : "Wind ";
+        for (int i = 0; i < std::max(arrows, 1); ++i)
+            text += air.windX >= 0.0 ? "\u2192" : "\u2190";
+    }
+    else
+        text = "g " + formatFixed(air.gravity, 2) + " m/s\u00B2   ";
+    if (mode == PlayMode::Game)
+        ; // the arrows say it all
+    else if (air.airDensity <= 0.0)
         text += "vacuum (no drag)";
     else
         text += "air " + formatFixed(air.airDensity, 2) + " kg/m\u00B3";
-    if (air.gusts)
+    if (mode == PlayMode::Learn && air.gusts)
         text += "   gusty";
-    if (air.windX != 0.0 || air.windY != 0.0)
+    if (mode == PlayMode::Learn && (air.windX != 0.0 || air.windY != 0.0))
     {
         const double windSpeed = std::hypot(air.windX, air.windY);
         text += "   wind " + formatFixed(windSpeed, 1) + " m/s " + (air.windX >= 0.0 ? "\u2192" : "\u2190");
@@ -152,8 +178,46 @@ void Hud::drawAim(sf::RenderTarget& target, sf::Vector2u size, float scale, cons
     const float top = slot ? 12.0f * scale : below;
     const float centre = x + 0.5f * width;
     panel(target, {x, top, width, mainHeight + m_font->getLineSpacing(lessonSize) + 2.0f * pad}, "aim readout");
-    drawLabel(target, *m_font, main, {centre, top + pad}, mainSize, palette::kText, Align::Centre);
+    {
+        const TextKindScope kind(TextKind::Physics);
+        drawLabel(target, *m_font, main, {centre, top + pad}, mainSize, palette::kText, Align::Centre);
+    }
+    const TextKindScope kind(TextKind::Formula);
     drawLabel(target, *m_font, lesson, {centre, top + pad + mainHeight}, lessonSize, palette::kTextDim, Align::Centre);
+}
+
+void Hud::drawPowerBar(sf::RenderTarget& target, sf::Vector2u size, float scale, const AimReadout& aim, float left,
+                       float right, float below) const
+{
+    const TextKindScope kind(TextKind::Hud);
+    const unsigned textSize = scaled(scale, 21.0f);
+    const sf::String angle = utf8(formatFixed(aim.angleDeg, 0) + "\u00B0");
+    const float pad = 10.0f * scale;
+    const float barWidth = 160.0f * scale;
+    const float barHeight = 14.0f * scale;
+    const float angleWidth = measureText(*m_font, utf8("-88\u00B0"), textSize).x;
+    const float width = angleWidth + barWidth + 3.0f * pad;
+    const float lineHeight = m_font->getLineSpacing(textSize);
+    const std::optional<float> slot = topSlot(width, size, left, right);
+    const float x = slot ? *slot : 12.0f * scale;
+    const float top = slot ? 12.0f * scale : below;
+    panel(target, {x, top, width, lineHeight + 2.0f * pad}, "aim readout");
+    drawLabel(target, *m_font, angle, {x + pad + angleWidth, top + pad}, textSize, palette::kText, Align::Right);
+    // The bar: the pull's share of a full pull, filled from the left, warmer as it fills.
+    const float fraction =
+        aim.maxPullM > 0.0 ? static_cast<float>(std::clamp(aim.pull.pullM / aim.maxPullM, 0.0, 1.0)) : 0.0f;
+    const sf::Vector2f barAt(x + 2.0f * pad + angleWidth, top + pad + 0.5f * (lineHeight - barHeight));
+    sf::RectangleShape frame({barWidth, barHeight});
+    frame.setPosition(barAt);
+    frame.setFillColor(sf::Color(0, 0, 0, 90));
+    frame.setOutlineColor(palette::kTextDim);
+    frame.setOutlineThickness(1.0f * scale);
+    target.draw(frame);
+    sf::RectangleShape fill({barWidth * fraction, barHeight});
+    fill.setPosition(barAt);
+    fill.setFillColor(
+        sf::Color(static_cast<sf::Uint8>(120 + 135 * fraction), static_cast<sf::Uint8>(200 - 120 * fraction), 60));
+    target.draw(fill);
 }
 
 void Hud::drawAbilityPrompt(sf::RenderTarget& target, sf::Vector2u size, float scale, const GameSession& session,
@@ -177,15 +241,15 @@ std::vector<Hud::BottomText> Hud::bottomText(sf::Vector2u size, float scale, con
 {
     const float maxWidth = static_cast<float>(size.x) - 24.0f * scale;
     std::vector<BottomText> texts;
-    const auto add = [&](const std::string& text, unsigned textSize, sf::Color colour, const char* name)
+    const auto add = [&](const std::string& text, unsigned textSize, sf::Color colour, const char* name, TextKind kind)
     {
-        texts.push_back({wrapText(*m_font, text, textSize, maxWidth), textSize, colour, name});
+        texts.push_back({wrapText(*m_font, text, textSize, maxWidth), textSize, colour, name, kind});
     };
     add("Mouse: drag the bird back   \u00B7   Keys: \u2191\u2193 angle, \u2190\u2192 power, Space launch   \u00B7   "
         "R restart   \u00B7   Esc pause   \u00B7   F1 help",
-        scaled(scale, 14.0f), palette::kTextDim, "keys");
+        scaled(scale, 14.0f), palette::kTextDim, "keys", TextKind::Interface);
     if (!level.hints.empty())
-        add(filledHint(level), scaled(scale, 18.0f), palette::kText, "hint");
+        add(filledHint(level), scaled(scale, 18.0f), palette::kText, "hint", TextKind::Hint);
     return texts;
 }
 
@@ -207,6 +271,7 @@ void Hud::drawHint(sf::RenderTarget& target, sf::Vector2u size, float scale, con
     // Bottom up: the keys, then the level's hint, each wrapped to the window at large text sizes.
     for (const BottomText& text : bottomText(size, scale, level))
     {
+        const TextKindScope kind(text.kind);
         const float lineHeight = m_font->getLineSpacing(text.textSize);
         bottom -= lineHeight * static_cast<float>(text.lines.size());
         float y = bottom;

@@ -1,10 +1,12 @@
 #pragma once
 
 #include "render/AimReadout.hpp"
+#include "render/Label.hpp"
 #include <SFML/Graphics/Font.hpp>
 
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <abalike/game/GameSession.hpp>
+#include <abalike/save/Settings.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,8 +23,11 @@ public:
 
     /// textScale: the player's text size (1 to 2). reservedRightPx: the top right corner's width taken by the
     /// toolbar; the aim readout stays clear of it and of the status panel, moving under them when the top is full.
+    /// Game mode shows the aim as the genre does (a power bar and the angle) and the air only when the wind blows;
+    /// learn mode the band's numbers with units, how they follow from each other, and gravity and the air.
     void draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session,
-              const std::optional<AimReadout>& aim, float textScale = 1.0f, float reservedRightPx = 0.0f) const;
+              const std::optional<AimReadout>& aim, PlayMode mode, float textScale = 1.0f,
+              float reservedRightPx = 0.0f) const;
 
     /// How far up from the window's bottom the keys line and the level's hint reach (pixels), as draw lays them out
     /// at this text size: the camera keeps the ground line above them, so that at large text they cover no slingshot.
@@ -36,17 +41,21 @@ private:
         unsigned textSize;
         sf::Color colour;
         const char* name;
+        TextKind kind;
     };
     /// The keys line, then the level's hint: drawn bottom up in that order.
     std::vector<BottomText> bottomText(sf::Vector2u size, float scale, const LevelDef& level) const;
     /// Returns the panel it drew.
     sf::FloatRect drawStatus(sf::RenderTarget& target, sf::Vector2u size, float scale,
                              const GameSession& session) const;
-    /// Returns the bottom edge of the panel it drew.
-    float drawEnvironment(sf::RenderTarget& target, float top, float scale, const LevelDef& level) const;
+    /// Returns the bottom edge of the panel it drew (top when it drew none).
+    float drawEnvironment(sf::RenderTarget& target, float top, float scale, const LevelDef& level, PlayMode mode) const;
     /// Centred at the top between `left` and `right` if it fits there, else at the left from `below`.
     void drawAim(sf::RenderTarget& target, sf::Vector2u size, float scale, const AimReadout& aim, float left,
                  float right, float below) const;
+    /// The genre's aim: a power bar filled to the pull and the angle, no units.
+    void drawPowerBar(sf::RenderTarget& target, sf::Vector2u size, float scale, const AimReadout& aim, float left,
+                      float right, float below) const;
     void drawAbilityPrompt(sf::RenderTarget& target, sf::Vector2u size, float scale, const GameSession& session,
                            float left, float right, float below) const;
     void drawHint(sf::RenderTarget& target, sf::Vector2u size, float scale, const LevelDef& level) const;

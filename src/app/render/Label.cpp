@@ -141,10 +141,39 @@ std::string fitToWidth(const sf::Font& font, std::string_view text, unsigned siz
 
 namespace
 {
-std::vector<std::string>* g_drawnTextSink = nullptr;
+std::vector<DrawnText>* g_drawnTextSink = nullptr;
+TextKind g_textKind = TextKind::Interface;
 } // namespace
 
-void setDrawnTextSink(std::vector<std::string>* sink)
+const char* textKindName(TextKind kind)
+{
+    switch (kind)
+    {
+    case TextKind::Interface:
+        return "interface";
+    case TextKind::Hud:
+        return "hud";
+    case TextKind::Hint:
+        return "hint";
+    case TextKind::Physics:
+        return "physics";
+    case TextKind::Formula:
+        return "formula";
+    }
+    return "interface";
+}
+
+TextKindScope::TextKindScope(TextKind kind) : m_previous(g_textKind)
+{
+    g_textKind = kind;
+}
+
+TextKindScope::~TextKindScope()
+{
+    g_textKind = m_previous;
+}
+
+void setDrawnTextSink(std::vector<DrawnText>* sink)
 {
     g_drawnTextSink = sink;
 }
@@ -155,7 +184,7 @@ sf::FloatRect drawLabel(sf::RenderTarget& target, const sf::Font& font, const sf
     if (g_drawnTextSink != nullptr)
     {
         const std::basic_string<sf::Uint8> utf8Text = text.toUtf8();
-        g_drawnTextSink->emplace_back(utf8Text.begin(), utf8Text.end());
+        g_drawnTextSink->push_back({std::string(utf8Text.begin(), utf8Text.end()), g_textKind});
     }
     // One layout pass: the glyphs and their pens, and the width the alignment needs.
     struct PlacedGlyph

@@ -39,10 +39,45 @@ enum class Cut
 /// that fits, empty (AtWord: not even the first word) or the ellipsis alone (AtCharacter).
 std::string fitToWidth(const sf::Font& font, std::string_view text, unsigned size, float maxWidth, Cut cut);
 
+/// What a text is for. The trace records each text of a frame with its kind, so a test can check that the game mode
+/// shows no physics sentence or formula while the learn mode does.
+enum class TextKind
+{
+    Interface, ///< menus, buttons, notices
+    Hud,       ///< level, score, birds, pigs, the aim
+    Hint,      ///< the level's hint, a lesson's step
+    Physics,   ///< a sentence or panel of physics with its numbers
+    Formula,   ///< a formula (F = k x, E = 1/2 F x, ...)
+};
+
+/// The kind's name in the trace ("interface", "hud", "hint", "physics", "formula").
+const char* textKindName(TextKind kind);
+
+/// Marks every text drawn while it lives as one kind; scopes nest, the innermost wins.
+class TextKindScope
+{
+public:
+    explicit TextKindScope(TextKind kind);
+    ~TextKindScope();
+    TextKindScope(const TextKindScope&) = delete;
+    TextKindScope& operator=(const TextKindScope&) = delete;
+
+private:
+    TextKind m_previous;
+};
+
+/// A text as one frame drew it.
+struct DrawnText
+{
+    std::string text;
+    TextKind kind = TextKind::Interface;
+};
+
+/// While set, every text drawLabel draws is also appended here (the trace's record of what one frame shows).
+void setDrawnTextSink(std::vector<DrawnText>* sink);
+
 /// Draws one line of text with a soft shadow; `position` is the top of the line at the aligned point.
 /// Returns the bounds it covers.
-/// While set, every text drawLabel draws is also appended here (the trace's record of what one frame shows).
-void setDrawnTextSink(std::vector<std::string>* sink);
 
 sf::FloatRect drawLabel(sf::RenderTarget& target, const sf::Font& font, const sf::String& text, sf::Vector2f position,
                         unsigned size, sf::Color colour, Align align = Align::Left);

@@ -197,18 +197,21 @@ void OverlayRenderer::drawShotMarkers(sf::RenderTarget& target, const Camera& ca
 }
 
 void OverlayRenderer::drawShotLabel(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot,
-                                    float opacity, std::span<const sf::FloatRect> structure, float textScale)
+                                    float opacity, std::span<const sf::FloatRect> structure, float textScale, bool chip)
 {
     if (m_font == nullptr || !shot.actualContact || !(shot.deviationM || shot.launchedIntoMovingWorld))
         return;
+    if (chip && !shot.deviationM)
+        return; // no deviation to show
     const sf::Vector2f actualAt =
         camera.toScreen({static_cast<float>(shot.actualContact->x), static_cast<float>(shot.actualContact->y)});
     // Next to the contact, in free sky: off the structure if there is room, inside the window.
     const float scale = hudScale(camera.windowSize());
-    const auto size = static_cast<unsigned>(std::max(9.0f, std::round(16.0f * scale * textScale)));
+    const auto size = static_cast<unsigned>(std::max(9.0f, std::round((chip ? 13.0f : 16.0f) * scale * textScale)));
     // Into a moving world the preview aimed at where the blocks were at launch: no deviation is claimed.
-    const sf::String text = utf8(shot.deviationM ? "predicted vs actual: " + formatDistance(*shot.deviationM)
-                                                 : std::string("launched while blocks moved: no deviation scored"));
+    const sf::String text = utf8(chip              ? formatDistance(*shot.deviationM)
+                                 : shot.deviationM ? "predicted vs actual: " + formatDistance(*shot.deviationM)
+                                                   : std::string("launched while blocks moved: no deviation scored"));
     const sf::Vector2f extent = measureText(*m_font, text, size);
     const float pad = 0.4f * static_cast<float>(size);
     // Clear of every panel drawn this frame and, where there is room, of the structure; with no spot clear of the
@@ -238,6 +241,7 @@ void OverlayRenderer::drawShotLabel(sf::RenderTarget& target, const Camera& came
     box.setOutlineColor(faded(palette::kActualPath, opacity));
     box.setOutlineThickness(1.5f);
     target.draw(box);
+    const TextKindScope kind(chip ? TextKind::Hud : TextKind::Physics);
     drawLabel(target, *m_font, text, at + sf::Vector2f(pad, pad), size, faded(palette::kText, opacity));
 }
 

@@ -106,9 +106,7 @@ void WorldRenderer::drawForeground(sf::RenderTarget& target, const Camera& camer
     if (loaded != nullptr)
     {
         pose.birdRadius = static_cast<float>(loaded->radiusM);
-        sf::Vector2f seat = pose.pouch + pullOffset;
-        seat.y = std::max(seat.y, standY + pose.birdRadius);
-        pose.loadedBird = seat;
+        pose.loadedBird = loadedBirdAt(session, pullOffset);
     }
     addWaitingBirds(session, pixelM);
     SlingshotPainter::paintBack(m_mesh, pose, pixelM);
@@ -141,6 +139,18 @@ void WorldRenderer::drawForeground(sf::RenderTarget& target, const Camera& camer
         }
     }
     m_mesh.draw(target, camera.transform());
+}
+
+std::optional<sf::Vector2f> WorldRenderer::loadedBirdAt(const GameSession& session, sf::Vector2f pullOffset)
+{
+    const BirdType* loaded = session.phase() == Phase::Aiming ? session.currentBird() : nullptr;
+    if (loaded == nullptr)
+        return std::nullopt;
+    const std::array<double, 2> pouch = session.launchPoint();
+    const auto standY = static_cast<float>(standingY(session.world(), session.level().slingshot.x, pouch[1]));
+    sf::Vector2f seat = sf::Vector2f(static_cast<float>(pouch[0]), static_cast<float>(pouch[1])) + pullOffset;
+    seat.y = std::max(seat.y, standY + static_cast<float>(loaded->radiusM));
+    return seat;
 }
 
 void WorldRenderer::addTerrain(const Entity& entity, float pixelM)

@@ -7,6 +7,7 @@
 
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <abalike/game/GameSession.hpp>
+#include <optional>
 #include <vector>
 
 namespace abalike::app
@@ -17,6 +18,9 @@ namespace abalike::app
 class WorldRenderer
 {
 public:
+    /// Where the bird in the slingshot is drawn for this pull (world metres): in the pouch moved by the pull, never
+    /// below what the slingshot stands on. None while no bird is aimed.
+    std::optional<sf::Vector2f> loadedBirdAt(const GameSession& session, sf::Vector2f pullOffset);
     /// The scenery: sky, ground and terrain. Shot paths go between this and the foreground.
     void drawBackground(sf::RenderTarget& target, const Camera& camera, const GameSession& session);
     /// Everything that moves or can be hit: slingshot and birds, blocks, pigs. pullOffset is where the loaded

@@ -2,13 +2,14 @@
 
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
+#include "screens/MenuBackdrop.hpp"
 #include "screens/PlayScreen.hpp"
 #include "shell/App.hpp"
 #include "teach/Guide.hpp"
 #include "ui/Card.hpp"
 
-#include <SFML/Graphics/RectangleShape.hpp>
 #include <abalike/level/LevelIO.hpp>
+#include <abalike/teach/TextValues.hpp>
 #include <filesystem>
 
 namespace abalike::app
@@ -26,7 +27,8 @@ void playTutorial(App& app)
     LevelDef level = app.campaign().levels.front().level;
     level.id = "tutorial";
     level.title = "Tutorial";
-    app.screens().push(std::make_unique<PlayScreen>(app, PlaySource{std::move(level), "", std::nullopt}));
+    app.screens().push(
+        std::make_unique<PlayScreen>(app, PlaySource{std::move(level), "", std::nullopt, PlayMode::Learn}));
 }
 
 LessonSelectScreen::LessonSelectScreen(App& app) : m_app(app)
@@ -72,29 +74,18 @@ void LessonSelectScreen::open(const std::string& id)
     }
     for (std::size_t i = 0; i < lessonList().size(); ++i)
         if (lessonList()[i].id == id && m_levels[i])
-            m_app.screens().push(
-                std::make_unique<PlayScreen>(m_app, PlaySource{*m_levels[i], m_paths[i], std::nullopt}));
+            m_app.screens().push(std::make_unique<PlayScreen>(
+                m_app, PlaySource{*m_levels[i], m_paths[i], std::nullopt, PlayMode::Learn}));
 }
 
 void LessonSelectScreen::draw(sf::RenderTarget& target)
 {
-    sf::RectangleShape back(sf::Vector2f(target.getSize()));
-    back.setFillColor(palette::kMenuTop);
-    target.draw(back);
+    const float y =
+        drawMenuBackdrop(target, m_app, "Lessons", "One idea each, learnt by doing: a small level and a guide", 0.06f);
     const float scale = m_app.uiScale();
     const sf::Vector2f window(target.getSize());
     const float centre = 0.5f * window.x;
-    float y = 0.06f * window.y;
     const sf::Font* font = m_app.font();
-    if (font != nullptr)
-    {
-        const unsigned titleSize = m_app.textSize(44.0f);
-        drawLabel(target, *font, utf8("Lessons"), {centre, y}, titleSize, palette::kStar, Align::Centre);
-        y += font->getLineSpacing(titleSize);
-        drawLabel(target, *font, utf8("One idea each, learnt by doing: a small level and a guide"), {centre, y},
-                  m_app.textSize(18.0f), palette::kTextDim, Align::Centre);
-        y += font->getLineSpacing(m_app.textSize(18.0f)) + 16.0f * scale;
-    }
     const float bottom =
         m_menu.draw(target, font, centre, y, std::min(window.x - 40.0f, 360.0f * scale), m_app.textSize(21.0f), scale);
     if (font == nullptr)
@@ -105,8 +96,9 @@ void LessonSelectScreen::draw(sf::RenderTarget& target)
     {
         const unsigned size = m_app.textSize(17.0f);
         float line = bottom + 18.0f * scale;
-        for (const std::string& text :
-             wrapText(*font, m_levels[selected]->lesson, size, std::min(window.x - 60.0f, 760.0f * scale)))
+        // Its {values} filled from its own level, as level select and `check --texts` show them.
+        const std::string lesson = levelText(m_levels[selected]->lesson, *m_levels[selected], Catalog::builtin());
+        for (const std::string& text : wrapText(*font, lesson, size, std::min(window.x - 60.0f, 760.0f * scale)))
         {
             drawLabel(target, *font, utf8(text), {centre, line}, size, palette::kText, Align::Centre);
             line += font->getLineSpacing(size);

@@ -113,19 +113,26 @@ std::optional<std::size_t> PlayScreen::nextLevelIndex() const
     return *m_source.campaignIndex + 1;
 }
 
+PlayMode PlayScreen::playMode() const
+{
+    return m_source.mode.value_or(m_app.mode());
+}
+
 void PlayScreen::goToNextLevel()
 {
     const std::optional<std::size_t> next = nextLevelIndex();
     if (!next || m_session->phase() != Phase::Won)
         return;
     const CampaignLevel& level = m_app.campaign().levels[*next];
-    m_app.screens().replace(std::make_unique<PlayScreen>(m_app, PlaySource{level.level, level.path, next}));
+    m_app.screens().replace(
+        std::make_unique<PlayScreen>(m_app, PlaySource{level.level, level.path, next, m_source.mode}));
 }
 
 void PlayScreen::resetAim()
 {
     ++m_generation;
     m_aim.reset();
+    m_aimedBird = 0;
     m_requestedLaunch.reset();
     m_abilityRequested = false;
     m_scriptAbilityAtS.reset();
@@ -214,6 +221,8 @@ void PlayScreen::handleEvent(const sf::Event& event)
     const bool mayAim = playerMayAim();
     const sf::Vector2f pouch = toVector(m_session->launchPoint());
     bool leftIsFree = !ability;
+    if (const BirdType* bird = m_session->currentBird())
+        m_aim.setBird(m_world.loadedBirdAt(*m_session, m_aim.pullOffset()), static_cast<float>(bird->radiusM));
     if (click && mayAim)
         leftIsFree = !m_aim.grabs({static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y)},
                                   m_rig.camera(), pouch);
@@ -288,6 +297,14 @@ void PlayScreen::physicsStep()
     if (m_session->phase() == Phase::Aiming && !m_session->winPending() && m_script.pending() != nullptr)
         fireScriptedShot();
     m_session->step();
+    // The genre's way: each new bird sits at rest in the pouch and is pulled afresh (learn mode keeps the last aim,
+    // so that one change can be tried at a time).
+    if (playMode() == PlayMode::Game && m_session->phase() == Phase::Aiming && !m_aim.dragging() &&
+        m_aimedBird != m_session->birdsUsed())
+    {
+        m_aim.rest();
+        m_aimedBird = m_session->birdsUsed();
+    }
     if (!m_session->notice().empty())
     {
         // The session reset itself (a body escaped to NaN): tell the player.

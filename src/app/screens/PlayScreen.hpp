@@ -35,6 +35,7 @@ struct PlaySource
     LevelDef level;
     std::string path;                         ///< the file, watched for live reload; empty for a scene held in memory
     std::optional<std::size_t> campaignIndex; ///< its place in the campaign, so "next level" can follow
+    std::optional<PlayMode> mode = std::nullopt; ///< Learn for the tutorial and the lessons; none: the app's mode
 };
 
 /// Playing one level: aim, launch, watch. Physics runs in the App's fixed steps; input becomes aim and launch
@@ -67,6 +68,7 @@ public:
     void finishBackgroundWork() override;
     bool changesWhileCovered() const override { return settling(); }
     App& app() override { return m_app; }
+    PlayMode playMode() const override;
     const GameSession& session() const override { return *m_session; }
     const Camera& camera() const override { return m_rig.camera(); }
     const CameraRig& cameraRig() const { return m_rig; }
@@ -141,6 +143,7 @@ private:
     ShotScript m_script;
     std::optional<ScriptedShot> m_requestedLaunch;
     bool m_abilityRequested = false;
+    int m_aimedBird = 0;                      ///< the bird the aim belongs to (game mode pulls each bird afresh)
     std::optional<double> m_scriptAbilityAtS; ///< when the scripted shot in flight uses its bird's ability
     int m_scriptShotNumber = 0;
     std::optional<PredictedFlight> m_preview;

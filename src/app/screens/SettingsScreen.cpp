@@ -119,7 +119,15 @@ std::string SettingsScreen::valueText(const std::string& id) const
     if (id == "wording")
         return s.wording == Wording::University ? "university (full depth)" : "school (ages 14\u201316)";
     if (id == "preview")
-        return s.preview == PreviewMode::Full ? "full path" : s.preview == PreviewMode::Short ? "first dots" : "off";
+    {
+        // Each mode keeps its own preview: the row sets the one of the mode the player is in.
+        const PreviewMode preview = s.previewFor(m_app.mode());
+        const std::string mode = m_app.mode() == PlayMode::Game ? " (in Play)" : " (in Learn)";
+        return (preview == PreviewMode::Full    ? "full path"
+                : preview == PreviewMode::Short ? "first dots"
+                                                : "off") +
+               mode;
+    }
     return "";
 }
 
@@ -176,8 +184,8 @@ void SettingsScreen::change(const std::string& id, int direction)
     else if (id == "preview")
     {
         // full -> first dots -> off, and back the other way.
-        const int mode = (static_cast<int>(s.preview) + (direction < 0 ? 2 : 1)) % 3;
-        s.preview = static_cast<PreviewMode>(mode);
+        PreviewMode& preview = s.previewFor(m_app.mode());
+        preview = static_cast<PreviewMode>((static_cast<int>(preview) + (direction < 0 ? 2 : 1)) % 3);
     }
     else
         return;

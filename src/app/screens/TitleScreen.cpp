@@ -5,7 +5,7 @@
 #include "render/Palette.hpp"
 #include "render/TitleArt.hpp"
 #include "screens/HelpScreen.hpp"
-#include "screens/LessonSelectScreen.hpp"
+#include "screens/LearnScreen.hpp"
 #include "screens/LevelSelectScreen.hpp"
 #include "screens/Navigation.hpp"
 #include "screens/SettingsScreen.hpp"
@@ -34,10 +34,9 @@ TitleScreen::TitleScreen(App& app)
     const bool hasCampaign = !app.campaign().levels.empty();
     const bool started = hasCampaign && app.progress().levels.count(app.campaign().levels.front().key) > 0;
     m_menu.setItems({
-        {"play", started ? "Continue" : "Play", hasCampaign},
+        {"play", started ? "Play: continue" : "Play", hasCampaign},
         {"levels", "Level select", hasCampaign},
-        {"tutorial", "Tutorial", hasCampaign},
-        {"lessons", "Lessons", true},
+        {"learn", "Learn: lessons, tutorial, physics", true},
         {"sandbox", "Sandbox and editor", true},
         {"settings", "Settings", true},
         {"help", "Controls", true},
@@ -54,13 +53,14 @@ void TitleScreen::handleEvent(const sf::Event& event)
 void TitleScreen::activate(const std::string& id)
 {
     if (id == "play")
+    {
+        m_app.setMode(PlayMode::Game);
         playCampaignLevel(m_app, continueLevel(m_app));
+    }
     else if (id == "levels")
         m_app.screens().push(std::make_unique<LevelSelectScreen>(m_app));
-    else if (id == "tutorial")
-        playTutorial(m_app);
-    else if (id == "lessons")
-        m_app.screens().push(std::make_unique<LessonSelectScreen>(m_app));
+    else if (id == "learn")
+        m_app.screens().push(std::make_unique<LearnScreen>(m_app));
     else if (id == "sandbox")
         openEditor(m_app, sandboxSource());
     else if (id == "settings")

@@ -64,8 +64,15 @@ void App::openWindow()
     if (m_settings.fullscreen && !sizeGiven)
         m_window.create(sf::VideoMode::getDesktopMode(), "Angry Birds Alike", sf::Style::Fullscreen);
     else
+    {
         m_window.create(sf::VideoMode(width, height), "Angry Birds Alike",
                         sf::Style::Titlebar | sf::Style::Close | sf::Style::Resize);
+        // Centred on the screen: a bare X server (no window manager) puts a new window wherever SFML asks, which is
+        // not always on the screen.
+        const sf::VideoMode desktop = sf::VideoMode::getDesktopMode();
+        m_window.setPosition({(static_cast<int>(desktop.width) - static_cast<int>(width)) / 2,
+                              (static_cast<int>(desktop.height) - static_cast<int>(height)) / 2});
+    }
     m_window.setKeyRepeatEnabled(true);
     // Offline frames run as fast as they can (and Xvfb has no vsync).
     m_window.setVerticalSyncEnabled(!m_options.frames.has_value());
@@ -184,11 +191,18 @@ int App::finishRun(int exitCode, bool layoutOnly)
     else if (!m_options.screenshotPath.empty() || !m_options.tracePath.empty())
     {
         m_screens.finishBackgroundWork();
-        std::vector<std::string> texts;
-        setDrawnTextSink(&texts);
+        std::vector<DrawnText> drawn;
+        setDrawnTextSink(&drawn);
         const FrameLayout layout = recordFrame(true);
         setDrawnTextSink(nullptr);
-        m_trace.write("texts", {{"shown", texts}});
+        std::vector<std::string> texts;
+        std::vector<std::string> kinds;
+        for (const DrawnText& text : drawn)
+        {
+            texts.push_back(text.text);
+            kinds.emplace_back(textKindName(text.kind));
+        }
+        m_trace.write("texts", {{"shown", texts}, {"kinds", kinds}});
         const auto rectangles = [](const std::vector<ScreenRegion>& list)
         {
             nlohmann::json out = nlohmann::json::array();
@@ -404,6 +418,17 @@ void App::updateSettings(const Settings& settings)
     if (!scripted() && m_store)
         m_store->saveSettings(settings);
     takeStoreMessages();
+}
+
+void App::setMode(PlayMode mode)
+{
+    m_mode = mode;
+    if (m_settings.mode != mode)
+    {
+        Settings settings = m_settings;
+        settings.mode = mode;
+        updateSettings(settings);
+    }
 }
 
 void App::recordResult(const std::string& levelId, int score, int stars)

@@ -61,6 +61,10 @@ public:
     /// School or university: --wording for this run, else the setting.
     Wording wording() const { return m_options.wording.value_or(m_settings.wording); }
     bool universityWording() const { return wording() == Wording::University; }
+    /// Game or learn: what the player last chose on the title screen, else --mode, else the setting.
+    PlayMode mode() const { return m_mode.value_or(m_options.mode.value_or(m_settings.mode)); }
+    /// The player chose a mode (the title's Play or Learn): it holds for the run and is saved (not in scripted runs).
+    void setMode(PlayMode mode);
     /// True when --size set the window on the command line: the saved size and full screen do not apply.
     bool sizeFromCommandLine() const { return m_options.width.has_value(); }
     /// Applies new settings (the look, the window's size and full screen) and saves them (not in scripted runs).
@@ -133,6 +137,7 @@ private:
     };
     std::vector<Notice> m_notices;
 
+    std::optional<PlayMode> m_mode; ///< chosen in this run
     long long m_frame = 0;
     long long m_offlineSteps = 0;
     double m_accumulator = 0.0;

@@ -39,6 +39,7 @@ struct AppOptions
     std::optional<unsigned> width; ///< `--size` wins over the saved window size
     std::optional<unsigned> height;
     std::optional<Wording> wording; ///< `--wording` wins over the saved setting for this run
+    std::optional<PlayMode> mode;   ///< `--mode` wins over the saved setting for this run
 
     /// Watches the frame loop (`bench frames`, the layout walk); null for a plain run.
     FrameObserver* observer = nullptr;

@@ -71,6 +71,7 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
                         std::span<const sf::FloatRect> avoid, std::span<const sf::FloatRect> keep, float maxWidth,
                         unsigned rowSize, float scale) const
 {
+    const TextKindScope kind(TextKind::Physics);
     if (m_sentences.empty())
         return;
     const float windowWidth = static_cast<float>(target.getSize().x);

@@ -138,10 +138,11 @@ void TeachLayer::onLevelStart(PlayView& view)
     {
         m_guideLevel = id;
         std::optional<Guide> guide = guideFor(view.session().level(), view.session().catalog());
-        // A first run (no progress at all) starts the campaign with the tutorial; scripted runs never do.
+        // A first run (no progress at all) of the campaign in learn mode starts with the tutorial; scripted runs, the
+        // game mode and a level opened by its file never do.
         const Campaign& campaign = m_app.campaign();
-        if (!guide && !m_app.scripted() && m_app.progress().levels.empty() && !campaign.levels.empty() &&
-            campaign.levels.front().level.id == id)
+        if (!guide && !m_app.scripted() && view.playMode() == PlayMode::Learn && !m_app.options().level &&
+            m_app.progress().levels.empty() && !campaign.levels.empty() && campaign.levels.front().level.id == id)
             guide = tutorialGuide();
         if (guide)
             m_guide.start(std::move(*guide));
@@ -184,6 +185,7 @@ void TeachLayer::frameUpdate(PlayView& view, double frameS)
 
 void TeachLayer::drawWorld(sf::RenderTarget& target, PlayView& view)
 {
+    const TextKindScope physics(TextKind::Physics);
     const float scale = m_app.uiScale();
     if (overlayOn())
         PathHistory::drawDots(target, view.trails(), view.camera(), scale);
@@ -201,6 +203,8 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     const sf::Font* font = m_app.font();
     if (font == nullptr)
         return;
+    // The overlay's panels are physics with their numbers; a lesson's step is a hint (below).
+    const TextKindScope physics(TextKind::Physics);
     const GameSession& session = view.session();
     const float scale = m_app.uiScale();
     const unsigned titleSize = m_app.textSize(15.0f);
@@ -212,7 +216,7 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     // The columns' large panels, a lesson's step and the feedback leave the slingshot, the flying bird and live pigs
     // in view, or shrink.
     std::vector<ScreenRegion> things;
-    if (overlayOn() || !m_feedback.sentences().empty() || m_guide.active())
+    if (overlayOn() || feedbackShown(view) || m_guide.active())
         things = keepVisibleBoxes(session, view.camera());
     std::vector<sf::FloatRect> keep;
     for (const ScreenRegion& thing : things)
@@ -300,6 +304,7 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     clearLeft();
     if (m_guide.active() && !m_walkthrough.active())
     {
+        const TextKindScope hint(TextKind::Hint);
         const sf::FloatRect card =
             m_guide.draw(target, *font, {margin, left}, std::min(440.0f * scale, window.x - 2.0f * margin),
                          m_app.textSize(17.0f), m_app.textSize(15.0f), scale);
@@ -316,8 +321,9 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     if (m_walkthrough.active())
         m_walkthrough.drawPanel(target, *font, 152.0f * scale, titleSize, rowSize, scale);
 
-    // Feedback on the last shot, above the level's hint and the app's notices at the bottom.
-    if (!m_walkthrough.active() && !m_feedback.sentences().empty())
+    // Feedback on the last shot, above the level's hint and the app's notices at the bottom: the physics of the shot
+    // in words, in learn mode only (the game mode keeps the picture: the flown path beside the predicted dots).
+    if (!m_walkthrough.active() && feedbackShown(view))
         m_feedback.draw(target, *font, window.y - 96.0f * scale, 160.0f * scale,
                         structureScreenBoxes(session, view.camera()), keep, std::min(window.x - 40.0f, 900.0f * scale),
                         m_app.textSize(16.0f), scale);

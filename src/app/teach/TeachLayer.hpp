@@ -31,6 +31,11 @@ public:
     void drawScreen(sf::RenderTarget& target, PlayView& view) override;
 
 private:
+    /// The sentences on the last shot: in learn mode, when there are any.
+    bool feedbackShown(const PlayView& view) const
+    {
+        return view.playMode() == PlayMode::Learn && !m_feedback.sentences().empty();
+    }
     bool overlayOn() const;
     void toggleOverlay();
     /// Writes every shot of this level so far as CSV (key E) into the data folder's exports/ and says where.

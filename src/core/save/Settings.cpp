@@ -20,11 +20,37 @@ constexpr int kMaxHeight = 4320;
 constexpr double kMinTextScale = 1.0;
 constexpr double kMaxTextScale = 2.0;
 
+PreviewMode readPreview(const nlohmann::json& value, const std::string& pointer)
+{
+    const std::string& name = readString(value, pointer);
+    if (name == "full")
+        return PreviewMode::Full;
+    if (name == "short")
+        return PreviewMode::Short;
+    if (name == "off")
+        return PreviewMode::Off;
+    throw SaveFormatError(pointer + ": expected \"full\", \"short\" or \"off\"");
+}
+
 } // namespace
 
 const char* previewModeName(PreviewMode mode)
 {
     return mode == PreviewMode::Short ? "short" : mode == PreviewMode::Off ? "off" : "full";
+}
+
+const char* playModeName(PlayMode mode)
+{
+    return mode == PlayMode::Learn ? "learn" : "game";
+}
+
+std::optional<PlayMode> parsePlayMode(std::string_view name)
+{
+    if (name == "game")
+        return PlayMode::Game;
+    if (name == "learn")
+        return PlayMode::Learn;
+    return std::nullopt;
 }
 
 const char* wordingName(Wording wording)
@@ -59,16 +85,15 @@ Settings parseSettings(std::string_view text)
     if (const auto it = root.find("show_preview"); it != root.end())
         settings.preview = readBool(*it, "/show_preview") ? PreviewMode::Full : PreviewMode::Off;
     if (const auto it = root.find("preview"); it != root.end())
+        settings.preview = readPreview(*it, "/preview");
+    if (const auto it = root.find("game_preview"); it != root.end())
+        settings.gamePreview = readPreview(*it, "/game_preview");
+    if (const auto it = root.find("mode"); it != root.end())
     {
-        const std::string& name = readString(*it, "/preview");
-        if (name == "full")
-            settings.preview = PreviewMode::Full;
-        else if (name == "short")
-            settings.preview = PreviewMode::Short;
-        else if (name == "off")
-            settings.preview = PreviewMode::Off;
-        else
-            throw SaveFormatError("/preview: expected \"full\", \"short\" or \"off\"");
+        const std::optional<PlayMode> mode = parsePlayMode(readString(*it, "/mode"));
+        if (!mode)
+            throw SaveFormatError("/mode: expected \"game\" or \"learn\"");
+        settings.mode = *mode;
     }
     if (const auto it = root.find("show_actual_path"); it != root.end())
         settings.showActualPath = readBool(*it, "/show_actual_path");
@@ -124,7 +149,9 @@ std::string settingsToJson(const Settings& settings)
     root["format"] = kSettingsFormat;
     root["music_volume"] = volume(settings.musicVolume);
     root["effects_volume"] = volume(settings.effectsVolume);
+    root["mode"] = playModeName(settings.mode);
     root["preview"] = previewModeName(settings.preview);
+    root["game_preview"] = previewModeName(settings.gamePreview);
     root["show_actual_path"] = settings.showActualPath;
     root["fullscreen"] = settings.fullscreen;
     root["window"] = {std::clamp<unsigned>(settings.windowWidth, kMinWidth, kMaxWidth),

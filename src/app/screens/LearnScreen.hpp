@@ -1,0 +1,31 @@
+#pragma once
+
+#include "shell/Screen.hpp"
+#include "ui/MenuList.hpp"
+
+namespace abalike::app
+{
+
+class App;
+
+/// The title's Learn: the campaign with its physics shown (learn mode), the tutorial and the lessons. Arrows and
+/// Enter, or hover and click; Esc goes back.
+class LearnScreen : public Screen
+{
+public:
+    static constexpr std::string_view kName = "learn";
+
+    explicit LearnScreen(App& app);
+
+    std::string_view name() const override { return kName; }
+    void handleEvent(const sf::Event& event) override;
+    void draw(sf::RenderTarget& target) override;
+
+private:
+    void activate(const std::string& id);
+
+    App& m_app;
+    MenuList m_menu;
+};
+
+} // namespace abalike::app
