@@ -52,6 +52,17 @@ TEST(Progress, CampaignUnlocksTheFirstLevelAndEachOneAfterAWin)
     EXPECT_FALSE(progress.isUnlocked("1-3"));
 }
 
+TEST(Progress, ALevelWonByItsFileIsOpenWithTheNextOne)
+{
+    // Won after `play --level 1-3` while 1-2 was never played: its tile must show its stars, not "locked".
+    const std::vector<std::string> campaign = {"1-1", "1-2", "1-3", "1-4", "1-5"};
+    Progress progress;
+    progress.record("1-3", 5000, 2);
+    progress.record("1-5", 100, 0);
+    EXPECT_TRUE(unlockCampaign(progress, campaign));
+    EXPECT_EQ(progress.unlocked, (std::set<std::string>{"1-1", "1-3", "1-4"}));
+}
+
 TEST(Progress, JsonRoundTripsExactly)
 {
     Progress progress;

@@ -33,7 +33,8 @@ struct Progress
     bool operator==(const Progress&) const = default;
 };
 
-/// Opens the first level of the campaign and every level that follows a level won with at least one star.
+/// Opens the first level of the campaign, every level won with at least one star (however it was reached) and
+/// every level that follows one.
 /// Returns true when a level was newly unlocked.
 bool unlockCampaign(Progress& progress, const std::vector<std::string>& levelIds);
 

@@ -65,8 +65,13 @@ bool unlockCampaign(Progress& progress, const std::vector<std::string>& levelIds
     for (std::size_t i = 0; i < levelIds.size(); ++i)
     {
         const bool first = i == 0 || packOf(levelIds[i]) != packOf(levelIds[i - 1]);
-        const auto previous = first ? progress.levels.end() : progress.levels.find(levelIds[i - 1]);
-        if (first || (previous != progress.levels.end() && previous->second.stars >= 1))
+        const auto won = [&](const std::string& key)
+        {
+            const auto record = progress.levels.find(key);
+            return record != progress.levels.end() && record->second.stars >= 1;
+        };
+        // A level won however it was reached (`play --level`, a test play) is open, with its stars on its tile.
+        if (first || won(levelIds[i]) || won(levelIds[i - 1]))
             changed = progress.unlock(levelIds[i]) || changed;
     }
     return changed;
