@@ -1,6 +1,7 @@
 #include "FileSizeLimit.hpp"
 #include "TempDir.hpp"
 
+#include <abalike/save/SaveError.hpp>
 #include <abalike/save/SaveStore.hpp>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -49,6 +50,35 @@ TEST(SaveStore, NoFilesMeansDefaultsAndNoMessage)
     EXPECT_EQ(store.settings(), Settings{});
     EXPECT_TRUE(store.takeMessages().empty());
     EXPECT_FALSE(std::filesystem::exists(dir / "abalike")) << "loading creates nothing";
+}
+
+TEST(SaveStore, PinnedSettingsAreUsedAndNeverWritten)
+{
+    const TempDir dir;
+    writeText(dir / "class.json", R"({"format": 1, "text_scale": 1.5})");
+    SaveStore store(dir / "abalike");
+    store.load();
+    store.pinSettings(readSettingsFile(dir / "class.json"));
+    EXPECT_EQ(store.settings().textScale, 1.5);
+    Settings changed = store.settings();
+    changed.fullscreen = true;
+    EXPECT_TRUE(store.saveSettings(changed));
+    EXPECT_TRUE(store.settings().fullscreen) << "kept for this run";
+    EXPECT_FALSE(std::filesystem::exists(store.settingsPath())) << "never written";
+    EXPECT_EQ(readText(dir / "class.json"), R"({"format": 1, "text_scale": 1.5})");
+
+    writeText(dir / "bad.json", R"({"format": 1, "text_scale": "big"})");
+    try
+    {
+        readSettingsFile(dir / "bad.json");
+        FAIL() << "a bad settings file must throw";
+    }
+    catch (const SaveFormatError& e)
+    {
+        EXPECT_EQ(std::string(e.what()).rfind((dir / "bad.json").string() + ": /text_scale: expected", 0), 0u)
+            << e.what();
+    }
+    EXPECT_THROW(readSettingsFile(dir / "none.json"), SaveIoError);
 }
 
 TEST(SaveStore, SavesAndLoadsBackCreatingTheFolder)

@@ -13,6 +13,19 @@ namespace abalike::test
 namespace
 {
 
+/// A PNG's width and height, from the IHDR chunk's big-endian fields at bytes 16 and 20.
+std::vector<int> pngSize(const std::string& path)
+{
+    std::ifstream png(path, std::ios::binary);
+    unsigned char bytes[24] = {};
+    png.read(reinterpret_cast<char*>(bytes), sizeof bytes);
+    const auto be = [&bytes](int at)
+    {
+        return (bytes[at] << 24) | (bytes[at + 1] << 16) | (bytes[at + 2] << 8) | bytes[at + 3];
+    };
+    return std::vector<int>{be(16), be(20)};
+}
+
 class ScreenFlow : public ::testing::Test
 {
 protected:
@@ -133,18 +146,6 @@ TEST_F(ScreenFlow, SettingsFromTheTitleApplyAtOnceAndAScriptedRunNeverWritesThem
 TEST_F(ScreenFlow, TheSizeOnTheCommandLineWinsOverTheSavedSize)
 {
     std::ofstream(data() / "settings.json") << R"({"format": 1, "window": [960, 540]})";
-    const auto pngSize = [](const std::string& path)
-    {
-        // The PNG header: the IHDR chunk's width and height, big-endian, at bytes 16 and 20.
-        std::ifstream png(path, std::ios::binary);
-        unsigned char bytes[24] = {};
-        png.read(reinterpret_cast<char*>(bytes), sizeof bytes);
-        const auto be = [&bytes](int at)
-        {
-            return (bytes[at] << 24) | (bytes[at + 1] << 16) | (bytes[at + 2] << 8) | bytes[at + 3];
-        };
-        return std::vector<int>{be(16), be(20)};
-    };
     const std::string saved = m_dir.file("saved.png");
     const GameRun savedRun = runGame("play --frames 2 --screenshot '" + saved + "'", data());
     ASSERT_EQ(savedRun.exitCode, 0) << savedRun.err;
@@ -153,6 +154,29 @@ TEST_F(ScreenFlow, TheSizeOnTheCommandLineWinsOverTheSavedSize)
     const GameRun givenRun = runGame("play --frames 2 --size 800x600 --screenshot '" + given + "'", data());
     ASSERT_EQ(givenRun.exitCode, 0) << givenRun.err;
     EXPECT_EQ(pngSize(given), (std::vector<int>{800, 600}));
+}
+
+TEST_F(ScreenFlow, ASettingsFileOnTheCommandLineWinsOverTheSavedSettingsAndIsNeverWritten)
+{
+    // What a live session saved (a window size, the overlay on) must not reach a class's prepared script.
+    const std::string saved = R"({"format": 1, "window": [960, 540], "teaching_overlay": true})";
+    std::ofstream(data() / "settings.json") << saved;
+    const std::string pinned = m_dir.write("class.json", R"({"format": 1, "window": [800, 600]})");
+    const std::string shot = m_dir.file("pinned.png");
+    const GameRun run = runGame("play --frames 2 --settings '" + pinned + "' --screenshot '" + shot + "'", data());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(pngSize(shot), (std::vector<int>{800, 600}));
+    std::stringstream after;
+    after << std::ifstream(data() / "settings.json").rdbuf();
+    EXPECT_EQ(after.str(), saved);
+
+    const std::string broken = m_dir.write("broken.json", R"({"format": 1, "window": [800, "tall"]})");
+    const GameRun bad = runGame("play --frames 2 --settings '" + broken + "'", data());
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.err.find("--settings: " + broken + ": /window/1: expected"), std::string::npos) << bad.err;
+    const GameRun missing = runGame("play --frames 2 --settings '" + m_dir.file("none.json") + "'", data());
+    EXPECT_EQ(missing.exitCode, 2);
+    EXPECT_NE(missing.err.find("none.json: no such file"), std::string::npos) << missing.err;
 }
 
 TEST_F(ScreenFlow, ALevelOnTheCommandLineGoesStraightToIt)

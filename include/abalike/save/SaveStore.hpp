@@ -32,6 +32,11 @@ public:
     const Progress& progress() const { return m_progress; }
     const Settings& settings() const { return m_settings; }
 
+    /// Uses settings read from another file (`--settings FILE`) instead of settings.json for this run: changes are
+    /// kept in memory and never written, so neither that file nor the player's settings change.
+    void pinSettings(Settings settings);
+    bool settingsPinned() const { return m_settingsPinned; }
+
     /// Keeps progress in memory and writes it atomically; false (and a message) when it could not be written.
     bool saveProgress(Progress progress);
     /// Keeps settings in memory and writes them atomically; false (and a message) when they could not be written.
@@ -63,6 +68,11 @@ private:
     FileState m_progressState{"progress", false, {}};
     FileState m_settingsState{"settings", false, {}};
     std::vector<std::string> m_messages;
+    bool m_settingsPinned = false;
 };
+
+/// Reads a settings file given by name (`--settings FILE`). Throws SaveIoError or SaveFormatError with a message
+/// that names the file and what is wrong in it.
+Settings readSettingsFile(const std::filesystem::path& path);
 
 } // namespace abalike

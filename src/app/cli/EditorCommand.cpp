@@ -64,6 +64,7 @@ int runEditCommand(const EditArgs& a)
     store.load(scripted ? SaveStore::Damaged::LeaveAlone : SaveStore::Damaged::SetAside);
     if (!scripted)
         keepSettledLevelsIn((defaultCacheDirectory() / "settled").string());
+    pinWindowSettings(a.window, store);
     loadWindowScript(a.window, store, options);
     if (!haveDisplay())
         return kUsageExitCode;

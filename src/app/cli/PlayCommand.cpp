@@ -115,6 +115,7 @@ int runPlayCommand(const PlayArgs& a)
     store.load(scripted ? SaveStore::Damaged::LeaveAlone : SaveStore::Damaged::SetAside);
     if (!scripted)
         keepSettledLevelsIn((defaultCacheDirectory() / "settled").string());
+    pinWindowSettings(a.window, store);
     loadWindowScript(a.window, store, options);
     if (!packName.empty())
     {

@@ -4,6 +4,8 @@
 #include "cli/UsageError.hpp"
 #include "input/ScriptedInput.hpp"
 
+#include <abalike/save/SaveError.hpp>
+
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -35,6 +37,10 @@ void addWindowOptions(CLI::App& command, WindowArgs& args)
                        "game (the genre's play: a short preview, a power bar, no physics sentences) or learn (the full "
                        "preview, numbers with units, a sentence of physics after every shot); default: the saved "
                        "setting, game at first");
+    command.add_option(
+        "--settings", args.settings,
+        "read the settings from this file (settings.json's format) instead of the saved ones; changes in "
+        "this run are never written, so a class's prepared scripts behave the same on every machine");
 }
 
 void applyWindowOptions(const WindowArgs& args, AppOptions& options)
@@ -67,6 +73,20 @@ void applyWindowOptions(const WindowArgs& args, AppOptions& options)
         options.mode = parsePlayMode(args.mode);
         if (!options.mode)
             throw UsageError("--mode: expected game or learn, got \"" + args.mode + "\"");
+    }
+}
+
+void pinWindowSettings(const WindowArgs& args, SaveStore& store)
+{
+    if (args.settings.empty())
+        return;
+    try
+    {
+        store.pinSettings(readSettingsFile(args.settings));
+    }
+    catch (const std::exception& e)
+    {
+        throw UsageError(std::string("--settings: ") + e.what());
     }
 }
 

@@ -138,9 +138,17 @@ bool SaveStore::saveProgress(Progress progress)
     return saveFile(m_progressState, progressPath(), progressToJson(m_progress));
 }
 
+void SaveStore::pinSettings(Settings settings)
+{
+    m_settings = std::move(settings);
+    m_settingsPinned = true;
+}
+
 bool SaveStore::saveSettings(Settings settings)
 {
     m_settings = settings;
+    if (m_settingsPinned)
+        return true;
     return saveFile(m_settingsState, settingsPath(), settingsToJson(m_settings));
 }
 
@@ -185,6 +193,31 @@ bool SaveStore::saveFile(FileState& state, const std::filesystem::path& path, co
 std::vector<std::string> SaveStore::takeMessages()
 {
     return std::exchange(m_messages, {});
+}
+
+Settings readSettingsFile(const std::filesystem::path& path)
+{
+    const ReadResult read = readSmallFile(path, kMaxSaveBytes);
+    switch (read.status)
+    {
+    case ReadResult::Status::Missing:
+        throw SaveIoError(path.string() + ": no such file");
+    case ReadResult::Status::Unreadable:
+        throw SaveIoError(path.string() + ": cannot read it (" + read.error + ")");
+    case ReadResult::Status::TooLarge:
+        throw SaveFormatError(path.string() + ": larger than " + std::to_string(kMaxSaveBytes) +
+                              " bytes; a settings file is a few hundred");
+    case ReadResult::Status::Read:
+        break;
+    }
+    try
+    {
+        return parseSettings(read.text);
+    }
+    catch (const SaveFormatError& e)
+    {
+        throw SaveFormatError(path.string() + ": " + e.what());
+    }
 }
 
 } // namespace abalike
