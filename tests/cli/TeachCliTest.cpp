@@ -168,9 +168,37 @@ TEST(SimulateTeachCli, EnergyAndImpactPerShot)
     keys.clear();
     for (const auto& item : impact.items())
         keys.push_back(item.key());
-    EXPECT_EQ(keys, (std::vector<std::string>{"t", "body", "bird_before", "bird_after", "body_before", "body_after",
-                                              "body_mass_kg", "momentum_before", "momentum_after", "kinetic_before_j",
-                                              "kinetic_after_j", "damage_ns", "strength_before_ns", "broke"}));
+    EXPECT_EQ(keys, (std::vector<std::string>{"t",
+                                              "body",
+                                              "bird_before",
+                                              "bird_after",
+                                              "body_before",
+                                              "body_after",
+                                              "body_mass_kg",
+                                              "momentum_before",
+                                              "momentum_after",
+                                              "kinetic_before_j",
+                                              "kinetic_after_j",
+                                              "damage_ns",
+                                              "strength_before_ns",
+                                              "broke",
+                                              "bird_change",
+                                              "body_change",
+                                              "push_on_body",
+                                              "from_supports",
+                                              "bird_other_contacts",
+                                              "gravity",
+                                              "break_through",
+                                              "balance_residual"}));
+    // The balance, from the JSON alone: the two changes less the pushes from outside the pair are zero.
+    for (std::size_t i = 0; i < 2; ++i)
+    {
+        const double left = impact["bird_change"][i].get<double>() + impact["body_change"][i].get<double>() -
+                            impact["from_supports"][i].get<double>() - impact["bird_other_contacts"][i].get<double>() -
+                            impact["gravity"][i].get<double>() - impact["break_through"][i].get<double>();
+        EXPECT_NEAR(left, impact["balance_residual"][i].get<double>(), 1e-9);
+        EXPECT_LT(std::abs(left), 1e-3);
+    }
     EXPECT_EQ(impact["body"]["kind"], "block");
     EXPECT_TRUE(impact["body"]["index"].is_number_integer());
     EXPECT_EQ(impact["bird_before"].size(), 2u);

@@ -17,6 +17,21 @@ struct BodyVelocity
     double omegaRadPerS = 0.0;
 };
 
+/// The linear impulses (N s = kg m/s, as x and y) that bird and body received in the step of their first impact
+/// besides each other's momentum: with the two changes of momentum they add to zero (FirstImpact::balanceResidual).
+struct ImpactBalance
+{
+    std::array<double, 2> pushOnBody{};        ///< from the bird through their contact (the bird got the opposite)
+    std::array<double, 2> supports{};          ///< on the body from all else it touches: the ground, blocks, neighbours
+    std::array<double, 2> birdOtherContacts{}; ///< on the bird from anything else it touched in that step
+    /// Weight over the time Box2D integrated each body: the struck body's. The bird's weight and drag over the step
+    /// are already in the velocity it starts the step with (the flight model's chord), so they add nothing here.
+    std::array<double, 2> gravity{};
+    /// What the break rule moved after the solver: the impulse given back to the bird and to the body's other
+    /// partners when it broke, and momentum a breaking block handed on to the bird (0 when nothing broke).
+    std::array<double, 2> breakThrough{};
+};
+
 /// The launched bird's first contact with a block or a pig, from Box2D's own velocities: "before" is the start of the
 /// world step in which the contact began, "after" the end of that step.
 struct FirstImpact
@@ -40,6 +55,13 @@ struct FirstImpact
     double damageNs = 0.0;              ///< impulse the body took as damage during that step (N s)
     double strengthBeforeNs = 0.0;      ///< what the body could still absorb when the step began (N s)
     bool broke = false;                 ///< the body broke (or the pig was defeated) in that step
+    ImpactBalance balance;
+
+    /// Change of the bird's and of the body's momentum over the step (after minus before, kg m/s).
+    std::array<double, 2> birdChange() const;
+    std::array<double, 2> bodyChange() const;
+    /// The two changes less every impulse of the balance: zero but for Box2D's float rounding.
+    std::array<double, 2> balanceResidual() const;
 
     /// Linear momentum of bird and body together (kg m/s).
     std::array<double, 2> momentumBefore() const;

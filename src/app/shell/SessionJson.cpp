@@ -74,6 +74,16 @@ Json impactJson(const std::optional<FirstImpact>& impact)
     out["damage_ns"] = impact->damageNs;
     out["strength_before_ns"] = impact->strengthBeforeNs;
     out["broke"] = impact->broke;
+    // The momentum balance of that step, each as [x, y] in kg m/s: bird_change + body_change equals the sum of the
+    // impulses from outside the pair, up to balance_residual (Box2D's float rounding).
+    out["bird_change"] = pair(impact->birdChange());
+    out["body_change"] = pair(impact->bodyChange());
+    out["push_on_body"] = pair(impact->balance.pushOnBody);
+    out["from_supports"] = pair(impact->balance.supports);
+    out["bird_other_contacts"] = pair(impact->balance.birdOtherContacts);
+    out["gravity"] = pair(impact->balance.gravity);
+    out["break_through"] = pair(impact->balance.breakThrough);
+    out["balance_residual"] = pair(impact->balanceResidual());
     return out;
 }
 

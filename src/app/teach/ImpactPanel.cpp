@@ -34,6 +34,57 @@ std::string kinetic(double massKg, double inertia, const BodyVelocity& v)
     return text;
 }
 
+/// A momentum or impulse as its components, "(+31.7, −51.1)": the balance only closes with directions.
+std::string components(const std::array<double, 2>& v)
+{
+    const auto part = [](double x)
+    {
+        const std::string digits = formatFixed(std::abs(x), 1);
+        std::string text = digits == "0.0" ? " " : x < 0.0 ? "\u2212" : "+";
+        text += digits;
+        return text;
+    };
+    std::string text = "(";
+    text += part(v[0]);
+    text += ", ";
+    text += part(v[1]);
+    text += ")";
+    return text;
+}
+
+bool shows(const std::array<double, 2>& v)
+{
+    return std::hypot(v[0], v[1]) >= 0.05;
+}
+
+/// The momentum balance of the impact's step: each change and every push from outside the pair, in components, and
+/// what is left when they are subtracted (zero but for rounding), so a class can check conservation on any shot.
+void addBalanceRows(std::vector<PanelRow>& rows, const FirstImpact& impact, const std::string& body)
+{
+    const ImpactBalance& b = impact.balance;
+    rows.push_back({"momentum in that step, (x, y) kg\u00B7m/s", "", sf::Color::Transparent, true});
+    rows.push_back({"  the bird pushed the " + body + " with", components(b.pushOnBody)});
+    // A body that breaks holds only its remaining strength: the rest of the push went back to the bird.
+    const auto bird = impact.birdChange();
+    const std::array<double, 2> givenBack{bird[0] + b.pushOnBody[0] - b.birdOtherContacts[0],
+                                          bird[1] + b.pushOnBody[1] - b.birdOtherContacts[1]};
+    if (impact.broke && shows(givenBack))
+        rows.push_back({"  it broke: given back to the bird", components(givenBack)});
+    rows.push_back({"  change of the bird", components(bird)});
+    rows.push_back({"  change of the " + body, components(impact.bodyChange())});
+    // Only the pushes from outside the pair that acted: each one is why the two changes do not cancel.
+    if (shows(b.supports))
+        rows.push_back({"  + push of what the " + body + " stands on or touches", components(b.supports)});
+    if (shows(b.gravity))
+        rows.push_back({"  + weight over the step", components(b.gravity)});
+    if (shows(b.breakThrough))
+        rows.push_back({"  + the break rule (given back, handed on)", components(b.breakThrough)});
+    if (shows(b.birdOtherContacts))
+        rows.push_back({"  + what else the bird touched", components(b.birdOtherContacts)});
+    const auto residual = impact.balanceResidual();
+    rows.push_back({"  changes \u2212 pushes from outside", components(residual)});
+}
+
 } // namespace
 
 sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topRight,
@@ -41,47 +92,37 @@ sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf
                               float scale)
 {
     const std::string body = impact.bodyType + (impact.bodyKind == EntityKind::Pig ? " pig" : " block");
-    const auto pBefore = impact.momentumBefore();
-    const auto pAfter = impact.momentumAfter();
+    // One row per body, before \u2192 after the step: speed and spin, momentum, kinetic energy.
+    const auto bodyRow = [](const std::string& name, double massKg, double inertia, const BodyVelocity& before,
+                            const BodyVelocity& after) -> PanelRow
+    {
+        const double kineticBefore =
+            0.5 * massKg * speed(before) * speed(before) + 0.5 * inertia * before.omegaRadPerS * before.omegaRadPerS;
+        return {name + ", " + formatFixed(massKg, 1) + " kg: " + formatFixed(speed(before), 1) + " \u2192 " +
+                    withUnit(speed(after), 2, "m/s") + ", " + withUnit(after.omegaRadPerS, 1, "rad/s"),
+                formatFixed(massKg * speed(before), 1) + " \u2192 " + momentum(massKg, after) + "   " +
+                    formatFixed(kineticBefore, 1) + " \u2192 " + kinetic(massKg, inertia, after)};
+    };
     std::vector<PanelRow> rows{
-        {"bird, " + formatFixed(impact.birdMassKg, 1) + " kg", "", sf::Color::Transparent, true},
-        {"  before: " + withUnit(speed(impact.birdBefore), 1, "m/s"),
-         momentum(impact.birdMassKg, impact.birdBefore) + "   " +
-             kinetic(impact.birdMassKg, impact.birdInertiaKgM2, impact.birdBefore)},
-        {"  after: " + withUnit(speed(impact.birdAfter), 1, "m/s") + ", " +
-             withUnit(impact.birdAfter.omegaRadPerS, 1, "rad/s"),
-         momentum(impact.birdMassKg, impact.birdAfter) + "   " +
-             kinetic(impact.birdMassKg, impact.birdInertiaKgM2, impact.birdAfter)},
-        {body + ", " + formatFixed(impact.bodyMassKg, 1) + " kg", "", sf::Color::Transparent, true},
-        {"  before: " + withUnit(speed(impact.bodyBefore), 1, "m/s"),
-         momentum(impact.bodyMassKg, impact.bodyBefore) + "   " +
-             kinetic(impact.bodyMassKg, impact.bodyInertiaKgM2, impact.bodyBefore)},
-        {"  after: " + withUnit(speed(impact.bodyAfter), 2, "m/s") + ", " +
-             withUnit(impact.bodyAfter.omegaRadPerS, 2, "rad/s"),
-         momentum(impact.bodyMassKg, impact.bodyAfter) + "   " +
-             kinetic(impact.bodyMassKg, impact.bodyInertiaKgM2, impact.bodyAfter)},
-        {"together", "", sf::Color::Transparent, true},
-        {"  momentum before \u2192 after", withUnit(std::hypot(pBefore[0], pBefore[1]), 1, "") + "\u2192 " +
-                                               withUnit(std::hypot(pAfter[0], pAfter[1]), 1, "kg\u00B7m/s")},
-        {"  kinetic energy (with spin) before \u2192 after",
+        bodyRow("bird", impact.birdMassKg, impact.birdInertiaKgM2, impact.birdBefore, impact.birdAfter),
+        bodyRow(body, impact.bodyMassKg, impact.bodyInertiaKgM2, impact.bodyBefore, impact.bodyAfter),
+        {"together: kinetic energy (with spin)",
          withUnit(impact.kineticBeforeJ(), 0, "") + "\u2192 " + withUnit(impact.kineticAfterJ(), 0, "J")},
     };
+    if (const auto e = impact.restitution())
+        rows.push_back({"restitution e = separating / closing speed", formatFixed(*e, 2)});
+    addBalanceRows(rows, impact, impact.bodyKind == EntityKind::Pig ? "pig" : "block");
     std::string damage = withUnit(impact.damageNs, 1, "N\u00B7s");
     if (bodyStrengthNs > 0.0)
         damage +=
             " of " + withUnit(bodyStrengthNs, 0, "N\u00B7s") + (impact.damageNs >= bodyStrengthNs ? ": broke it" : "");
-    if (const auto e = impact.restitution())
-        rows.push_back({"  restitution e = separating / closing speed", formatFixed(*e, 2)});
     // Strength is an impulse the body can take, not energy: its own heading keeps it apart from the joules above.
-    rows.push_back({"strength (an impulse in N\u00B7s, not energy)", "", sf::Color::Transparent, true});
-    rows.push_back({"  impulse taken as damage", damage});
-    // Momentum is conserved only if nothing else pushed during the step: a block standing on others is held.
-    const double change = std::hypot(pAfter[0] - pBefore[0], pAfter[1] - pBefore[1]);
-    if (change > 0.05 * std::hypot(pBefore[0], pBefore[1]))
-        rows.push_back({"Momentum changed: what the body stands on pushed back too.", ""});
-    else
+    rows.push_back({"strength: impulse taken as damage (N\u00B7s, not energy)", damage});
+    // With no push from outside the pair, momentum is kept: say where the lost energy went.
+    if (!shows(impact.balance.supports) && !shows(impact.balance.gravity) && !shows(impact.balance.breakThrough))
         rows.push_back({"Momentum is kept; the kinetic energy lost became heat, sound and deformation.", ""});
-    const TextPanel panel("First impact: t = " + withUnit(impact.tS, 3, "s"), std::move(rows));
+    const TextPanel panel("First impact: t = " + withUnit(impact.tS, 3, "s") + ", before \u2192 after its step",
+                          std::move(rows));
     const sf::Vector2f size = panel.measure(font, titleSize, rowSize, scale);
     const sf::Vector2f at(std::max(0.0f, topRight.x - size.x), topRight.y);
     if (!fullPanelFits(target, {at, size}, "first impact"))

@@ -35,22 +35,28 @@ std::string hitName(const FirstImpact& impact, const Catalog& catalog)
     return (vowel ? "an " : "a ") + impact.bodyType + " block";
 }
 
-/// Momentum sentence: how much the bird carried and how much it handed to what it hit.
+/// Momentum sentence: how much the bird carried, how hard it pushed what it hit, and what the bird did next.
 std::string momentumSentence(const FirstImpact& impact, const Catalog& catalog)
 {
     const double carried = impact.birdMassKg * std::hypot(impact.birdBefore.vx, impact.birdBefore.vy);
-    const double passed = impact.bodyMassKg * std::hypot(impact.bodyAfter.vx - impact.bodyBefore.vx,
-                                                         impact.bodyAfter.vy - impact.bodyBefore.vy);
-    std::string text = format("The bird hit %s carrying %.0f kg\u00B7m/s of momentum and passed %.0f kg\u00B7m/s to "
-                              "it",
-                              hitName(impact, catalog).c_str(), carried, passed);
-    // Bouncing back hands over more than the bird had: it must also cancel its own momentum.
-    if (passed > carried * 1.02)
+    // The push between the two (Newton's third law: the bird got the same back), not the body's change of
+    // momentum, which also holds what it stands on pushing back (the impact panel's balance).
+    const double push = std::hypot(impact.balance.pushOnBody[0], impact.balance.pushOnBody[1]);
+    std::string text = format("The bird hit %s carrying %.0f kg\u00B7m/s of momentum and pushed it with an impulse "
+                              "of %.0f N\u00B7s",
+                              hitName(impact, catalog).c_str(), carried, push);
+    const bool keptDirection = impact.birdAfter.vx * impact.birdBefore.vx > 0.0;
+    // Bouncing back takes more than the bird had: it must also cancel its own momentum. (A body that breaks gives
+    // part of the push back, so there the bird's path says what happened.)
+    if (push > carried * 1.02 && !keptDirection && !impact.broke)
         text += " (more than it carried: it bounced back)";
+    const double kept = impact.birdMassKg * std::hypot(impact.birdAfter.vx, impact.birdAfter.vy);
     if (impact.broke)
         // Break-through: a body that fails absorbs only what strength it had left.
-        text += format(": that broke it (it could take only %.0f N\u00B7s more), so the bird flew on with the rest",
-                       impact.strengthBeforeNs);
+        text += format(": that %s it (it could take only %.0f N\u00B7s more)",
+                       impact.bodyKind == EntityKind::Pig ? "defeated" : "broke", impact.strengthBeforeNs) +
+                (keptDirection ? format(", so the bird flew on with %.0f kg\u00B7m/s", kept)
+                               : std::string(", but the bird was still turned back"));
     else if (impact.damageNs > 0.0)
         // Damage counts every push in that step, the bird's and the ground's or a neighbour's pushing back: it can
         // be more than the momentum the body gained, which is their sum with directions.

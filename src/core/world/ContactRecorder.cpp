@@ -29,6 +29,7 @@ void ContactRecorder::BeginContact(b2Contact* contact)
 
 void ContactRecorder::PreSolve(b2Contact* contact, const b2Manifold* /*oldManifold*/)
 {
+    m_ledger.preSolve(contact);
     // Closing speed along the normal before the solver acts: what tells an impact from resting contact.
     b2WorldManifold manifold;
     contact->GetWorldManifold(&manifold);
@@ -66,6 +67,7 @@ void ContactRecorder::PreSolve(b2Contact* contact, const b2Manifold* /*oldManifo
 
 void ContactRecorder::PostSolve(b2Contact* contact, const b2ContactImpulse* impulse)
 {
+    m_ledger.postSolve(contact, impulse, m_bird);
     const auto it = m_closingSpeed.find(contact);
     if (it == m_closingSpeed.end() || it->second < m_threshold)
         return; // resting contact never hurts

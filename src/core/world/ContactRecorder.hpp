@@ -1,5 +1,7 @@
 #pragma once
 
+#include "world/ImpulseLedger.hpp"
+
 #include <box2d/box2d.h>
 #include <optional>
 #include <unordered_map>
@@ -66,6 +68,10 @@ public:
         m_birdTouches.clear();
     }
 
+    /// The step's impulses as vectors, kept while the watched bird flies free (its first impact's balance).
+    ImpulseLedger& ledger() { return m_ledger; }
+    const ImpulseLedger& ledger() const { return m_ledger; }
+
     void BeginContact(b2Contact* contact) override;
     void PreSolve(b2Contact* contact, const b2Manifold* oldManifold) override;
     void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override;
@@ -81,6 +87,7 @@ private:
     std::unordered_map<int, double> m_impulses;
     std::vector<Hit> m_hits;
     std::vector<std::pair<int, int>> m_birdTouches;
+    ImpulseLedger m_ledger;
 };
 
 } // namespace abalike

@@ -51,6 +51,27 @@ double FirstImpact::kineticAfterJ() const
     return kinetic(birdMassKg, birdInertiaKgM2, birdAfter) + kinetic(bodyMassKg, bodyInertiaKgM2, bodyAfter);
 }
 
+std::array<double, 2> FirstImpact::birdChange() const
+{
+    return {birdMassKg * (birdAfter.vx - birdBefore.vx), birdMassKg * (birdAfter.vy - birdBefore.vy)};
+}
+
+std::array<double, 2> FirstImpact::bodyChange() const
+{
+    return {bodyMassKg * (bodyAfter.vx - bodyBefore.vx), bodyMassKg * (bodyAfter.vy - bodyBefore.vy)};
+}
+
+std::array<double, 2> FirstImpact::balanceResidual() const
+{
+    const auto bird = birdChange();
+    const auto body = bodyChange();
+    std::array<double, 2> residual{};
+    for (std::size_t i = 0; i < 2; ++i)
+        residual[i] = bird[i] + body[i] - balance.supports[i] - balance.birdOtherContacts[i] - balance.gravity[i] -
+                      balance.breakThrough[i];
+    return residual;
+}
+
 std::optional<double> FirstImpact::restitution() const
 {
     // Relative velocity of the two contact points along the normal (bird into body): positive while closing.
@@ -73,6 +94,7 @@ void ImpactRecorder::finishStep(const std::array<double, 2>& refund, int birdInd
     const Entity& other = m_bodies.entity(m_pending);
     m_pending = -1;
     m_impact->broke = !other.alive;
+    std::array<double, 2> givenBack{0.0, 0.0};
     if (m_impact->broke)
     {
         // It absorbed only its remaining strength; the impulse given back to the bird is momentum the broken body
@@ -80,9 +102,14 @@ void ImpactRecorder::finishStep(const std::array<double, 2>& refund, int birdInd
         m_impact->damageNs = std::min(m_impact->damageNs, m_impact->strengthBeforeNs);
         m_impact->bodyAfter.vx -= refund[0] / m_impact->bodyMassKg;
         m_impact->bodyAfter.vy -= refund[1] / m_impact->bodyMassKg;
+        givenBack = refund;
     }
     if (birdIndex >= 0)
         m_impact->birdAfter = velocityOf(*m_bodies.entity(birdIndex).body);
+    // The break rule's share: what it gave the bird (refund, momentum handed on) less what the body gave back.
+    const double m = m_impact->birdMassKg;
+    m_impact->balance.breakThrough = {m * (m_impact->birdAfter.vx - m_birdAfterSolver.vx) - givenBack[0],
+                                      m * (m_impact->birdAfter.vy - m_birdAfterSolver.vy) - givenBack[1]};
 }
 
 void ImpactRecorder::snapshot()
@@ -131,6 +158,18 @@ void ImpactRecorder::record(int birdIndex, int otherIndex, double tS)
     const auto damage = contacts.impulses().find(otherIndex);
     impact.damageNs = damage == contacts.impulses().end() ? 0.0 : damage->second;
     impact.strengthBeforeNs = other.health;
+    const ImpulseLedger& ledger = contacts.ledger();
+    const ImpulseLedger::Account onBody = ledger.account(otherIndex);
+    const ImpulseLedger::Account onBird = ledger.account(birdIndex);
+    for (std::size_t i = 0; i < 2; ++i)
+    {
+        impact.balance.pushOnBody[i] = onBody.fromBird[i];
+        impact.balance.supports[i] = onBody.contacts[i] - onBody.fromBird[i];
+        // The bird got the opposite of the push it gave; the rest of its contact impulses came from elsewhere.
+        impact.balance.birdOtherContacts[i] = onBird.contacts[i] + onBody.fromBird[i];
+        impact.balance.gravity[i] = onBody.gravity[i] + onBird.gravity[i];
+    }
+    m_birdAfterSolver = impact.birdAfter;
     m_impact = impact;
     m_pending = otherIndex; // finishStep completes the record once damage is applied
 }

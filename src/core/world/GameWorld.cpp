@@ -46,6 +46,8 @@ void GameWorld::step()
 {
     m_bodies->contacts().clearStep();
     const std::array<double, 2> birdStart = m_birds->beforeStep();
+    // The ledger and the snapshot only while the bird flies free: its next contact may be its first impact.
+    m_bodies->contacts().ledger().startStep(m_birds->inFreeFlight());
     if (m_birds->inFreeFlight())
         m_impacts->snapshot();
     const bool settle = m_steps == 0;

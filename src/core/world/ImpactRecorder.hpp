@@ -35,6 +35,7 @@ private:
     std::vector<BodyVelocity> m_stepStartVelocities; ///< per entity, at the start of a step in free flight
     std::optional<FirstImpact> m_impact;
     int m_pending = -1;
+    BodyVelocity m_birdAfterSolver; ///< the pending impact's bird velocity before the break rule acted
 };
 
 } // namespace abalike

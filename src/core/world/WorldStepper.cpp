@@ -139,12 +139,15 @@ void WorldStepper::stepBox2d(bool settle)
     const WorldSettings& settings = m_bodies.settings();
     const auto h = static_cast<float>(settings.dtS / m_lastSubsteps);
     const double rolling = settings.rollingResistance ? m_bodies.catalog().rollingResistance() : 0.0;
+    ImpulseLedger& ledger = m_bodies.contacts().ledger();
     for (int i = 0; i < m_lastSubsteps; ++i)
     {
+        ledger.beginSubstep(m_bodies.entities());
         // The first step is the settle step (WorldSettings::settleIterations), in each of its sub-steps.
         m_bodies.world().Step(
             h, settle ? std::max(m_settleIterations, settings.velocityIterations) : settings.velocityIterations,
             settings.positionIterations);
+        ledger.endSubstep(m_bodies.entities(), m_bodies.world().GetGravity(), h);
         if (rolling > 0.0)
             resistRolling(m_bodies.entities(), rolling);
         if (settle)
