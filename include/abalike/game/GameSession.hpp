@@ -40,6 +40,7 @@ struct ShotRecord
     std::optional<EntityKind> firstTouched;           ///< what the bird first touched
     std::vector<std::array<double, 3>> predictedPath; ///< (t, x, y)
     std::vector<std::array<double, 3>> actualPath;    ///< (t, x, y)
+    std::vector<std::vector<BodyRef>> actualTouches;  ///< beside each actualPath point: what the bird touched
     std::optional<AbilityUse> ability; ///< the ability, if used: when, where, and every impulse it applied
     /// The energy balance at the first contact, along the RK4 flight the bird flew; none when an ability fired
     /// before the first contact or the bird touched nothing.

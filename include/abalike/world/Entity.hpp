@@ -22,6 +22,16 @@ enum class EntityKind
     Bird, ///< the launched bird and what its ability adds (split birds, eggs)
 };
 
+/// A body of the level as its files name it: its kind and its index in the level's blocks, pigs or terrain (-1 for
+/// the ground; for a bird, its shot number).
+struct BodyRef
+{
+    EntityKind kind = EntityKind::Ground;
+    int index = -1;
+
+    bool operator==(const BodyRef&) const = default;
+};
+
 /// The name of a kind in simulate's JSON and reports ("ground", "terrain", "block", "pig", "bird").
 const char* entityKindName(EntityKind kind);
 

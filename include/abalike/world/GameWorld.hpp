@@ -105,6 +105,8 @@ public:
     const std::optional<FirstImpact>& birdImpact() const;
     /// The bird's path since launch, one point (t since launch, x, y) per step.
     const std::vector<std::array<double, 3>>& birdPath() const;
+    /// Beside each point of birdPath(): what the bird touched in the step that ended there.
+    const std::vector<std::vector<BodyRef>>& birdPathTouches() const;
 
     /// Whether the launched bird's ability can be used now: split, boost and egg while it flies free, explode
     /// while it is in the world; each once.

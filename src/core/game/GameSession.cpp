@@ -125,6 +125,7 @@ void GameSession::launch(double angleDeg, double speedMps)
     const auto p = launchPoint();
     m_world->launchBird(*bird, flightModelFor(*bird), launchState(p[0], p[1], speedMps, angleDeg));
     shot.actualPath = m_world->birdPath();
+    shot.actualTouches = m_world->birdPathTouches();
     m_shots.push_back(std::move(shot));
     ++m_nextBird;
     m_phase = Phase::Flying;
@@ -219,6 +220,9 @@ void GameSession::updateBird()
     const auto& path = m_world->birdPath();
     for (std::size_t i = shot.actualPath.size(); i < path.size(); ++i)
         shot.actualPath.push_back(path[i]);
+    const auto& touches = m_world->birdPathTouches();
+    for (std::size_t i = shot.actualTouches.size(); i < touches.size(); ++i)
+        shot.actualTouches.push_back(touches[i]);
     if (shot.actualContact || !m_world->birdContact())
         return;
     shot.actualContact = m_world->birdContact();

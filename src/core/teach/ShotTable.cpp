@@ -11,10 +11,38 @@
 namespace abalike
 {
 
+namespace
+{
+
+/// What the bird touched in a step, for the contact column: "block 3 wood", "pig 0 small", "ground", joined by
+/// " + " (never a comma: it is one cell).
+std::string touchedNames(const LevelDef& level, const std::vector<BodyRef>& touched)
+{
+    std::string text;
+    for (const BodyRef& ref : touched)
+    {
+        if (!text.empty())
+            text += " + ";
+        text += entityKindName(ref.kind);
+        if (ref.kind == EntityKind::Ground || ref.index < 0)
+            continue;
+        text += ' ';
+        text += std::to_string(ref.index);
+        const auto index = static_cast<std::size_t>(ref.index);
+        if (ref.kind == EntityKind::Block && index < level.blocks.size())
+            text.append(" ").append(level.blocks[index].material);
+        else if (ref.kind == EntityKind::Pig && index < level.pigs.size())
+            text.append(" ").append(level.pigs[index].type);
+    }
+    return text;
+}
+
+} // namespace
+
 std::string shotTableCsv(const GameSession& session)
 {
     std::ostringstream csv;
-    csv << "shot,t_s,x_m,y_m,vx_mps,vy_mps,ax_mps2,ay_mps2,speed_mps,kinetic_j,potential_j,drag_work_j\n";
+    csv << "shot,t_s,x_m,y_m,vx_mps,vy_mps,ax_mps2,ay_mps2,speed_mps,kinetic_j,potential_j,drag_work_j,contact\n";
     csv << std::setprecision(10);
     const double dt = session.world().dt();
     const double g = session.level().environment.gravity;
@@ -24,11 +52,24 @@ std::string shotTableCsv(const GameSession& session)
         const BirdType* bird = session.catalog().findBird(shot.bird);
         if (bird == nullptr)
             continue;
-        // One point per step: the path also holds the moment of first contact, between two steps.
+        // One point per step: the path also holds the moment of first contact, between two steps, whose touch
+        // goes to the step it happened in.
         std::vector<std::array<double, 3>> path;
-        for (const auto& point : shot.actualPath)
-            if (std::abs(point[0] / dt - std::round(point[0] / dt)) < 1e-6)
-                path.push_back(point);
+        std::vector<std::vector<BodyRef>> touches;
+        std::vector<BodyRef> pending;
+        for (std::size_t p = 0; p < shot.actualPath.size(); ++p)
+        {
+            const auto& point = shot.actualPath[p];
+            if (p < shot.actualTouches.size())
+                for (const BodyRef& ref : shot.actualTouches[p])
+                    if (std::find(pending.begin(), pending.end(), ref) == pending.end())
+                        pending.push_back(ref);
+            if (std::abs(point[0] / dt - std::round(point[0] / dt)) >= 1e-6)
+                continue;
+            path.push_back(point);
+            touches.push_back(std::move(pending));
+            pending.clear();
+        }
         IntegratorSettings settings;
         settings.dtS = dt;
         const FlightModel flightModel = levelFlightModel(session.level().environment, *bird);
@@ -59,6 +100,8 @@ std::string shotTableCsv(const GameSession& session)
         const double m = bird->massKg;
         double dragWork = 0.0;
         double lastDragPower = 0.0;
+        double lastVx = 0.0;
+        double lastVy = 0.0;
         for (std::size_t i = 0; i < path.size(); ++i)
         {
             const std::size_t a = i == 0 ? 0 : i - 1;
@@ -73,12 +116,15 @@ std::string shotTableCsv(const GameSession& session)
                 vx = shot.speedMps * std::cos(angle);
                 vy = shot.speedMps * std::sin(angle);
             }
+            // The measured acceleration: the change of the velocity column over the step that ends at this row, so
+            // that a row through a collision carries it and a spreadsheet's dv/dt agrees with the column.
             double ax = 0.0;
             double ay = 0.0;
-            if (i > 0 && i + 1 < path.size())
+            if (i > 0)
             {
-                ax = (path[i + 1][1] - 2.0 * path[i][1] + path[i - 1][1]) / (dt * dt);
-                ay = (path[i + 1][2] - 2.0 * path[i][2] + path[i - 1][2]) / (dt * dt);
+                const double step = path[i][0] - path[i - 1][0];
+                ax = step > 0 ? (vx - lastVx) / step : 0.0;
+                ay = step > 0 ? (vy - lastVy) / step : 0.0;
             }
             double x = path[i][1];
             double y = path[i][2];
@@ -103,8 +149,11 @@ std::string shotTableCsv(const GameSession& session)
                 dragWork += 0.5 * (dragPower + lastDragPower) * (path[i][0] - path[i - 1][0]);
             lastDragPower = dragPower;
             const double speed = std::hypot(vx, vy);
+            lastVx = vx;
+            lastVy = vy;
             csv << k + 1 << ',' << path[i][0] << ',' << x << ',' << y << ',' << vx << ',' << vy << ',' << ax << ','
-                << ay << ',' << speed << ',' << 0.5 * m * speed * speed << ',' << m * g * y << ',' << dragWork << '\n';
+                << ay << ',' << speed << ',' << 0.5 * m * speed * speed << ',' << m * g * y << ',' << dragWork << ','
+                << touchedNames(session.level(), touches[i]) << '\n';
         }
     }
     return csv.str();

@@ -27,7 +27,33 @@ constexpr double kBirdLifetimeS = 12.0;
 /// bird's outline.
 constexpr int16 kBirdGroup = -1;
 
+BodyRef refOf(const Entity& e)
+{
+    return {e.kind, e.kind == EntityKind::Ground ? -1 : e.defIndex};
+}
+
 } // namespace
+
+std::vector<BodyRef> BirdFlight::touchedInStep(b2Body* body) const
+{
+    // What it touches now, and what it began to touch in the step and left again within it (a glancing hit).
+    std::vector<BodyRef> touched;
+    const auto add = [&](int index)
+    {
+        if (index < 0)
+            return;
+        const BodyRef ref = refOf(m_bodies.entity(index));
+        if (std::find(touched.begin(), touched.end(), ref) == touched.end())
+            touched.push_back(ref);
+    };
+    for (const auto& [birdIndex, other] : m_bodies.contacts().birdTouches())
+        if (birdIndex == m_birdIndex)
+            add(other);
+    for (b2ContactEdge* edge = body->GetContactList(); edge != nullptr; edge = edge->next)
+        if (edge->contact->IsTouching() && edge->contact->IsEnabled())
+            add(entityIndexOf(edge->other));
+    return touched;
+}
 
 b2Body* BirdFlight::createBody(int index, double radiusM, double massKg, double friction, double restitution,
                                const FlightState& s)
@@ -106,6 +132,7 @@ int BirdFlight::launch(const BirdType& bird, const FlightModel& model, const Fli
     m_contactKind.reset();
     m_impacts.reset();
     m_path.assign(1, {0.0, s0[0], s0[1]});
+    m_pathTouches.assign(1, {});
     m_bodies.contacts().watchBird(body);
     return m_birdIndex;
 }
@@ -273,11 +300,15 @@ void BirdFlight::afterStep(const std::array<double, 2>& stepStart)
         if (m_flight)
             m_impacts.record(m_birdIndex, other, t);
         m_path.push_back({t, touch.x, touch.y});
+        m_pathTouches.emplace_back();
+        if (other >= 0)
+            m_pathTouches.back().push_back(refOf(m_bodies.entity(other)));
         m_flight.reset();
         body->SetGravityScale(1.0f);
     }
     const b2Vec2 p = body->GetPosition();
     m_path.push_back({sinceLaunch, p.x, p.y});
+    m_pathTouches.push_back(touchedInStep(body));
 }
 
 void BirdFlight::retire()

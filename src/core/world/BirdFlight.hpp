@@ -56,6 +56,9 @@ public:
     const std::optional<ContactPoint>& contact() const { return m_contact; }
     const std::optional<EntityKind>& contactKind() const { return m_contactKind; }
     const std::vector<std::array<double, 3>>& path() const { return m_path; }
+    /// Beside each point of path(): what the bird touched in the step that ended there (at the contact point: what
+    /// it first touched).
+    const std::vector<std::vector<BodyRef>>& pathTouches() const { return m_pathTouches; }
     const std::optional<double>& shotContactTime() const { return m_shotContactTimeS; }
 
     /// The launched bird's state now (x, y, vx, vy).
@@ -84,6 +87,7 @@ private:
                        const FlightState& s);
     void applyFlightForces(b2Body* body, const FlightIntegrator& model, double sinceLaunchS);
     void removeProjectile(std::size_t slot);
+    std::vector<BodyRef> touchedInStep(b2Body* body) const;
 
     WorldBodies& m_bodies;
     ImpactRecorder& m_impacts;
@@ -100,6 +104,7 @@ private:
     std::optional<ContactPoint> m_contact;
     std::optional<EntityKind> m_contactKind;
     std::vector<std::array<double, 3>> m_path;
+    std::vector<std::vector<BodyRef>> m_pathTouches;
     std::optional<double> m_shotContactTimeS;
     std::vector<Projectile> m_projectiles;
 };

@@ -213,6 +213,11 @@ const std::vector<std::array<double, 3>>& GameWorld::birdPath() const
     return m_birds->path();
 }
 
+const std::vector<std::vector<BodyRef>>& GameWorld::birdPathTouches() const
+{
+    return m_birds->pathTouches();
+}
+
 std::optional<double> GameWorld::castCircle(double radiusM, const FlightState& a, const FlightState& b) const
 {
     const double chordM = std::hypot(b[0] - a[0], b[1] - a[1]);
