@@ -589,9 +589,11 @@ TEST_F(TeachFlow, AtLargeTextTheTeachingPanelsShrinkRatherThanCoverTheSlingshotT
         }
         else
         {
-            // After the first contact the camera turns to the struck frame: the Why panel's one line came over a
-            // pig then, so it is left out until the next aim.
-            EXPECT_EQ(findBox(panels, "why"), panels.end()) << what;
+            // After the first contact the camera turns to the struck frame: a Why panel that came over a pig then is
+            // left out until the next aim (the loop above checks that none covers it), and the impact panel, too
+            // tall for the room left, shows its one line.
+            const auto why = findBox(panels, "why");
+            EXPECT_TRUE(why == panels.end() || why->h < 80.0) << what;
             EXPECT_TRUE(summaryShown(panels, "first impact")) << what;
         }
     }

@@ -57,8 +57,9 @@ void drawForceArrows(sf::RenderTarget& target, const sf::Font& font, const Camer
         std::string name;
     };
     const std::array<double, 2> v{bird.state[2], bird.state[3]};
-    // a = sum of the forces / m, on the same scale: the thin arrow is the sum of the thick force arrows.
-    const std::array<double, 2> ma{bird.massKg * bird.accelerationMps2[0], bird.massKg * bird.accelerationMps2[1]};
+    // The net force, on the forces' scale: the thin arrow is the sum of the thick ones (and m a, which is why the
+    // bird's path bends that way; the acceleration itself is a motion, not one more force, and is not drawn here).
+    const std::array<double, 2> net{bird.gravityN[0] + bird.dragN[0], bird.gravityN[1] + bird.dragN[1]};
     // Velocity first, so that a force pointing along it (a tailwind's push) is drawn over it.
     std::vector<Arrow> arrows{{centre + pxPerMps * screenDirection(v), width, teach::kVelocity, "v"}};
     if (components)
@@ -73,7 +74,7 @@ void drawForceArrows(sf::RenderTarget& target, const sf::Font& font, const Camer
             {centre + pxPerMps * screenDirection(bird.airVelocityMps), 1.8f * scale, teach::kWind, "v \u2212 w"});
     arrows.push_back({centre + pxPerN * screenDirection(bird.gravityN), width, teach::kGravity, "mg"});
     arrows.push_back({centre + pxPerN * screenDirection(bird.dragN), width, teach::kDrag, "drag"});
-    arrows.push_back({centre + pxPerN * screenDirection(ma), 1.8f * scale, teach::kAcceleration, "ma"});
+    arrows.push_back({centre + pxPerN * screenDirection(net), 1.8f * scale, teach::kAcceleration, "net F"});
     Mesh mesh;
     for (const Arrow& arrow : arrows)
         addArrow(mesh, centre, arrow.tip, arrow.width, arrow.colour, 1.0f * scale);
@@ -95,34 +96,39 @@ sf::FloatRect drawForceLegend(sf::RenderTarget& target, const sf::Font& font, sf
                               const BirdReadout& bird, bool hasDrag, bool hasWind, bool components, unsigned titleSize,
                               unsigned rowSize, float scale)
 {
+    // Forces first, under their own heading, then the motion they cause: velocity and acceleration are not forces.
     std::vector<PanelRow> rows;
     rows.push_back({"t " + withUnit(bird.tS, 2, "s") + "   x " + withUnit(bird.state[0], 1, "m") + "   y " +
                         withUnit(bird.state[1], 1, "m"),
                     "", sf::Color::Transparent, false});
-    rows.push_back({"velocity v", withUnit(std::hypot(bird.state[2], bird.state[3]), 1, "m/s"), teach::kVelocity});
+    rows.push_back({"forces", "", sf::Color::Transparent, true});
+    rows.push_back({"  gravity m g", withUnit(length(bird.gravityN), 1, "N"), teach::kGravity});
+    if (hasDrag)
+        rows.push_back({hasWind ? "  the air's push, against v \u2212 w (drag and wind)" : "  air drag, against v",
+                        withUnit(length(bird.dragN), 1, "N"), teach::kDrag});
+    else
+        rows.push_back({"  no air: gravity is the only force", "", sf::Color::Transparent, false});
+    const std::array<double, 2> net{bird.gravityN[0] + bird.dragN[0], bird.gravityN[1] + bird.dragN[1]};
+    rows.push_back({"  net force \u03A3F", withUnit(length(net), 1, "N"), teach::kAcceleration});
+    rows.push_back({"motion", "", sf::Color::Transparent, true});
+    rows.push_back({"  velocity v", withUnit(std::hypot(bird.state[2], bird.state[3]), 1, "m/s"), teach::kVelocity});
     if (components)
-        rows.push_back({"  vx, vy", withUnit(bird.state[2], 1, "m/s") + ", " + withUnit(bird.state[3], 1, "m/s"),
+        rows.push_back({"    vx, vy", withUnit(bird.state[2], 1, "m/s") + ", " + withUnit(bird.state[3], 1, "m/s"),
                         teach::kVelocity});
     if (hasWind && bird.windy)
-        rows.push_back({"velocity in the air v \u2212 w",
+        rows.push_back({"  velocity in the air v \u2212 w",
                         withUnit(std::hypot(bird.airVelocityMps[0], bird.airVelocityMps[1]), 1, "m/s"), teach::kWind});
-    rows.push_back({"acceleration a = \u03A3F / m", withUnit(length(bird.accelerationMps2), 2, "m/s\u00B2"),
-                    teach::kAcceleration});
-    rows.push_back({"gravity m g", withUnit(length(bird.gravityN), 1, "N"), teach::kGravity});
-    if (hasDrag)
-        rows.push_back({hasWind ? "air drag, against v \u2212 w" : "air drag, against v",
-                        withUnit(length(bird.dragN), 1, "N"), teach::kDrag});
-    if (!hasDrag)
-        rows.push_back({"no air: gravity is the only force", "", sf::Color::Transparent, false});
+    rows.push_back({"  acceleration a = \u03A3F / m", withUnit(length(bird.accelerationMps2), 2, "m/s\u00B2"),
+                    sf::Color::Transparent});
     const TextPanel panel("Forces on the bird (" + formatFixed(bird.massKg, 1) + " kg)", std::move(rows));
     const sf::Vector2f size = panel.measure(font, titleSize, rowSize, scale);
     if (!fullPanelFits(target, {{topRight.x - size.x, topRight.y}, size}, "forces"))
     {
-        std::string summary = "Forces: v " + withUnit(std::hypot(bird.state[2], bird.state[3]), 1, "m/s") + ", a " +
-                              withUnit(length(bird.accelerationMps2), 2, "m/s\u00B2") + ", m g " +
-                              withUnit(length(bird.gravityN), 1, "N");
+        std::string summary = "Forces: m g " + withUnit(length(bird.gravityN), 1, "N");
         if (hasDrag)
             summary += ", drag " + withUnit(length(bird.dragN), 1, "N");
+        summary += "; v " + withUnit(std::hypot(bird.state[2], bird.state[3]), 1, "m/s") + ", a " +
+                   withUnit(length(bird.accelerationMps2), 2, "m/s\u00B2");
         return drawPanelSummary(target, font, topRight, true, summary, rowSize, scale, "forces");
     }
     return panel.draw(target, font, {topRight.x - size.x, topRight.y}, titleSize, rowSize, scale);
