@@ -72,6 +72,21 @@ INSTANTIATE_TEST_SUITE_P(Files, CheckCliMalformed,
                              return name;
                          });
 
+TEST(CheckCli, AClaimThatDoesNotHoldFailsTheLevelAtTheClaim)
+{
+    // The old 3-4 hint: "Compensate: more power, a steeper angle." In a 6 m/s headwind the farthest shot is
+    // lower than in still air, so its claim is false; the concept's claim holds and is not reported.
+    const std::string file = sourcePath("tests/level/claims/headwind-aim-higher.json");
+    const RunResult r = runAbalike("check " + file);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.out.rfind("FAIL " + file + ": 1 claim(s) of its texts do not hold", 0), 0u) << r.out;
+    EXPECT_NE(r.err.find(file + ":13:36: error: /claims/1/holds: does not hold for this level: best_angle:red = "
+                                "34.01 is not > calm_best_angle:red = 39.41 (so /hints/1 says something untrue)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("/claims/0"), std::string::npos) << r.err;
+}
+
 TEST(CheckCli, OneBadFileFailsTheRunButEveryFileIsReported)
 {
     const RunResult r = runAbalike("check " + kFirstLevel + " " + malformed("unknown-bird"));

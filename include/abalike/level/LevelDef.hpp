@@ -124,6 +124,16 @@ inline constexpr const char* kCustomBirdName = "custom";
 
 enum class WorldTheme; // WorldTheme.hpp
 
+/// A qualitative promise one of the level's texts makes, as a comparison the program computes for the level
+/// (`abalike check` fails when it does not hold): "best_angle:red < calm_best_angle:red".
+struct ClaimDef
+{
+    std::string about; ///< the text it backs, as a JSON pointer: "/concept" or "/hints/N"
+    std::string holds; ///< EXPRESSION OP EXPRESSION, OP one of < > <= >=, expressions as in the placeholders
+
+    bool operator==(const ClaimDef&) const = default;
+};
+
 /// A level, as designers write it in JSON (levels/*.json).
 struct LevelDef
 {
@@ -133,6 +143,7 @@ struct LevelDef
     std::string episode; ///< id of the campaign episode it belongs to; empty when it stands alone
     std::string lesson;  ///< the physics concept it teaches ("concept" in JSON)
     std::vector<std::string> hints;
+    std::vector<ClaimDef> claims; ///< what the texts promise, checked by `abalike check`
     double groundY = 0.0;
     SlingshotDef slingshot;
     std::vector<std::string> birds; ///< bird type names, in launch order

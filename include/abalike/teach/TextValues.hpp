@@ -3,6 +3,7 @@
 #include <abalike/level/LevelDef.hpp>
 #include <abalike/world/Catalog.hpp>
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -57,6 +58,14 @@ std::string fillText(std::string_view text, const LevelDef& level, const Catalog
 /// Checks every placeholder's syntax, names and arguments without computing the flight values (cheap enough for
 /// the level reader). Returns the errors; empty when the text fills.
 std::vector<TextValueError> checkText(std::string_view text, const LevelDef& level, const Catalog& catalog);
+
+/// The value of one expression of the placeholders' grammar, without braces ("best_angle:red - 2"). Throws
+/// TextValueError with the offset in the expression.
+double evaluateExpression(std::string_view expression, const LevelDef& level, const Catalog& catalog);
+
+/// Checks an expression's syntax, names and arguments without computing anything.
+std::optional<TextValueError> checkExpression(std::string_view expression, const LevelDef& level,
+                                              const Catalog& catalog);
 
 /// fillText, or the text as written when a placeholder does not fill (the reader rejects such a file, so this is
 /// only for a level built in code): what the game shows.

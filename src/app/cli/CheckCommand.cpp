@@ -10,6 +10,7 @@
 #include <abalike/level/LevelText.hpp>
 #include <abalike/level/SafeText.hpp>
 #include <abalike/save/AtomicWrite.hpp>
+#include <abalike/teach/Claims.hpp>
 #include <abalike/teach/TextValues.hpp>
 #include <abalike/world/RestCheck.hpp>
 #include <abalike/world/RestFindings.hpp>
@@ -218,6 +219,24 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
     if (!item.episode.empty() && level.episode != item.episode)
         report.reasons.push_back("the campaign lists it in episode \"" + item.episode + "\" but it says \"" +
                                  level.episode + "\"");
+
+    // What the texts promise, computed for this level: a promise that does not hold is an error at its claim.
+    std::vector<LevelIssue> falseClaims;
+    for (std::size_t i = 0; i < level.claims.size(); ++i)
+    {
+        const ClaimResult claim = evaluateClaim(level.claims[i], level, Catalog::builtin());
+        if (!claim.holds)
+            falseClaims.push_back({item.file, 0, 0, "/claims/" + std::to_string(i) + "/holds",
+                                   "does not hold for this level: " + claim.message + " (so " + level.claims[i].about +
+                                       " says something untrue)"});
+    }
+    if (!falseClaims.empty())
+    {
+        locateIssues(falseClaims, readText(item.file), item.file);
+        report.reasons.push_back(std::to_string(falseClaims.size()) + " claim(s) of its texts do not hold, first " +
+                                 falseClaims.front().pointer + ": " + falseClaims.front().message);
+        report.issues.insert(report.issues.end(), falseClaims.begin(), falseClaims.end());
+    }
 
     if (a.fix)
         report.fixes = fixRestFindings(item.file, *report.level);

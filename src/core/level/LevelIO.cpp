@@ -10,6 +10,7 @@
 #include <abalike/level/PolygonPartition.hpp>
 #include <abalike/level/SafeText.hpp>
 #include <abalike/level/WorldTheme.hpp>
+#include <abalike/teach/Claims.hpp>
 #include <abalike/teach/TextValues.hpp>
 #include <abalike/world/Catalog.hpp>
 
@@ -357,6 +358,47 @@ void readHints(LevelReader& r, const json& root, LevelDef& level)
     }
 }
 
+void readClaims(LevelReader& r, const json& root, LevelDef& level)
+{
+    const auto it = root.find("claims");
+    if (it == root.end() || !r.array(*it, "/claims", 0, kMaxClaims, "claims"))
+        return;
+    for (std::size_t i = 0; i < it->size(); ++i)
+    {
+        const std::string p = "/claims/" + std::to_string(i);
+        if (!r.object((*it)[i], p, {"about", "holds"}))
+            continue;
+        ClaimDef claim;
+        claim.about = r.string((*it)[i], p, "about", "", true);
+        claim.holds = r.string((*it)[i], p, "holds", "", true);
+        level.claims.push_back(std::move(claim));
+    }
+}
+
+/// A claim backs a text the level has, and its comparison names values this level has (levels/README.md).
+void checkClaims(LevelReader& r, const LevelDef& level, const Catalog& catalog)
+{
+    for (std::size_t i = 0; i < level.claims.size(); ++i)
+    {
+        const ClaimDef& claim = level.claims[i];
+        const std::string p = "/claims/" + std::to_string(i);
+        bool known = claim.about == "/concept" && !level.lesson.empty();
+        for (std::size_t h = 0; h < level.hints.size() && !known; ++h)
+            known = claim.about == "/hints/" + std::to_string(h);
+        if (!known)
+        {
+            const std::size_t hints = level.hints.size();
+            const std::string texts =
+                hints == 0   ? "\"/concept\" (the level has no hints)"
+                : hints == 1 ? "\"/concept\" or \"/hints/0\""
+                             : "\"/concept\" or \"/hints/0\" to \"/hints/" + std::to_string(hints - 1) + "\"";
+            r.error(p + "/about", "expected the text the claim backs: " + texts + ", got \"" + claim.about + "\"");
+        }
+        for (const auto& [offset, message] : checkClaim(claim.holds, level, catalog))
+            r.error(p + "/holds", "character " + std::to_string(offset + 1) + " of the claim: " + message);
+    }
+}
+
 /// The {...} placeholders of the concept and the hints name values this level has (docs: levels/README.md).
 void checkTextPlaceholders(LevelReader& r, const LevelDef& level, const Catalog& catalog)
 {
@@ -466,14 +508,15 @@ LevelDef parseLevelText(std::string_view text, const std::string& fileName, cons
     r.safeText(root);
     LevelDef level;
     level.sourcePath = fileName;
-    if (!r.object(root, "",
-                  {"$schema", "format",      "id",        "title", "episode",      "concept",        "hints",
-                   "sandbox", "ground",      "slingshot", "birds", "custom_bird",  "blocks",         "pigs",
-                   "terrain", "environment", "materials", "stars", "time_limit_s", "reference_shot", "theme"}))
+    if (!r.object(root, "", {"$schema",      "format",         "id",      "title",       "episode",   "concept",
+                             "hints",        "sandbox",        "ground",  "slingshot",   "birds",     "custom_bird",
+                             "blocks",       "pigs",           "terrain", "environment", "materials", "stars",
+                             "time_limit_s", "reference_shot", "theme",   "claims"}))
         throw LevelLoadError(r.take());
 
     readHeader(r, root, level);
     readHints(r, root, level);
+    readClaims(r, root, level);
     readSlingshot(r, root, level);
     readBirds(r, root, level, catalog);
     readBlocks(r, root, level, catalog);
@@ -485,7 +528,10 @@ LevelDef parseLevelText(std::string_view text, const std::string& fileName, cons
     readStars(r, root, level);
     readReferenceShot(r, root, level, catalog);
     if (r.ok())
+    {
         checkTextPlaceholders(r, level, catalog);
+        checkClaims(r, level, catalog);
+    }
     if (!r.ok())
         throw LevelLoadError(r.take());
 

@@ -55,6 +55,7 @@ inline constexpr std::size_t kMaxPigs = 100;
 inline constexpr std::size_t kMaxTerrain = 200;
 inline constexpr std::size_t kMaxTerrainPoints = 256; ///< corners of one terrain polygon
 inline constexpr std::size_t kMaxHints = 20;
+inline constexpr std::size_t kMaxClaims = 40;
 inline constexpr std::size_t kMaxGustSteps = 100;
 
 /// A large level is a few kB; a level nests 4 deep.

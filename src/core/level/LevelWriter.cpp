@@ -233,6 +233,13 @@ std::string writeLevelJson(const LevelDef& level, const std::string& schemaRefer
         root["concept"] = level.lesson;
     if (!level.hints.empty())
         root["hints"] = level.hints;
+    if (!level.claims.empty())
+    {
+        OrderedJson claims = OrderedJson::array();
+        for (const ClaimDef& claim : level.claims)
+            claims.push_back({{"about", claim.about}, {"holds", claim.holds}});
+        root["claims"] = std::move(claims);
+    }
     if (level.sandbox)
         root["sandbox"] = true;
     if (level.groundY != 0.0)
@@ -299,7 +306,7 @@ std::string writeLevelJson(const LevelDef& level, const std::string& schemaRefer
     for (const auto& [key, value] : root.items())
     {
         out += "  " + text(key) + ": ";
-        const bool listed = key == "hints" || key == "blocks" || key == "pigs" || key == "terrain";
+        const bool listed = key == "hints" || key == "claims" || key == "blocks" || key == "pigs" || key == "terrain";
         print(out, value, 2, 4 + text(key).size(), listed);
         out += ++i < root.size() ? ",\n" : "\n";
     }

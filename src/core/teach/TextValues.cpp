@@ -25,6 +25,8 @@ const std::vector<TextValueName>& textValueNames()
         {"best_range", "BIRD", "that farthest range, to the ground", "m", 1},
         {"vacuum_best_angle", "BIRD", "best_angle with no air (from the slingshot's height)", "degrees", 1},
         {"vacuum_best_range", "BIRD", "best_range with no air (from the slingshot's height)", "m", 1},
+        {"calm_best_angle", "BIRD", "best_angle in this level's air with no wind (still air)", "degrees", 1},
+        {"calm_best_range", "BIRD", "best_range in this level's air with no wind (still air)", "m", 1},
         {"terminal", "BIRD", "terminal speed in this air, sqrt(m g / c) with c = 1/2 rho Cd A", "m/s", 1},
         {"boost", "", "speed the boost ability adds along the flight", "m/s", -1},
         {"g", "", "gravity", "m/s^2", -1},
@@ -128,17 +130,26 @@ const GustDef& sineGust(const LevelDef& level, std::string_view name)
     return *gusts;
 }
 
+/// What of the level's air a chart flies in.
+enum class Air
+{
+    AsItIs, ///< drag, wind and gusts
+    Calm,   ///< drag without wind or gusts: still air
+    None,   ///< vacuum
+};
+
 /// The best range over launch angles from 0 to 89 degrees at full pull.
-RangeChart fullPullChart(const LevelDef& level, const Catalog& catalog, const BirdType& bird, bool withAir)
+RangeChart fullPullChart(const LevelDef& level, const Catalog& catalog, const BirdType& bird, Air air)
 {
     RangeLaunch launch;
     launch.model = levelFlightModel(level.environment, bird);
-    if (!withAir)
+    if (air != Air::AsItIs)
     {
-        launch.model.linearDrag = launch.model.quadraticDrag = 0.0;
         launch.model.windX = launch.model.windY = 0.0;
         launch.model.gusts.reset();
     }
+    if (air == Air::None)
+        launch.model.linearDrag = launch.model.quadraticDrag = 0.0;
     launch.speedMps = maxLaunchSpeed(level.slingshot, bird, catalog);
     launch.heightM = std::max(0.0, level.slingshot.y - level.groundY);
     return rangeChart(launch, 0.0, 89.0, 1.0);
@@ -195,8 +206,10 @@ double evaluate(const LevelDef& level, const Catalog& seen, std::string_view nam
                 fail(braced("terminal", arg) + ": the level has no air");
             return std::sqrt(bird.massKg * air.gravity / c);
         }
-        const bool vacuum = name.rfind("vacuum_", 0) == 0;
-        const RangeChart chart = fullPullChart(level, seen, bird, !vacuum);
+        const Air chartAir = name.rfind("vacuum_", 0) == 0 ? Air::None
+                             : name.rfind("calm_", 0) == 0 ? Air::Calm
+                                                           : Air::AsItIs;
+        const RangeChart chart = fullPullChart(level, seen, bird, chartAir);
         return chartValue(chart, name.find("angle") != std::string_view::npos, name);
     }
     if (std::string_view(known->argument) == "MATERIAL")
@@ -511,6 +524,31 @@ std::vector<TextValueError> checkText(std::string_view text, const LevelDef& lev
         return {e};
     }
     return {};
+}
+
+double evaluateExpression(std::string_view expression, const LevelDef& level, const Catalog& catalog)
+{
+    const Catalog seen = levelCatalog(level, catalog);
+    Expression parsed(expression, 0, level, seen, true);
+    int decimals = 2;
+    return parsed.parse(decimals);
+}
+
+std::optional<TextValueError> checkExpression(std::string_view expression, const LevelDef& level,
+                                              const Catalog& catalog)
+{
+    try
+    {
+        const Catalog seen = levelCatalog(level, catalog);
+        Expression parsed(expression, 0, level, seen, false);
+        int decimals = 2;
+        parsed.parse(decimals);
+    }
+    catch (const TextValueError& e)
+    {
+        return e;
+    }
+    return std::nullopt;
 }
 
 std::string levelText(std::string_view text, const LevelDef& level, const Catalog& catalog)

@@ -1,0 +1,123 @@
+#include <abalike/teach/Claims.hpp>
+#include <abalike/teach/TextValues.hpp>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+
+namespace abalike
+{
+
+namespace
+{
+
+std::string_view trimmed(std::string_view text)
+{
+    while (!text.empty() && text.front() == ' ')
+        text.remove_prefix(1);
+    while (!text.empty() && text.back() == ' ')
+        text.remove_suffix(1);
+    return text;
+}
+
+std::string shown(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", value);
+    return text;
+}
+
+} // namespace
+
+std::optional<ClaimParts> splitClaim(std::string_view holds, std::string& error)
+{
+    std::optional<std::size_t> at;
+    std::size_t length = 0;
+    for (std::size_t i = 0; i < holds.size(); ++i)
+    {
+        if (holds[i] != '<' && holds[i] != '>')
+            continue;
+        if (at)
+        {
+            error = "expected one comparison (< > <= >=), found a second at character " + std::to_string(i + 1);
+            return std::nullopt;
+        }
+        at = i;
+        length = i + 1 < holds.size() && holds[i + 1] == '=' ? 2 : 1;
+        i += length - 1;
+    }
+    if (!at)
+    {
+        error = "expected EXPRESSION < EXPRESSION (or >, <=, >=), found no comparison";
+        return std::nullopt;
+    }
+    ClaimParts parts;
+    parts.left = trimmed(holds.substr(0, *at));
+    parts.op = holds.substr(*at, length);
+    parts.rightOffset = *at + length;
+    parts.right = trimmed(holds.substr(parts.rightOffset));
+    while (parts.rightOffset < holds.size() && holds[parts.rightOffset] == ' ')
+        ++parts.rightOffset;
+    if (parts.left.empty() || parts.right.empty())
+    {
+        error = std::string("expected an expression on each side of ") + std::string(parts.op);
+        return std::nullopt;
+    }
+    return parts;
+}
+
+std::vector<std::pair<std::size_t, std::string>> checkClaim(std::string_view holds, const LevelDef& level,
+                                                            const Catalog& catalog)
+{
+    std::string error;
+    const std::optional<ClaimParts> parts = splitClaim(holds, error);
+    if (!parts)
+        return {{0, error}};
+    std::vector<std::pair<std::size_t, std::string>> problems;
+    const std::size_t leftOffset = static_cast<std::size_t>(parts->left.data() - holds.data());
+    if (const auto e = checkExpression(parts->left, level, catalog))
+        problems.emplace_back(leftOffset + e->offset(), e->what());
+    if (const auto e = checkExpression(parts->right, level, catalog))
+        problems.emplace_back(parts->rightOffset + e->offset(), e->what());
+    return problems;
+}
+
+ClaimResult evaluateClaim(const ClaimDef& claim, const LevelDef& level, const Catalog& catalog)
+{
+    ClaimResult result;
+    std::string error;
+    const std::optional<ClaimParts> parts = splitClaim(claim.holds, error);
+    if (!parts)
+    {
+        result.message = error;
+        return result;
+    }
+    try
+    {
+        result.left = evaluateExpression(parts->left, level, catalog);
+        result.right = evaluateExpression(parts->right, level, catalog);
+    }
+    catch (const TextValueError& e)
+    {
+        result.message = std::string("cannot be computed: ") + e.what();
+        return result;
+    }
+    const std::string_view op = parts->op;
+    result.holds = op == "<"    ? result.left < result.right
+                   : op == ">"  ? result.left > result.right
+                   : op == "<=" ? result.left <= result.right
+                                : result.left >= result.right;
+    // "best_angle:red = 34.01", or just "45" for a number written as such.
+    const auto side = [](std::string_view written, double value)
+    {
+        const std::string text(written);
+        char* end = nullptr;
+        std::strtod(text.c_str(), &end);
+        return end != nullptr && *end == '\0' ? text : text + " = " + shown(value);
+    };
+    result.message = side(parts->left, result.left) + (result.holds ? " is " : " is not ") + std::string(op) + " " +
+                     side(parts->right, result.right);
+    return result;
+}
+
+} // namespace abalike
