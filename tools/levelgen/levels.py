@@ -8,7 +8,7 @@ EARTH_AIR = 1.2
 
 
 def level(id_, title, concept, hints, birds, scene, reference_shot, slingshot=None, environment=None, theme=None,
-          extra=None):
+          extra=None, claims=None):
     body = {
         "$schema": "schema/level.schema.json",
         "format": 1,
@@ -17,6 +17,7 @@ def level(id_, title, concept, hints, birds, scene, reference_shot, slingshot=No
         "episode": id_.split("-")[0],
         "concept": concept,
         "hints": hints,
+        **({"claims": [{"about": about, "holds": holds} for about, holds in claims]} if claims else {}),
         "slingshot": slingshot or {"x": 0, "y": 1.5},
         "birds": birds,
         "blocks": scene.blocks,
@@ -76,7 +77,7 @@ def l1_8():
     roof(s, 28, top, 2.6, "wood")
     return level("1-8", "Over the Wall",
                  "A stone wall stands between you and the pigs. Only a high arc clears it: above 45 degrees the "
-                 "bird climbs steeply and falls almost straight down behind it.",
+                 "bird climbs steeply and comes down steeply behind it.",
                  ["Aim high and pull less: the bird drops behind the wall."],
                  ["red", "red", "red", "red"], s, (62.5, 18))
 
@@ -124,8 +125,9 @@ def l2_8():
     ball(s, 20, 6.75, 0.6, "stone")
     ball(s, 24, 6.75, 0.6, "stone")
     return level("2-8", "Wrecking Crew",
-                 "Toppling passes momentum on: the towers stand closer than they are tall, so the first one to fall "
-                 "lands on the next and that one on the last. The bird only has to start it.",
+                 "A falling tower passes its push on: the towers stand closer than they are tall, so the first one "
+                 "to fall lands on the next, and that one on the last; gravity speeds each as it tips. The bird "
+                 "only has to start it.",
                  ["Hit the first tower high up: it falls onto the next."],
                  ["red", "red", "blue"], s, (12.0, 26.0))
 
@@ -140,10 +142,14 @@ def l3_6():
     pyramid(s, 24.5, 0, 3, 0.7, "wood")
     s.pig("large", 26.5, 0)
     return level("3-6", "Windy Ridge",
-                 "Drag pulls the bird towards the wind's velocity: F = -1/2 rho Cd A |v - w| (v - w). With {wind} m/s "
-                 "at its back the red bird carries farther than in vacuum, over the ridge to the castle.",
-                 ["The tailwind adds range: aim lower than you would in still air."],
-                 ["red", "red", "red", "red"], s, (30.0, 27.0), environment={"air_density": EARTH_AIR, "wind": [8, 0]})
+                 "Drag pulls the bird towards the wind's velocity: F = -1/2 rho Cd A |v - w| (v - w). With {wind} "
+                 "m/s at its back the red bird carries farther than in still air ({best_range:red} m against "
+                 "{calm_best_range:red} m at full pull), over the ridge to the castle.",
+                 ["The tailwind adds range, most to high, slow shots that ride it longest: the farthest shot "
+                  "leaves at {best_angle:red} degrees, against {calm_best_angle:red} in still air."],
+                 ["red", "red", "red", "red"], s, (30.0, 27.0), environment={"air_density": EARTH_AIR, "wind": [8, 0]},
+                 claims=[("/concept", "best_range:red > calm_best_range:red"),
+                         ("/hints/0", "best_angle:red > calm_best_angle:red")])
 
 
 def l3_7():
@@ -155,10 +161,13 @@ def l3_7():
     roof(s, 29, top, 2.6, "ice")
     tnt(s, 32.2, 0)
     return level("3-7", "Storm Front",
-                 "Into a headwind of {wind} m/s the air's drag acts on the bird's speed relative to the wind, which is "
-                 "higher than its ground speed: the bird slows sooner and falls short. Aim higher and pull harder.",
-                 ["The wind blows against you: a flat shot falls short."],
-                 ["red", "yellow", "red"], s, (47.5, 30), environment={"air_density": EARTH_AIR, "wind": [-8, 0]})
+                 "Into a headwind of {wind} m/s the air's drag acts on the bird's speed relative to the wind, "
+                 "which is higher than its ground speed: the bird slows sooner and falls short. Pull harder, and "
+                 "aim a little lower than in still air: a high, slow shot stays longest in the wind.",
+                 ["The wind blows against you: every shot falls shorter than in still air."],
+                 ["red", "yellow", "red"], s, (47.5, 30), environment={"air_density": EARTH_AIR, "wind": [-8, 0]},
+                 claims=[("/concept", "best_angle:red < calm_best_angle:red"),
+                         ("/hints/0", "best_range:red < calm_best_range:red")])
 
 
 def l3_8():
@@ -279,8 +288,10 @@ def l5_8():
     s.pig("medium", 36, 2.1)
     return level("5-8", "Jovian Keep",
                  "On Jupiter g = {g} m/s^2, {g / earth_g|1} times Earth's: even a {v_max:red} m/s bird falls fast, "
-                 "and a block that tips comes down hard. The flight is short and steep.",
-                 ["Aim high: gravity pulls the bird down quickly."],
+                 "and a block that tips comes down hard. The flight is short: {best_range:red} m at most for the "
+                 "red bird.",
+                 ["Gravity pulls the bird down quickly, but the best angle is still about {best_angle:red} "
+                  "degrees: pull hard."],
                  ["red", "red", "black", "red"], s, (7.5, 50), slingshot={"x": 0, "y": 1.5, "max_force_n": 5000},
                  environment={"gravity": 24.79, "air_density": 0.16}, theme="jupiter")
 
@@ -325,11 +336,12 @@ def l6_3():
     cage(s, 22.5, 0, 1.2, "ice", "small")
     cage(s, 45.5, 0, 1.2, "ice", None)
     return level("6-3", "Hill Fort",
-                 "A fort on a hill in a headwind: the fort stands above the pouch and the "
-                 "wind of {wind} m/s pushes the bird back. Range, height and drag at once.",
-                 ["Aim higher than the fort: the headwind takes some range."],
+                 "A fort on a hill in a headwind: the fort stands above the pouch and the wind of {wind} m/s "
+                 "pushes the bird back. Range, height and drag at once.",
+                 ["Clear the fort's wall with a low arc: the headwind takes most from high, slow shots."],
                  ["red", "yellow", "red", "black"], s, (47.5, 27),
-                 environment={"air_density": EARTH_AIR, "wind": [-4, 0]})
+                 environment={"air_density": EARTH_AIR, "wind": [-4, 0]},
+                 claims=[("/hints/0", "best_angle:red < calm_best_angle:red")])
 
 
 def l6_4():

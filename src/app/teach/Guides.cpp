@@ -128,18 +128,18 @@ Guide gravityLesson(const LevelDef& level)
 {
     const double g = level.environment.gravity;
     const std::string ratio = formatFixed(g > 0.0 ? kEarthGravity / g : 0.0, 1);
-    return {
-        "Lesson: gravity",
-        {{"Press G: here g = " + formatFixed(g, 2) + " m/s\u00B2, so the chart's scale is " + ratio + " times Earth's.",
-          [](const GuideContext& c)
-          {
-              return c.chartOn;
-          }},
-         {"Launch at about 45\u00B0 with a gentle pull: the bird stays in the sky " + ratio +
-              " times as long as on Earth.",
-          launched},
-         {"Take out the pig.", won}},
-        "Range and flight time both grow as 1/g: the same launch crosses " + ratio + " times the field here."};
+    return {"Lesson: gravity",
+            {{"Press G: here g = " + formatFixed(g, 2) + " m/s\u00B2, so in vacuum every range is " + ratio +
+                  " times as long as on Earth (R = v\u00B2 sin 2a / g).",
+              [](const GuideContext& c)
+              {
+                  return c.chartOn;
+              }},
+             {"Launch at about 45\u00B0 with a gentle pull: the bird stays in the sky " + ratio +
+                  " times as long as on Earth.",
+              launched},
+             {"Take out the pig.", won}},
+            "Range and flight time both grow as 1/g: the same launch crosses " + ratio + " times the field here."};
 }
 
 Guide lesson(const std::string& id, const LevelDef& level, const Catalog& catalog)
@@ -194,12 +194,12 @@ Guide lesson(const std::string& id, const LevelDef& level, const Catalog& catalo
         return {"Lesson: momentum and energy",
                 {overlayStep("after the first impact a panel shows momentum and energy."),
                  {"Hit the big wood block.", hitABody},
-                 {"Read the impact panel: momentum before and after, the kinetic energy lost (to heat, sound and "
-                  "deformation), the coefficient of restitution, and the impulse the block took against its "
-                  "strength. Then take out the pig.",
+                 {"Read the impact panel: how hard the bird pushed the block, both changes of momentum and what "
+                  "the block stands on pushed, the kinetic energy lost (to heat, sound and deformation), and the "
+                  "impulse the block took against its strength. Then take out the pig.",
                   won}},
-                "Momentum is shared in a collision; kinetic energy is not kept. Whether a block breaks is decided by "
-                "the impulse it takes (N\u00B7s), not by energy."};
+                "Momentum is shared in a collision; kinetic energy is not kept. In this game a block breaks when the "
+                "impulse it takes (N\u00B7s) reaches its strength: a rule of the game, not of energy."};
     if (id == "lesson-materials")
         return materialsLesson(level, catalog);
     if (id == "lesson-gravity")

@@ -1,0 +1,91 @@
+// Claims: what a level's texts promise, computed for the level (levels/README.md, "Claims").
+#include <abalike/level/Campaign.hpp>
+#include <abalike/level/LevelIO.hpp>
+#include <abalike/teach/Claims.hpp>
+#include <filesystem>
+#include <gtest/gtest.h>
+
+namespace abalike
+{
+namespace
+{
+
+const std::string kLevels = std::string(ABALIKE_SOURCE_DIR) + "/levels/";
+
+TEST(Claims, EveryClaimOfTheCampaignAndTheLessonsHolds)
+{
+    std::vector<std::string> paths = loadCampaign(kLevels + "campaign.json");
+    for (const auto& entry : std::filesystem::directory_iterator(kLevels + "lessons"))
+        if (entry.path().extension() == ".json")
+            paths.push_back(entry.path().string());
+    int claims = 0;
+    for (const std::string& path : paths)
+    {
+        const LevelDef level = loadLevel(path, Catalog::builtin());
+        for (std::size_t i = 0; i < level.claims.size(); ++i, ++claims)
+        {
+            const ClaimResult result = evaluateClaim(level.claims[i], level, Catalog::builtin());
+            EXPECT_TRUE(result.holds) << path << " /claims/" << i << ": " << result.message;
+        }
+    }
+    EXPECT_GE(claims, 12) << "the wind, gravity and air levels state comparisons";
+}
+
+LevelDef headwind()
+{
+    return loadLevel(kLevels + "3-4-headwind.json", Catalog::builtin());
+}
+
+TEST(Claims, AHeadwindLowersTheBestAngleAndATailwindRaisesIt)
+{
+    // The misconception the campaign once taught: "in a headwind, aim higher".
+    const LevelDef against = headwind();
+    const ClaimResult lower =
+        evaluateClaim({"/concept", "best_angle:red < calm_best_angle:red"}, against, Catalog::builtin());
+    EXPECT_TRUE(lower.holds) << lower.message;
+    EXPECT_NEAR(lower.left, 34.0, 0.5);
+    EXPECT_NEAR(lower.right, 39.4, 0.5);
+    const LevelDef with = loadLevel(kLevels + "3-6-windy-ridge.json", Catalog::builtin());
+    const ClaimResult farther =
+        evaluateClaim({"/concept", "best_range:red > vacuum_best_range:red"}, with, Catalog::builtin());
+    EXPECT_FALSE(farther.holds) << "an 8 m/s tailwind does not beat vacuum at full pull";
+    EXPECT_EQ(farther.message.rfind("best_range:red = 65.2", 0), 0u) << farther.message;
+    EXPECT_NE(farther.message.find(" is not > vacuum_best_range:red = 93.2"), std::string::npos) << farther.message;
+}
+
+TEST(Claims, ComparisonsAndExpressions)
+{
+    const LevelDef level = headwind();
+    const auto holds = [&](const std::string& claim)
+    {
+        return evaluateClaim({"/concept", claim}, level, Catalog::builtin()).holds;
+    };
+    EXPECT_TRUE(holds("v_max:red > v_max:black"));
+    EXPECT_TRUE(holds("v_max:red >= 30"));
+    EXPECT_TRUE(holds("v_max:red <= 30"));
+    EXPECT_FALSE(holds("v_max:red < 30"));
+    EXPECT_TRUE(holds("mass:red * v_max:red < mass:black * v_max:black"));
+    EXPECT_TRUE(holds("  g>9  "));
+}
+
+TEST(Claims, SyntaxIsCheckedWithoutComputing)
+{
+    const LevelDef level = headwind();
+    std::string error;
+    EXPECT_FALSE(splitClaim("best_angle:red", error));
+    EXPECT_NE(error.find("found no comparison"), std::string::npos);
+    EXPECT_FALSE(splitClaim("1 < 2 < 3", error));
+    EXPECT_FALSE(splitClaim(" < 3", error));
+    const auto parts = splitClaim("g <= 9.81", error);
+    ASSERT_TRUE(parts);
+    EXPECT_EQ(parts->left, "g");
+    EXPECT_EQ(parts->op, "<=");
+    EXPECT_EQ(parts->right, "9.81");
+    const auto problems = checkClaim("g < best_angel:red", level, Catalog::builtin());
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems[0].first, 4u) << "the character where the unknown name starts";
+    EXPECT_NE(problems[0].second.find("unknown value \"best_angel\""), std::string::npos);
+}
+
+} // namespace
+} // namespace abalike
