@@ -21,6 +21,14 @@ TEST(AimReadout, ShowsPullForceEnergyAndSpeedWithUnits)
     EXPECT_DOUBLE_EQ(aim.maxForceN, 1200.0);
 }
 
+TEST(AimReadout, ASmallPullKeepsTwoSignificantDigits)
+{
+    // The teacher's finding: "E 0 J" at a 2 % pull of the default band, which stores 0.72 J there.
+    const SlingshotBand band(SlingshotDef{}, 4.0, 864.0);
+    const AimReadout aim = aimReadout(band, 45.0, band.atFraction(0.02));
+    EXPECT_EQ(aimSummary(aim), "45.0\u00B0 \u00B7 pull 0.04 m \u00B7 F 36 N \u00B7 E 0.72 J \u00B7 v\u2080 0.60 m/s");
+}
+
 TEST(AimReadout, SaysWhenTheCapSetTheSpeed)
 {
     SlingshotDef sling;

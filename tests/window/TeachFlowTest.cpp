@@ -74,6 +74,24 @@ std::vector<std::pair<std::string, std::string>> shownKinds(const GameRun& run)
 }
 } // namespace
 
+TEST_F(TeachFlow, ASettingsNoticeReplacesItsEarlierOne)
+{
+    // Z twice: slow motion at a half, then a quarter. Only the last speed is on screen, not both at once.
+    const GameRun run = play(sourceFile("levels/1-1-first-flight.json") + " --frames 20" +
+                             script(R"([{"frame": 2, "key": "Z"}, {"frame": 5, "key": "Z"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    int speeds = 0;
+    bool quarter = false;
+    for (const auto& [text, kind] : shownKinds(run))
+        if (text.rfind("Speed ", 0) == 0)
+        {
+            ++speeds;
+            quarter = text.rfind("Speed \u00BC\u00D7", 0) == 0;
+        }
+    EXPECT_EQ(speeds, 1);
+    EXPECT_TRUE(quarter);
+}
+
 TEST_F(TeachFlow, TheGameModeShowsNoPhysicsSentenceOrFormulaAndTheLearnModeDoes)
 {
     // 1-1 after its reference shot, the next bird being aimed: the feedback sentences, the aim readout and the air.

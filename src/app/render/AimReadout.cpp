@@ -1,5 +1,8 @@
 #include "render/AimReadout.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "render/TextFormat.hpp"
 
 namespace abalike::app
@@ -17,12 +20,23 @@ AimReadout aimReadout(const SlingshotBand& band, double angleDeg, const BandPull
     return readout;
 }
 
+namespace
+{
+/// Enough decimals for two significant digits of a small value: a 2 % pull stores 0.72 J, not "0 J".
+std::string readable(double value, int decimals)
+{
+    const double size = std::abs(value);
+    const int needed = size == 0.0 || size >= 10.0 ? 0 : size >= 1.0 ? 1 : 2;
+    return formatFixed(value, std::max(decimals, needed));
+}
+} // namespace
+
 std::string aimSummary(const AimReadout& aim)
 {
     const char* dot = " \u00B7 ";
     return formatFixed(aim.angleDeg, 1) + "\u00B0" + dot + "pull " + formatFixed(aim.pull.pullM, 2) + " m" + dot +
-           "F " + formatFixed(aim.pull.forceN, 0) + " N" + dot + "E " + formatFixed(aim.pull.energyJ, 0) + " J" + dot +
-           "v\u2080 " + formatFixed(aim.speedMps, 1) + " m/s";
+           "F " + readable(aim.pull.forceN, 0) + " N" + dot + "E " + readable(aim.pull.energyJ, 0) + " J" + dot +
+           "v\u2080 " + readable(aim.speedMps, 1) + " m/s";
 }
 
 std::string aimLesson(const AimReadout& aim)

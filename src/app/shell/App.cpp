@@ -449,9 +449,16 @@ bool App::isUnlocked(const std::string& levelId) const
 
 void App::notify(const std::string& message)
 {
+    notify(message, "");
+}
+
+void App::notify(const std::string& message, const std::string& topic)
+{
     std::cerr << "abalike: " << message << '\n';
     m_trace.write("notice", {{"text", message}});
-    m_notices.push_back({message, 0.0});
+    if (!topic.empty())
+        std::erase_if(m_notices, [&topic](const Notice& notice) { return notice.topic == topic; });
+    m_notices.push_back({message, 0.0, topic});
     if (m_notices.size() > kMaxNotices)
         m_notices.erase(m_notices.begin());
 }

@@ -77,6 +77,9 @@ public:
 
     /// A one-line message for the player, shown for a few seconds over every screen (and printed on stderr).
     void notify(const std::string& message);
+    /// A notice about one setting (topic: "speed", "overlay", ...): it replaces that setting's earlier notice, so
+    /// pressing a key twice never shows "Speed 1/2x" and "Speed 1/4x" at once.
+    void notify(const std::string& message, const std::string& topic);
     /// Queues an input event to go through the same path as the player's at the start of the next frame: a toolbar
     /// button presses the key it stands for.
     void post(const sf::Event& event) { m_posted.push_back(event); }
@@ -134,6 +137,7 @@ private:
     {
         std::string text;
         double shownS = 0.0;
+        std::string topic; ///< empty: stands on its own
     };
     std::vector<Notice> m_notices;
 

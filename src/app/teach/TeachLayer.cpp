@@ -31,7 +31,8 @@ void TeachLayer::toggleOverlay()
     Settings settings = m_app.settings();
     settings.teachingOverlay = !settings.teachingOverlay;
     m_app.updateSettings(settings); // a scripted run changes it for this run only
-    m_app.notify(settings.teachingOverlay ? "Teaching overlay on (T to hide)" : "Teaching overlay off (T to show)");
+    m_app.notify(settings.teachingOverlay ? "Teaching overlay on (T to hide)" : "Teaching overlay off (T to show)",
+                 "overlay");
 }
 
 void TeachLayer::exportShots(const PlayView& view)
@@ -104,13 +105,15 @@ bool TeachLayer::handleEvent(const sf::Event& event, PlayView& view)
         case sf::Keyboard::V:
             m_components = !m_components;
             m_app.notify(m_components ? "Velocity components vx and vy shown (V to hide)"
-                                      : "Velocity components hidden (V to show)");
+                                      : "Velocity components hidden (V to show)",
+                         "components");
             return true;
         case sf::Keyboard::Z:
             view.slowMotion().cycle();
             m_app.notify(
                 std::string("Speed ") + view.slowMotion().label() +
-                (view.slowMotion().divisor() == 1 ? " (real time)" : " (slow motion; the physics is unchanged)"));
+                    (view.slowMotion().divisor() == 1 ? " (real time)" : " (slow motion; the physics is unchanged)"),
+                "speed");
             return true;
         case sf::Keyboard::E:
             exportShots(view);
