@@ -179,6 +179,23 @@ TEST_F(ScreenFlow, ASettingsFileOnTheCommandLineWinsOverTheSavedSettingsAndIsNev
     EXPECT_NE(missing.err.find("none.json: no such file"), std::string::npos) << missing.err;
 }
 
+TEST_F(ScreenFlow, HoldingFPlaysTheFreeFlightThreeTimesFasterWithTheSamePhysics)
+{
+    // The Moon's long flight: with F held the same defeats happen at the same game time, in fewer frames.
+    const std::string args = "'" + sourceFile("levels/5-4-the-moon.json") + "' --shot 42.5,9 --frames 500";
+    const GameRun plain = play(args);
+    const GameRun fast = play(args + script(R"([{"frame": 5, "key": "F", "action": "press"}])"));
+    ASSERT_EQ(plain.exitCode, 0) << plain.err;
+    ASSERT_EQ(fast.exitCode, 0) << fast.err;
+    const std::vector<std::string> times = plain.values("defeat", "t");
+    ASSERT_FALSE(times.empty());
+    EXPECT_EQ(fast.values("defeat", "t"), times) << "the physics is unchanged";
+    const int plainFrame = std::stoi(plain.values("defeat", "frame").front());
+    const int fastFrame = std::stoi(fast.values("defeat", "frame").front());
+    // About 7 s of free flight after the launch at frame 30: two thirds of its frames are saved.
+    EXPECT_LT(fastFrame, 30 + (plainFrame - 30) / 2) << plainFrame << " vs " << fastFrame;
+}
+
 TEST_F(ScreenFlow, ALevelOnTheCommandLineGoesStraightToIt)
 {
     const std::string level = sourceFile("levels/2-1-dominoes.json");

@@ -13,6 +13,8 @@ const std::vector<ControlBinding>& controlTable()
          "drag the bird back: distance", "left stick or D-pad right / left (hold LB: 10 %)"},
         {"Aiming", "Launch", "Space or Enter", "let go of the bird", "A"},
         {"In flight", "Use the bird's ability", "Space or Enter", "click", "A"},
+        {"In flight", "Fast-forward the flight until it touches something: 3\u00D7 (what you see only)", "F (hold)", "",
+         ""},
         {"Camera", "Zoom in / out", "+ / -", "wheel", "right stick up / down"},
         {"Camera", "Pan", "W A S D (Shift: further)", "drag on empty sky, or with the middle button", ""},
         {"Camera", "Back to the automatic camera", "Home or 0", "\u2302 button", "RB"},

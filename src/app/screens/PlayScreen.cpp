@@ -196,7 +196,8 @@ void PlayScreen::pollLevelFile()
 
 void PlayScreen::handleEvent(const sf::Event& event)
 {
-    if (settling())
+    // F is followed even while the level settles: a key held from the start counts.
+    if (m_fastForward.handleEvent(event) || settling())
         return;
     // Any key, button or wheel ends the opening pan, and still does what it does.
     if (event.type == sf::Event::KeyPressed || event.type == sf::Event::MouseButtonPressed ||
@@ -264,7 +265,14 @@ void PlayScreen::fixedUpdate(double dtS)
     (void)dtS; // the session steps at its own fixed rate, which is the app's
     if (settling())
         return;
-    if (!m_frozen && m_slowMotion.takeStep())
+    if (m_frozen || !m_slowMotion.takeStep())
+        return;
+    physicsStep();
+    // Holding F: more steps of the free flight in this tick, never past the first contact.
+    for (int extra = 1;
+         extra < m_fastForward.stepsPerTick(m_session->world().birdInFreeFlight(), m_slowMotion.divisor()) &&
+         m_session->phase() == Phase::Flying && m_session->world().birdInFreeFlight();
+         ++extra)
         physicsStep();
 }
 

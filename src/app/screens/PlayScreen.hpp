@@ -2,6 +2,7 @@
 
 #include "input/AimController.hpp"
 #include "input/ShotScript.hpp"
+#include "play/FastForward.hpp"
 #include "play/PlayLayer.hpp"
 #include "render/Camera.hpp"
 #include "render/CameraControls.hpp"
@@ -135,6 +136,7 @@ private:
     std::size_t m_destroyedTraced = 0; ///< events of session.destroyed() already written to the trace
     bool m_frozen = false;
     SlowMotion m_slowMotion;
+    FastForward m_fastForward;
     CameraRig m_rig; ///< fitted at start, follows the shot, returns when the world settles; the player pans and zooms
     CameraControls m_cameraControls;
     ShotTrails m_trails;
