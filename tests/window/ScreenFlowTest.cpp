@@ -189,7 +189,11 @@ TEST_F(ScreenFlow, HoldingFPlaysTheFreeFlightThreeTimesFasterWithTheSamePhysics)
     ASSERT_EQ(fast.exitCode, 0) << fast.err;
     const std::vector<std::string> times = plain.values("defeat", "t");
     ASSERT_FALSE(times.empty());
-    EXPECT_EQ(fast.values("defeat", "t"), times) << "the physics is unchanged";
+    // The fast run gets further in its frames: what both saw happened at the same game times.
+    std::vector<std::string> fastTimes = fast.values("defeat", "t");
+    ASSERT_GE(fastTimes.size(), times.size());
+    fastTimes.resize(times.size());
+    EXPECT_EQ(fastTimes, times) << "the physics is unchanged";
     const int plainFrame = std::stoi(plain.values("defeat", "frame").front());
     const int fastFrame = std::stoi(fast.values("defeat", "frame").front());
     // About 7 s of free flight after the launch at frame 30: two thirds of its frames are saved.

@@ -47,6 +47,7 @@ const std::vector<PlayToolbar::Button>& PlayToolbar::buttons()
         {"C", "Clear the kept paths (C)", sf::Keyboard::C},
         {"V", "Velocity components vx, vy (V)", sf::Keyboard::V},
         {"Z", "Slow motion: 1, \u00BD, \u00BC of real time (Z)", sf::Keyboard::Z},
+        {"\u00BB", "Hold: fast-forward the flight, 3\u00D7 (hold F)", sf::Keyboard::F, true},
         {"\u21A7", "Export the shots as CSV (E)", sf::Keyboard::E},
         {"?", "Help: every control (F1)", sf::Keyboard::F1},
         {"", "Pause (Esc or P)", sf::Keyboard::P},
@@ -114,6 +115,8 @@ bool PlayToolbar::handleEvent(const sf::Event& event, PlayView& view)
         if (event.mouseButton.button != sf::Mouse::Left)
             return false;
         m_pressed = buttonAt({static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y)}, view);
+        if (m_pressed && shown(view.app())[*m_pressed]->held)
+            view.app().post(keyEvent(shown(view.app())[*m_pressed]->key, true));
         return m_pressed.has_value(); // a click on a button neither aims nor fires the ability
     case sf::Event::MouseButtonReleased:
     {
@@ -121,7 +124,9 @@ bool PlayToolbar::handleEvent(const sf::Event& event, PlayView& view)
             return false;
         const std::optional<std::size_t> over =
             buttonAt({static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y)}, view);
-        if (over == m_pressed)
+        if (const Button& pressed = *shown(view.app())[*m_pressed]; pressed.held)
+            view.app().post(keyEvent(pressed.key, false)); // let go anywhere: the key is up again
+        else if (over == m_pressed)
         {
             const sf::Keyboard::Key key = shown(view.app())[*over]->key;
             view.app().post(keyEvent(key, true));

@@ -23,6 +23,7 @@ public:
         const char* label; ///< text on the button; "" for the pause symbol
         const char* action;
         sf::Keyboard::Key key;
+        bool held = false; ///< the key is down while the button is held (fast-forward), not tapped on release
     };
 
     std::string_view name() const override { return "toolbar"; }
