@@ -143,7 +143,7 @@ TEST(LessonLevelsCli, EveryLessonPassesCheckAndIsSolvable)
 {
     const RunResult r = runAbalike("check --solve --player-runs 0 " + sourcePath("levels/lessons/") + "*.json");
     EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
-    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 8) << r.out; // one PASS line per lesson
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 9) << r.out; // one PASS line per lesson and the tutorial
 }
 
 // ------------------------------------------------------------------ simulate: energy and impact

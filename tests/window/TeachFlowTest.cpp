@@ -74,6 +74,21 @@ std::vector<std::pair<std::string, std::string>> shownKinds(const GameRun& run)
 }
 } // namespace
 
+TEST_F(TeachFlow, TheTutorialHasItsOwnLevelAndEveryStepCanBeDone)
+{
+    // Angle, power, launch, T, a path reading (M), a second launch: the sixth step done, the tutorial is kept as
+    // finished (a "result" for "tutorial"), so nothing starts it again. Its three pigs stand apart, so the first
+    // shot does not end the level on step 5 as 1-1 under another name did.
+    const GameRun run = play(sourceFile("levels/lessons/tutorial.json") + " --frames 700" + script(R"([
+        {"frame": 200, "key": "Up"}, {"frame": 204, "key": "Right"}, {"frame": 208, "key": "Space"},
+        {"frame": 215, "key": "T"}, {"frame": 260, "key": "M"}, {"frame": 620, "key": "Space"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"tutorial"}));
+    EXPECT_EQ(run.values("launch", "frame").size(), 2u);
+    EXPECT_EQ(run.values("result", "level"), (std::vector<std::string>{"tutorial"}));
+    EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"play"})) << "the level goes on after the tutorial";
+}
+
 TEST_F(TeachFlow, ASettingsNoticeReplacesItsEarlierOne)
 {
     // Z twice: slow motion at a half, then a quarter. Only the last speed is on screen, not both at once.

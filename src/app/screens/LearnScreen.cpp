@@ -4,6 +4,7 @@
 #include "screens/MenuBackdrop.hpp"
 #include "screens/Navigation.hpp"
 #include "shell/App.hpp"
+#include "teach/Guide.hpp"
 
 #include <algorithm>
 
@@ -15,7 +16,8 @@ LearnScreen::LearnScreen(App& app) : m_app(app)
     const bool hasCampaign = !app.campaign().levels.empty();
     m_menu.setItems({
         {"campaign", "The campaign, with its physics", hasCampaign},
-        {"tutorial", "Tutorial", hasCampaign},
+        {"tutorial",
+         app.progress().levels.contains(kTutorialId) ? "Tutorial (done; play it again)" : "Tutorial: start here", true},
         {"lessons", "Lessons", true},
         {"back", "Back", true},
     });

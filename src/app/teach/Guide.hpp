@@ -54,6 +54,8 @@ public:
     bool active() const { return m_guide.has_value(); }
     /// The step the player is on (steps().size() once done).
     std::size_t step() const { return m_step; }
+    /// Every step is done.
+    bool finished() const { return m_guide && m_step >= m_guide->steps.size(); }
 
     /// Checks the current step (and the next ones: several can be done at once).
     void update(GuideContext context);
@@ -70,11 +72,13 @@ private:
     std::optional<AimReadout> m_firstAim;
 };
 
-/// The guide for a level, if it has one: the tutorial for level id "tutorial" (and, on a first run, for the first
-/// campaign level), a lesson for "lesson-..." levels.
+/// The guide for a level, if it has one: the tutorial for level id "tutorial" (levels/lessons/tutorial.json), a
+/// lesson for "lesson-..." levels.
 std::optional<Guide> guideFor(const LevelDef& level, const Catalog& catalog);
 /// The tutorial itself.
 Guide tutorialGuide();
+/// The tutorial level's id (levels/lessons/tutorial.json), and its key in the progress once it is finished.
+inline constexpr const char* kTutorialId = "tutorial";
 
 /// A lesson the title menu offers: its level file (in levels/lessons/) and what it teaches.
 struct LessonEntry

@@ -254,7 +254,7 @@ Guide tutorialGuide()
 std::optional<Guide> guideFor(const LevelDef& level, const Catalog& catalog)
 {
     const std::string& levelId = level.id;
-    if (levelId == "tutorial")
+    if (levelId == kTutorialId)
         return tutorialGuide();
     if (levelId.rfind("lesson-", 0) == 0)
     {

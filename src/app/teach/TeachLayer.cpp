@@ -141,12 +141,6 @@ void TeachLayer::onLevelStart(PlayView& view)
     {
         m_guideLevel = id;
         std::optional<Guide> guide = guideFor(view.session().level(), view.session().catalog());
-        // A first run (no progress at all) of the campaign in learn mode starts with the tutorial; scripted runs, the
-        // game mode and a level opened by its file never do.
-        const Campaign& campaign = m_app.campaign();
-        if (!guide && !m_app.scripted() && view.playMode() == PlayMode::Learn && !m_app.options().level &&
-            m_app.progress().levels.empty() && !campaign.levels.empty() && campaign.levels.front().level.id == id)
-            guide = tutorialGuide();
         if (guide)
             m_guide.start(std::move(*guide));
         else
@@ -182,6 +176,10 @@ void TeachLayer::frameUpdate(PlayView& view, double frameS)
     context.predictionLocked = m_quiz.locked();
     context.predictionsAnswered = m_quiz.answered();
     m_guide.update(context);
+    // The tutorial, once finished, is kept in the progress (as "tutorial", which no campaign level is): the title's
+    // Learn menu marks it done, and nothing starts it again.
+    if (m_guide.finished() && session.level().id == kTutorialId && !m_app.progress().levels.contains(kTutorialId))
+        m_app.recordResult(kTutorialId, 0, 1);
     if (m_showChart)
         m_chart.update(session, view.aim());
 }
