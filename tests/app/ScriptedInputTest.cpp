@@ -41,6 +41,17 @@ TEST(ScriptedInput, AKeyTapIsAPressAndARelease)
     EXPECT_EQ(events[0].key.code, sf::Keyboard::Down);
     EXPECT_TRUE(events[0].key.shift);
     EXPECT_FALSE(events[0].key.control);
+
+    // Ctrl comes up after the key, as on a keyboard: what follows does not read Ctrl as held.
+    ScriptEvent selectAll;
+    selectAll.key = "A";
+    selectAll.ctrl = true;
+    const std::vector<sf::Event> chord = toWindowEvents(selectAll);
+    ASSERT_EQ(chord.size(), 3u);
+    EXPECT_TRUE(chord[0].key.control);
+    EXPECT_EQ(chord[2].type, sf::Event::KeyReleased);
+    EXPECT_EQ(chord[2].key.code, sf::Keyboard::LControl);
+    EXPECT_FALSE(chord[2].key.control);
 }
 
 TEST(ScriptedInput, HeldKeysAndButtonsStayDownUntilReleased)

@@ -83,6 +83,40 @@ TEST_F(EditorFlow, AScriptedRunPlacesTwoBlocksAndAPigAndSaves)
     EXPECT_TRUE(std::filesystem::is_empty(data()));
 }
 
+TEST_F(EditorFlow, TypingFasterThanTheFramesLosesNoKey)
+{
+    // The designer's finding: at about 12 frames a second, 20 Backspaces deleted one character and Ctrl+A then
+    // typing appended. Dear ImGui 1.86 reads keys once a frame, so the bridge queues them: 20 keys and characters at
+    // two a frame into the level's Title field (Ctrl+A, "Mesa Towerx", Backspace, "s", Home, "A", Delete, End,
+    // two Backspaces) come out exactly, at most 40 frames after the last one.
+    const std::string file = m_dir.file("typed.json");
+    const GameRun run = edit("'" + file + "' --frames 70" + script(R"([
+        {"frame": 2, "mouse": "press", "button": "left", "x": 53, "y": 399},
+        {"frame": 2, "mouse": "release", "button": "left", "x": 53, "y": 399},
+        {"frame": 4, "mouse": "press", "button": "left", "x": 700, "y": 615},
+        {"frame": 4, "mouse": "release", "button": "left", "x": 700, "y": 615},
+        {"frame": 6, "mouse": "press", "button": "left", "x": 1166, "y": 63},
+        {"frame": 6, "mouse": "release", "button": "left", "x": 1166, "y": 63},
+        {"frame": 9, "mouse": "press", "button": "left", "x": 1050, "y": 115},
+        {"frame": 9, "mouse": "release", "button": "left", "x": 1050, "y": 115},
+        {"frame": 12, "key": "A", "ctrl": true}, {"frame": 12, "text": "M"},
+        {"frame": 13, "text": "e"}, {"frame": 13, "text": "s"},
+        {"frame": 14, "text": "a"}, {"frame": 14, "text": " "},
+        {"frame": 15, "text": "T"}, {"frame": 15, "text": "o"},
+        {"frame": 16, "text": "w"}, {"frame": 16, "text": "e"},
+        {"frame": 17, "text": "r"}, {"frame": 17, "text": "x"},
+        {"frame": 18, "key": "Backspace"}, {"frame": 18, "text": "s"},
+        {"frame": 19, "key": "Home"}, {"frame": 19, "text": "A"},
+        {"frame": 20, "key": "Delete"}, {"frame": 20, "key": "End"},
+        {"frame": 21, "key": "Backspace"}, {"frame": 21, "key": "Backspace"},
+        {"frame": 61, "key": "Enter"},
+        {"frame": 65, "key": "S", "ctrl": true}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    ASSERT_EQ(run.values("editor-save", "path"), (std::vector<std::string>{file})) << run.err;
+    const nlohmann::json level = nlohmann::json::parse(readText(file));
+    EXPECT_EQ(level["title"], "Aesa Towe");
+}
+
 TEST_F(EditorFlow, TheTitleMenuOpensTheSandboxAndLevelSelectOpensTheEditor)
 {
     // Title: Play, Level select, Learn, Sandbox and editor, ...

@@ -211,27 +211,13 @@ void ImGuiBridge::handleEvent(const sf::Event& event)
         break;
     case sf::Event::KeyPressed:
     case sf::Event::KeyReleased:
-    {
-        const bool down = event.type == sf::Event::KeyPressed;
-        if (event.key.code >= 0 && event.key.code < sf::Keyboard::KeyCount)
-            io.KeysDown[event.key.code] = down;
-        io.KeyCtrl = event.key.control;
-        io.KeyShift = event.key.shift;
-        io.KeyAlt = event.key.alt;
-        io.KeySuper = event.key.system;
-        break;
-    }
     case sf::Event::TextEntered:
-        // Control characters (Backspace, Enter, Tab, Delete) arrive as keys; only printable text goes in.
-        if (event.text.unicode >= 32 && event.text.unicode != 127)
-            io.AddInputCharacter(event.text.unicode);
+        m_input.push(event); // each frame takes what it can see apart (ImGuiInputQueue)
         break;
     case sf::Event::LostFocus:
-        for (bool& key : io.KeysDown)
-            key = false;
+        m_input.clear(io);
         for (bool& button : io.MouseDown)
             button = false;
-        io.KeyCtrl = io.KeyShift = io.KeyAlt = io.KeySuper = false;
         break;
     default:
         break;
@@ -254,6 +240,7 @@ void ImGuiBridge::newFrame(double frameS)
             io.MouseDown[i] = false;
             m_releasePending[i] = false;
         }
+    m_input.drain(io);
     ImGui_ImplOpenGL2_NewFrame();
     ImGui::NewFrame();
     m_frameOpen = true;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "imgui/ImGuiInputQueue.hpp"
+
 #include <SFML/Graphics/RenderWindow.hpp>
 #include <SFML/Window/Event.hpp>
 #include <string>
@@ -61,6 +63,7 @@ private:
     /// such a release waits until a frame has seen the button down.
     bool m_releasePending[5] = {};
     bool m_pressSeen[5] = {}; ///< a frame has seen the button down since it was pressed
+    ImGuiInputQueue m_input;
 };
 
 } // namespace abalike::app

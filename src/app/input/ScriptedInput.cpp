@@ -58,6 +58,19 @@ std::vector<sf::Event> toWindowEvents(const ScriptEvent& script)
         {
             event.type = sf::Event::KeyReleased;
             events.push_back(event);
+            // As a keyboard does, Ctrl and Alt come up after the key: the next event sees them up (an ImGui text
+            // field ignores typed characters while Ctrl reads as held). Shift stays as the script holds it.
+            const std::pair<bool, sf::Keyboard::Key> modifiers[] = {{script.ctrl, sf::Keyboard::LControl},
+                                                                    {script.alt, sf::Keyboard::LAlt}};
+            for (const auto& [held, key] : modifiers)
+            {
+                if (!held)
+                    continue;
+                sf::Event up{};
+                up.type = sf::Event::KeyReleased;
+                up.key.code = key;
+                events.push_back(up);
+            }
         }
         break;
     }
