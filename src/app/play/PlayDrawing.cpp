@@ -11,6 +11,7 @@
 #include "shell/App.hpp"
 
 #include <SFML/Graphics/View.hpp>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -46,7 +47,8 @@ void drawPullLimit(sf::RenderTarget& target, const Camera& camera, const GameSes
 
 /// The level as the player sees it: sky, terrain, bodies, slingshot, the shots' paths and the preview.
 void drawWorldPicture(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, OverlayRenderer& overlay,
-                      sf::Vector2f pullOffset, bool pulling, const ShotRecord* lastShot, float opacity)
+                      sf::Vector2f pullOffset, bool pulling, const ShotRecord* lastShot, float opacity,
+                      bool previewHidden)
 {
     const GameSession& session = view.session();
     const Camera& camera = view.camera();
@@ -64,7 +66,8 @@ void drawWorldPicture(sf::RenderTarget& target, PlayView& view, WorldRenderer& w
         overlay.drawShotMarkers(target, camera, *lastShot, opacity);
     // The preview setting: the whole path, its first half second (30 steps of 1/60 s), or none.
     const PreviewMode previewMode = view.app().settings().previewFor(view.playMode());
-    if (const PredictedFlight* preview = view.preview(); preview != nullptr && previewMode != PreviewMode::Off)
+    if (const PredictedFlight* preview = view.preview();
+        preview != nullptr && previewMode != PreviewMode::Off && !previewHidden)
         overlay.drawPreview(target, camera, *preview, previewMode == PreviewMode::Short ? 30 : 0);
 }
 } // namespace
@@ -93,7 +96,9 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
     // A frame only laid out (the layout tests) leaves the world's picture out: no panel's place depends on it.
     if (drawingPixels())
     {
-        drawWorldPicture(target, view, world, overlay, pullOffset, pulling, lastShot, opacity);
+        const bool previewHidden =
+            std::any_of(layers.begin(), layers.end(), [&view](const auto& layer) { return layer->hidesPreview(view); });
+        drawWorldPicture(target, view, world, overlay, pullOffset, pulling, lastShot, opacity, previewHidden);
         for (const auto& layer : layers)
             layer->drawWorld(target, view);
     }

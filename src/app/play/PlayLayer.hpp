@@ -83,13 +83,19 @@ public:
         (void)target;
         (void)view;
     }
-    /// Drawn over the HUD, in window pixels (panels, charts).
+    /// This layer asks that the preview be left out this frame (a lesson's prediction not yet locked in).
+    virtual bool hidesPreview(const PlayView& view) const
+    {
+        (void)view;
+        return false;
+    }
     /// How far this layer shakes the world's picture this frame, in window pixels (the HUD stays still).
     virtual sf::Vector2f worldShakePx(PlayView& view) const
     {
         (void)view;
         return {0.0f, 0.0f};
     }
+    /// Drawn over the HUD, in window pixels (panels, charts).
     virtual void drawScreen(sf::RenderTarget& target, PlayView& view)
     {
         (void)target;

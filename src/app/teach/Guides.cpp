@@ -206,8 +206,10 @@ Guide lesson(const std::string& id, const LevelDef& level, const Catalog& catalo
         return gravityLesson(level);
     if (id == "lesson-predict")
         return {"Lesson: predict, then launch",
-                {{"Read the aim in the card (angle and speed). Work out where the bird lands with the formula above, "
-                  "type the range in metres and press Enter.",
+                {{"Read the aim in the card (angle and speed) and work out where the bird touches the ground: T = "
+                  "(v sin a + \u221A(v\u00B2 sin\u00B2 a + 2 g (h \u2212 r))) / g, R = v cos a \u00B7 T (h: the "
+                  "launch height, r: the bird's radius). Type R in metres and press Enter; the preview shows once "
+                  "your prediction is locked.",
                   [](const GuideContext& c)
                   {
                       return c.predictionLocked || c.predictionsAnswered > 0;

@@ -344,4 +344,10 @@ const PlayLayerRegistrar kLayer{20, "teach",
                                 }};
 } // namespace
 
+bool TeachLayer::hidesPreview(const PlayView& view) const
+{
+    return PredictQuizView::wanted(view.session().level()) && view.session().phase() == Phase::Aiming &&
+           !m_quiz.locked();
+}
+
 } // namespace abalike::app

@@ -29,6 +29,8 @@ public:
     void frameUpdate(PlayView& view, double frameS) override;
     void drawWorld(sf::RenderTarget& target, PlayView& view) override;
     void drawScreen(sf::RenderTarget& target, PlayView& view) override;
+    /// "Predict, then launch": the preview would show the answer, so it waits until the prediction is locked in.
+    bool hidesPreview(const PlayView& view) const override;
 
 private:
     /// The sentences on the last shot: in learn mode, when there are any.
