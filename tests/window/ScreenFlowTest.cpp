@@ -211,11 +211,13 @@ TEST_F(ScreenFlow, ALevelOnTheCommandLineGoesStraightToIt)
 
 TEST_F(ScreenFlow, ShotsWithoutALevelStartTheCampaignAndAWinLeadsOn)
 {
-    // 1-1 as the solver wins it (abalike solve): two shots, decided at frame 740; then N goes to 1-2.
-    const GameRun run = play("--shot 30,18 --shot 5,30 --frames 780" + script(R"([{"frame": 770, "key": "N"}])"));
+    // 1-1 as the solver wins it (abalike solve): two shots, decided at frame 740; then N goes to 1-2, where the
+    // shots, which belong to the level the run opened on, fire nothing.
+    const GameRun run = play("--shot 30,18 --shot 5,30 --frames 900" + script(R"([{"frame": 770, "key": "N"}])"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.values("finished", "won"), (std::vector<std::string>{"true"})) << "the two shots win 1-1";
     EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"1-1", "1-2"}));
+    EXPECT_EQ(run.values("launch", "angle_deg").size(), 2u) << "nothing fired on 1-2";
     EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"play"}));
 }
 

@@ -52,7 +52,8 @@ void EditorClipboard::paste()
     const std::basic_string<sf::Uint8> utf8 = sf::Clipboard::getString().toUtf8();
     const std::string text(utf8.begin(), utf8.end());
     const std::string why = m_ctx.scene().paste(text, m_tools.insertionPoint());
-    m_ctx.message = why.empty() ? "Pasted " + std::to_string(m_ctx.scene().selection().size()) + " objects"
+    const std::size_t count = m_ctx.scene().selection().size();
+    m_ctx.message = why.empty() ? "Pasted " + std::to_string(count) + (count == 1 ? " object" : " objects")
                                 : "Cannot paste: " + why;
     m_ctx.messageIsError = !why.empty();
     m_ctx.app.trace().write("editor-paste",

@@ -31,8 +31,8 @@ sf::Vector2f toVector(const std::array<double, 2>& p)
 } // namespace
 
 PlayScreen::PlayScreen(App& app, PlaySource source)
-    : m_app(app), m_source(std::move(source)), m_script(app.options().shots), m_overlay(app.font()), m_hud(app.font()),
-      m_reloadNotice(app.font()), m_layers(makePlayLayers(app))
+    : m_app(app), m_source(std::move(source)), m_script(app.takeScriptedShots()), m_overlay(app.font()),
+      m_hud(app.font()), m_reloadNotice(app.font()), m_layers(makePlayLayers(app))
 {
     // On top of the shared layers: the toolbar sees clicks first, so a click on a button neither aims nor fires an
     // ability. (The editor's play mode has its own panels instead.)

@@ -447,6 +447,14 @@ bool App::isUnlocked(const std::string& levelId) const
     return m_settings.openAllLevels || m_progress.isUnlocked(levelId);
 }
 
+std::vector<ScriptedShot> App::takeScriptedShots()
+{
+    if (m_shotsTaken)
+        return {};
+    m_shotsTaken = true;
+    return m_options.shots;
+}
+
 void App::notify(const std::string& message)
 {
     notify(message, "");

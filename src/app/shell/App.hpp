@@ -39,6 +39,9 @@ public:
     int run();
 
     const AppOptions& options() const { return m_options; }
+    /// The run's `--shot`s, once: they belong to the level the run opened on, so a level reached later (the next
+    /// one after a win, a pack's next level) fires none.
+    std::vector<ScriptedShot> takeScriptedShots();
     sf::RenderWindow& window() { return m_window; }
     sf::Vector2u windowSize() const { return m_window.getSize(); }
     /// Null when no font could be loaded; screens then draw without text.
@@ -118,6 +121,7 @@ private:
     void takeStoreMessages();
 
     AppOptions m_options;
+    bool m_shotsTaken = false;
     Campaign m_campaign;
     std::unique_ptr<sf::Font> m_font;
     sf::RenderWindow m_ownWindow;
