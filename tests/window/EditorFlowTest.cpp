@@ -117,6 +117,25 @@ TEST_F(EditorFlow, TypingFasterThanTheFramesLosesNoKey)
     EXPECT_EQ(level["title"], "Aesa Towe");
 }
 
+TEST_F(EditorFlow, WidthOnAHillScalesItsCorners)
+{
+    // The designer's finding: Width on a polygon hill took the value and saved nothing. 2-6's hill, 12 m wide about
+    // x = 22, typed 18 m wide: its corners scale by 1.5 about its centre.
+    const std::string file = m_dir.file("hill.json");
+    std::filesystem::copy_file(sourceFile("levels/2-6-boulder-hill.json"), file);
+    const GameRun run = edit("'" + file + "' --frames 30" + script(R"([
+        {"frame": 3, "mouse": "press", "button": "left", "x": 590, "y": 610},
+        {"frame": 3, "mouse": "release", "button": "left", "x": 590, "y": 610},
+        {"frame": 6, "mouse": "press", "button": "left", "x": 1050, "y": 150},
+        {"frame": 6, "mouse": "release", "button": "left", "x": 1050, "y": 150},
+        {"frame": 9, "key": "A", "ctrl": true}, {"frame": 11, "text": "18"}, {"frame": 16, "key": "Enter"},
+        {"frame": 22, "key": "S", "ctrl": true}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    ASSERT_EQ(run.values("editor-save", "path"), (std::vector<std::string>{file}));
+    const nlohmann::json level = nlohmann::json::parse(readText(file));
+    EXPECT_EQ(level["terrain"][0]["points"], nlohmann::json::parse("[[13, 0], [31, 0], [26.5, 3], [17.5, 3]]"));
+}
+
 TEST_F(EditorFlow, TheTitleMenuOpensTheSandboxAndLevelSelectOpensTheEditor)
 {
     // Title: Play, Level select, Learn, Sandbox and editor, ...

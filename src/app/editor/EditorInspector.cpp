@@ -25,6 +25,16 @@ namespace abalike::app
 
 namespace
 {
+
+/// A hill's (a polygon's) x, y, width and height are its bounding box: moving or resizing the box moves and scales
+/// its corners with it (the file keeps only the corners, so a box edit that left them would change nothing).
+void fitPolygonToBox(TerrainDef& terrain, const TerrainDef& before)
+{
+    const double sx = before.widthM > 0.0 ? std::max(terrain.widthM, 0.01) / before.widthM : 1.0;
+    const double sy = before.heightM > 0.0 ? std::max(terrain.heightM, 0.01) / before.heightM : 1.0;
+    for (auto& point : terrain.points)
+        point = {terrain.x + (point[0] - before.x) * sx, terrain.y + (point[1] - before.y) * sy};
+}
 bool sliderDouble(const char* label, double& value, double min, double max, const char* format,
                   ImGuiSliderFlags flags = 0)
 {
@@ -209,11 +219,15 @@ void EditorInspector::selectionTab()
         }
         else if (auto* terrain = std::get_if<TerrainDef>(&def))
         {
+            const TerrainDef before = *terrain;
             changed |= inputDouble("x (m)", terrain->x, m_ctx.fieldReleased);
             changed |= inputDouble("y (m)", terrain->y, m_ctx.fieldReleased);
             changed |= inputDouble("Width (m)", terrain->widthM, m_ctx.fieldReleased);
             changed |= inputDouble("Height (m)", terrain->heightM, m_ctx.fieldReleased);
-            changed |= inputDouble("Angle (\u00B0)", terrain->angleDeg, m_ctx.fieldReleased, "%.1f");
+            if (!terrain->isPolygon())
+                changed |= inputDouble("Angle (\u00B0)", terrain->angleDeg, m_ctx.fieldReleased, "%.1f");
+            else if (changed)
+                fitPolygonToBox(*terrain, before);
         }
         else if (auto* sling = std::get_if<SlingshotDef>(&def))
         {
