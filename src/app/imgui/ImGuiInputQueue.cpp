@@ -1,5 +1,6 @@
 #include "imgui/ImGuiInputQueue.hpp"
 
+#include <algorithm>
 #include <imgui.h>
 #include <vector>
 
@@ -33,7 +34,7 @@ void ImGuiInputQueue::drain(ImGuiIO& io)
 {
     std::vector<sf::Keyboard::Key> changed;
     bool pressedThisFrame = false;
-    const Item* previous = nullptr;
+    bool afterPlainPress = false; ///< the item just taken was a key press without Ctrl, Alt or System
     while (!m_items.empty())
     {
         const Item& item = m_items.front();
@@ -41,30 +42,24 @@ void ImGuiInputQueue::drain(ImGuiIO& io)
         {
             // A character typed with its own key may share that key's frame; after any other key pressed in this
             // frame (Backspace, Ctrl+A, an arrow) it waits: ImGui would apply it before that key.
-            const bool ownKey = previous != nullptr && !previous->character && previous->down &&
-                                !previous->key.control && !previous->key.alt && !previous->key.system;
-            if (pressedThisFrame && !ownKey)
+            if (pressedThisFrame && !afterPlainPress)
                 break;
             io.AddInputCharacter(item.unicode);
+            afterPlainPress = false;
         }
         else
         {
-            const sf::Keyboard::Key code = item.key.code;
-            bool seen = false;
-            for (const sf::Keyboard::Key k : changed)
-                seen = seen || k == code;
-            if (seen)
+            if (std::find(changed.begin(), changed.end(), item.key.code) != changed.end())
                 break; // its second transition in this frame: the next frame sees it
-            changed.push_back(code);
-            io.KeysDown[code] = item.down;
+            changed.push_back(item.key.code);
+            io.KeysDown[item.key.code] = item.down;
             io.KeyCtrl = item.key.control;
             io.KeyShift = item.key.shift;
             io.KeyAlt = item.key.alt;
             io.KeySuper = item.key.system;
             pressedThisFrame = pressedThisFrame || item.down;
+            afterPlainPress = item.down && !item.key.control && !item.key.alt && !item.key.system;
         }
-        m_lastApplied = item;
-        previous = &m_lastApplied;
         m_items.pop_front();
     }
 }

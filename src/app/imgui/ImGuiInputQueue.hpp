@@ -34,7 +34,6 @@ private:
         bool down = false;
     };
     std::deque<Item> m_items;
-    Item m_lastApplied; ///< the item drained just before the current one (a character's own key)
 };
 
 } // namespace abalike::app

@@ -27,11 +27,9 @@ public:
         return false;
     }
 
-    /// Physics steps for this tick: kSpeedUp while F is held in free flight at real-time pace, else 1.
-    int stepsPerTick(bool freeFlight, int slowMotionDivisor) const
-    {
-        return m_held && freeFlight && slowMotionDivisor == 1 ? kSpeedUp : 1;
-    }
+    /// Physics steps for this tick at most: kSpeedUp while F is held at real-time pace, else 1. The caller stops
+    /// early at the first contact.
+    int stepsPerTick(int slowMotionDivisor) const { return m_held && slowMotionDivisor == 1 ? kSpeedUp : 1; }
 
     bool held() const { return m_held; }
 

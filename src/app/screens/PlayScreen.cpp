@@ -269,9 +269,8 @@ void PlayScreen::fixedUpdate(double dtS)
         return;
     physicsStep();
     // Holding F: more steps of the free flight in this tick, never past the first contact.
-    for (int extra = 1;
-         extra < m_fastForward.stepsPerTick(m_session->world().birdInFreeFlight(), m_slowMotion.divisor()) &&
-         m_session->phase() == Phase::Flying && m_session->world().birdInFreeFlight();
+    for (int extra = 1; extra < m_fastForward.stepsPerTick(m_slowMotion.divisor()) &&
+                        m_session->phase() == Phase::Flying && m_session->world().birdInFreeFlight();
          ++extra)
         physicsStep();
 }
