@@ -143,9 +143,10 @@ std::vector<double> numbersIn(const std::string& text)
 
 TEST(ShotFeedback, EveryNumberOfTheVacuumSentenceIsTheClosedForm)
 {
-    // From height h at speed v and angle a in vacuum: range v cos a (v sin a + sqrt(v^2 sin^2 a + 2 g h)) / g; the
-    // best angle atan(v / sqrt(v^2 + 2 g h)) with range v sqrt(v^2 + 2 g h) / g; from the ground, 45 degrees and
-    // v^2 / g. The sentence must state the height, since the lessons' v^2 sin 2a / g holds only from the ground.
+    // From height h at speed v and angle a in vacuum: back at the launch height v^2 sin 2a / g; down to the ground
+    // v cos a (v sin a + sqrt(v^2 sin^2 a + 2 g h)) / g; the best angle atan(v / sqrt(v^2 + 2 g h)) with range
+    // v sqrt(v^2 + 2 g h) / g; from the ground, 45 degrees and v^2 / g. The sentence must state both heights, since
+    // the lessons' v^2 sin 2a / g holds only back at the launch height.
     const LevelDef moonLevel = campaignLevel("5-4-the-moon.json");
     const double v = 9.0;
     const double a = 40.0 * M_PI / 180.0;
@@ -156,18 +157,20 @@ TEST(ShotFeedback, EveryNumberOfTheVacuumSentenceIsTheClosedForm)
     const std::vector<double> n = numbersIn(sentence);
     const double range = v * std::cos(a) * (v * std::sin(a) + std::sqrt(std::pow(v * std::sin(a), 2) + 2 * g * h)) / g;
     const double root = std::sqrt(v * v + 2 * g * h);
-    // "launched H m above flat ground, A° at V m/s lands R m away (g = G m/s²); B° would reach the furthest, F m
-    // (from the ground: 45°, v²/g = D m)."
-    ASSERT_EQ(n.size(), 9u) << sentence;
-    EXPECT_NEAR(n[0], h, 0.05) << sentence;
+    // "With no air (g = G m/s²), A° at V m/s brings the bird's centre back to the launch height L m away and down to
+    // the ground, H m lower, R m away; from that height B° reaches the furthest, F m (from the ground: 45°, v²/g = D
+    // m)."
+    ASSERT_EQ(n.size(), 10u) << sentence;
+    EXPECT_NEAR(n[0], g, 0.005);
     EXPECT_NEAR(n[1], 40.0, 0.05);
     EXPECT_NEAR(n[2], v, 0.05);
-    EXPECT_NEAR(n[3], range, 0.06) << sentence;
-    EXPECT_NEAR(n[4], g, 0.005);
-    EXPECT_NEAR(n[5], std::atan(v / root) * 180.0 / M_PI, 0.06) << sentence;
-    EXPECT_NEAR(n[6], v * root / g, 0.06) << sentence;
-    EXPECT_EQ(n[7], 45.0);
-    EXPECT_NEAR(n[8], v * v / g, 0.06) << sentence;
+    EXPECT_NEAR(n[3], v * v * std::sin(2 * a) / g, 0.06) << sentence;
+    EXPECT_NEAR(n[4], h, 0.05) << sentence;
+    EXPECT_NEAR(n[5], range, 0.06) << sentence;
+    EXPECT_NEAR(n[6], std::atan(v / root) * 180.0 / M_PI, 0.06) << sentence;
+    EXPECT_NEAR(n[7], v * root / g, 0.06) << sentence;
+    EXPECT_EQ(n[8], 45.0);
+    EXPECT_NEAR(n[9], v * v / g, 0.06) << sentence;
 }
 
 TEST(ShotFeedback, TheDragSentenceCountsTheKineticEnergyTheBirdLaunchedWith)

@@ -262,20 +262,22 @@ TEST_F(TeachFlow, TheExportKeyWritesEveryShotAsCsvInTheDataFolder)
 
 TEST_F(TeachFlow, PredictThenLaunchSetsThePredictionAgainstTheFlightAndTheFormula)
 {
-    // The lesson: type 23.5, lock it with Enter, and the scripted shot at 35 degrees and 16 m/s comes down at
-    // v cos a (v sin a + sqrt(v^2 sin^2 a + 2 g (h - r))) / g = 26.19 m; the world's flight measures the same.
+    // The lesson: type 23.5, lock it with Enter, and the scripted shot at 35 degrees and 16 m/s comes back to its
+    // launch height at v^2 sin 2a / g = 24.52 m; the world's flight measures the same, and the card says where.
     const GameRun run = play(sourceFile("levels/lessons/lesson-predict.json") + " --shot 35,16 --frames 200" +
                              script(R"([{"frame": 3, "text": "23.5"}, {"frame": 5, "key": "Enter"}])"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const std::string texts = shownTexts(run);
-    const double a = 35.0 * M_PI / 180.0;
-    const double vy = 16.0 * std::sin(a);
-    const double range = 16.0 * std::cos(a) * (vy + std::sqrt(vy * vy + 2.0 * 9.81 * (1.5 - 0.25))) / 9.81;
+    const double range = 16.0 * 16.0 * std::sin(70.0 * M_PI / 180.0) / 9.81;
     char expected[32];
     std::snprintf(expected, sizeof expected, "%.2f m", range);
     EXPECT_NE(texts.find("you predicted\n23.50 m"), std::string::npos) << texts;
     EXPECT_NE(texts.find(std::string("measured on the flight\n") + expected), std::string::npos) << texts;
     EXPECT_NE(texts.find(std::string("the formula gives\n") + expected), std::string::npos) << texts;
+    EXPECT_NE(texts.find("until its centre is back at the launch height"), std::string::npos) << texts;
+    EXPECT_NE(texts.find("back to the launch height " + std::string(expected).substr(0, 4) + " m away"),
+              std::string::npos)
+        << texts;
 }
 
 TEST_F(TeachFlow, TheTutorialCompletesEvenWithTheOverlayHiddenAgain)

@@ -10,9 +10,9 @@ namespace abalike
 /// the prediction with what the world measured and with the closed form of projectile motion in vacuum.
 enum class QuizQuantity
 {
-    Range,      ///< horizontal distance from the slingshot to where the bird first touches the ground (m)
-    MaxHeight,  ///< highest point of the bird's centre above the ground (m)
-    FlightTime, ///< time from launch until it first touches the ground (s)
+    Range,      ///< horizontal distance from the launch to where the bird's centre comes back to the launch height (m)
+    MaxHeight,  ///< highest point of the bird's centre above the launch height (m)
+    FlightTime, ///< time from launch until the bird's centre comes back to the launch height (s)
 };
 
 /// "range", "maximum height", "flight time".
@@ -20,27 +20,26 @@ const char* quizQuantityName(QuizQuantity quantity);
 /// "m" or "s".
 const char* quizQuantityUnit(QuizQuantity quantity);
 
-/// A launch from height h above flat ground at speed v and angle a in vacuum, ending when the bird's centre comes
-/// down to height r above the ground (where a bird of radius r touches it):
-///   flight time  T = (v sin a + sqrt(v^2 sin^2 a + 2 g (h - r))) / g
-///   range        R = v cos a T
-///   max height   H = h + v^2 sin^2 a / (2 g)   (h when the launch points down)
+/// A launch at speed v and angle a in vacuum, measured where the bird's centre comes back down to the height it was
+/// launched from: the convention of `abalike predict` (and, at the ground line, of the range chart), and the
+/// textbook's:
+///   flight time  T = 2 v sin a / g
+///   range        R = v cos a T = v^2 sin 2a / g
+///   max height   H = v^2 sin^2 a / (2 g)   (above the launch)
 struct QuizLaunch
 {
     double speedMps = 0.0;
     double angleDeg = 0.0;
     double gravity = 9.81;
-    double launchHeightM = 0.0; ///< the bird's centre above the ground at launch
-    double birdRadiusM = 0.0;
 };
 
-/// The closed form of the quantity; nullopt without gravity or when the flight never comes down to height r.
+/// The closed form of the quantity; nullopt without gravity, or for range and time when the launch does not point
+/// upwards (the bird never comes back to its launch height).
 std::optional<double> closedFormAnswer(QuizQuantity quantity, const QuizLaunch& launch);
 
-/// The quantity measured on the path the bird really flew (ShotRecord::actualPath), the touchdown interpolated
-/// between the physics steps around it. launchX and groundY place the slingshot and the ground; nullopt when the
-/// path never comes down to the ground (it hit something first, or the level ended).
-std::optional<double> measuredAnswer(QuizQuantity quantity, const ShotRecord& shot, double launchX, double groundY,
-                                     double birdRadiusM);
+/// The quantity measured on the path the bird really flew (ShotRecord::actualPath): where (and when) its centre comes
+/// back down through the launch point's height, interpolated between the physics steps around it. nullopt when it
+/// touched something before that, or never came back down.
+std::optional<double> measuredAnswer(QuizQuantity quantity, const ShotRecord& shot, std::array<double, 2> launchPoint);
 
 } // namespace abalike

@@ -205,22 +205,24 @@ Guide lesson(const std::string& id, const LevelDef& level, const Catalog& catalo
     if (id == "lesson-gravity")
         return gravityLesson(level);
     if (id == "lesson-predict")
-        return {"Lesson: predict, then launch",
-                {{"Read the aim in the card (angle and speed) and work out where the bird touches the ground: T = "
-                  "(v sin a + \u221A(v\u00B2 sin\u00B2 a + 2 g (h \u2212 r))) / g, R = v cos a \u00B7 T (h: the "
-                  "launch height, r: the bird's radius). Type R in metres and press Enter; the preview shows once "
-                  "your prediction is locked.",
-                  [](const GuideContext& c)
-                  {
-                      return c.predictionLocked || c.predictionsAnswered > 0;
-                  }},
-                 {"Launch at that aim (Space) and compare: your prediction, the flight, the formula.",
-                  [](const GuideContext& c)
-                  {
-                      return c.predictionsAnswered > 0;
-                  }},
-                 {"Press Tab to predict the maximum height or the flight time instead, then take out the pig.", won}},
-                "The world flies the physics the formula describes: a good prediction lands within centimetres."};
+        return {
+            "Lesson: predict, then launch",
+            {{"Read the aim in the card (angle and speed) and work out how far the bird flies until its centre is back "
+              "at the launch height: R = v\u00B2 sin 2a / g. Type R in metres and press Enter; the preview shows "
+              "once your prediction is locked.",
+              [](const GuideContext& c)
+              {
+                  return c.predictionLocked || c.predictionsAnswered > 0;
+              }},
+             {"Launch at that aim (Space) and compare: your prediction, the flight, the formula.",
+              [](const GuideContext& c)
+              {
+                  return c.predictionsAnswered > 0;
+              }},
+             {"Press Tab to predict the height it rises above the launch (H = v\u00B2 sin\u00B2 a / 2g) or the flight "
+              "time (T = 2 v sin a / g) instead, then take out the pig.",
+              won}},
+            "The world flies the physics the formula describes: a good prediction lands within centimetres."};
     return {};
 }
 

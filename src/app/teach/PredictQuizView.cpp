@@ -5,7 +5,6 @@
 #include "render/TextFormat.hpp"
 #include "teach/TeachDraw.hpp"
 
-#include <abalike/level/LevelCatalog.hpp>
 #include <cmath>
 #include <cstdlib>
 
@@ -113,15 +112,8 @@ void PredictQuizView::update(const GameSession& session, const std::optional<Aim
     if (!m_locked || session.shots().size() <= m_locked->shotsBefore)
         return;
     const ShotRecord& shot = session.shots()[m_locked->shotsBefore];
-    const Catalog catalog = levelCatalog(session.level(), session.catalog());
-    const BirdType* bird = catalog.findBird(shot.bird);
-    if (bird == nullptr)
-        return;
-    const LevelDef& level = session.level();
-    const std::optional<double> measured =
-        measuredAnswer(m_locked->quantity, shot, level.slingshot.x, level.groundY, bird->radiusM);
-    const QuizLaunch launch{shot.speedMps, shot.angleDeg, level.environment.gravity,
-                            session.launchPoint()[1] - level.groundY, bird->radiusM};
+    const std::optional<double> measured = measuredAnswer(m_locked->quantity, shot, session.launchPoint());
+    const QuizLaunch launch{shot.speedMps, shot.angleDeg, session.level().environment.gravity};
     const std::optional<double> closed = closedFormAnswer(m_locked->quantity, launch);
     if (measured && closed)
     {
@@ -132,8 +124,8 @@ void PredictQuizView::update(const GameSession& session, const std::optional<Aim
     }
     else if (session.phase() == Phase::Aiming || session.finished())
     {
-        // The bird hit something before it came down to the ground: nothing to compare.
-        m_note = "That bird did not come down to the ground: no measurement. Predict again.";
+        // The bird hit something before it came back down to its launch height: nothing to compare.
+        m_note = "That bird did not come back down to its launch height freely: no measurement. Predict again.";
         m_locked.reset();
     }
 }
@@ -168,8 +160,9 @@ sf::FloatRect PredictQuizView::draw(sf::RenderTarget& target, const sf::Font& fo
         rows.push_back({"  you predicted", withQuantityUnit(r.predicted, r.quantity)});
         rows.push_back({"  measured on the flight", withQuantityUnit(r.measured, r.quantity)});
         rows.push_back({"  the formula gives", withQuantityUnit(r.closedForm, r.quantity)});
-        if (r.quantity != QuizQuantity::MaxHeight)
-            rows.push_back({"  (to where the bird touches the ground: its centre r above it)", ""});
+        rows.push_back({r.quantity == QuizQuantity::MaxHeight ? "  (its centre, above the launch height)"
+                                                              : "  (until its centre is back at the launch height)",
+                        ""});
         rows.push_back({"  your error", (error >= 0.0 ? "+" : "") + withQuantityUnit(error, r.quantity) + " (" +
                                             formatFixed(r.measured != 0.0 ? 100.0 * error / r.measured : 0.0, 1) +
                                             " %)"});

@@ -125,17 +125,30 @@ std::vector<std::string> shotFeedback(const LevelDef& level, const Catalog& cata
     }
     else if (range)
     {
-        // No air: the path is a parabola, and the lesson is the angle.
+        // No air: the path is a parabola, and the lesson is the angle. Every distance is to where the bird's centre
+        // comes down to a height (the convention of predict, the chart and the predict lesson's card), and the
+        // sentence says which: from a raised slingshot the range to the ground is not v^2 sin 2a / g and the best
+        // angle is not 45 degrees, which is what the lessons teach for a launch from the ground.
+        RangeLaunch level = launch;
+        level.heightM = 0.0;
+        const std::optional<double> back = shot.angleDeg > 0.0 ? rangeAtAngle(level, shot.angleDeg) : std::nullopt;
+        std::string text = format("With no air (g = %.2f m/s\u00B2), %.1f\u00B0 at %.1f m/s ", launch.model.gravity,
+                                  shot.angleDeg, shot.speedMps);
+        if (back && launch.heightM > 0.0)
+            text += format("brings the bird's centre back to the launch height %.1f m away and down to the ground, "
+                           "%.1f m lower, %.1f m away",
+                           *back, launch.heightM, *range);
+        else
+            text += format("brings the bird's centre down to the ground %.1f m away", *range);
         const RangeChart chart = rangeChart(launch, 0.0, 90.0, 1.0);
         if (chart.bestAngleDeg && chart.bestRangeM)
-            // Say the height: from a raised slingshot the range is not v^2 sin 2theta / g and the best angle is not
-            // 45 degrees, which is what the lessons teach for a launch from the ground.
-            sentences.push_back(format("With no air, launched %.1f m above flat ground, %.1f\u00B0 at %.1f m/s lands "
-                                       "%.1f m away (g = %.2f m/s\u00B2); %.1f\u00B0 would reach the furthest, %.1f m "
-                                       "(from the ground: 45\u00B0, v\u00B2/g = %.1f m).",
-                                       launch.heightM, shot.angleDeg, shot.speedMps, *range, launch.model.gravity,
-                                       *chart.bestAngleDeg, *chart.bestRangeM,
-                                       shot.speedMps * shot.speedMps / launch.model.gravity));
+            text += launch.heightM > 0.0
+                        ? format("; from that height %.1f\u00B0 reaches the furthest, %.1f m (from the "
+                                 "ground: 45\u00B0, v\u00B2/g = %.1f m)",
+                                 *chart.bestAngleDeg, *chart.bestRangeM,
+                                 shot.speedMps * shot.speedMps / launch.model.gravity)
+                        : format("; %.1f\u00B0 reaches the furthest, %.1f m", *chart.bestAngleDeg, *chart.bestRangeM);
+        sentences.push_back(text + ".");
     }
     if (sentences.size() > kMaxSentences)
         sentences.resize(kMaxSentences);
