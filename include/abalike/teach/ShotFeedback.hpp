@@ -13,4 +13,9 @@ namespace abalike
 std::vector<std::string> shotFeedback(const LevelDef& level, const Catalog& catalog, const ShotRecord& shot,
                                       double physicsDtS = 1.0 / 60.0);
 
+/// The first sentence's gist in one short, whole sentence (about 60 characters), for a card short of room: "The bird
+/// broke a wood block and flew on." Empty when there is no feedback.
+std::string shotSummary(const LevelDef& level, const Catalog& catalog, const ShotRecord& shot,
+                        double physicsDtS = 1.0 / 60.0);
+
 } // namespace abalike

@@ -82,9 +82,13 @@ sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float
     const LevelDef& level = session.level();
     const unsigned titleSize = scaled(scale, 24.0f);
     const unsigned lineSize = scaled(scale, 19.0f);
-    // A long title is cut short rather than run under the aim readout.
-    const sf::String title = utf8(fitToWidth(*m_font, "Level " + level.id + ": " + level.title, titleSize,
-                                             0.4f * static_cast<float>(size.x), Cut::AtCharacter));
+    // A long title drops the level's id first (a lesson's id is long), and only then is cut short rather than run
+    // under the aim readout.
+    const float titleRoom = 0.4f * static_cast<float>(size.x);
+    std::string titleText = "Level " + level.id + ": " + level.title;
+    if (measureText(*m_font, utf8(titleText), titleSize).x > titleRoom)
+        titleText = level.title;
+    const sf::String title = utf8(fitToWidth(*m_font, titleText, titleSize, titleRoom, Cut::AtCharacter));
     const sf::String score = utf8("Score  " + formatPoints(session.score().total()));
     const sf::String counts = utf8("Birds left  " + std::to_string(session.birdsRemaining()) + "     Pigs left  " +
                                    std::to_string(session.pigsRemaining()));

@@ -112,6 +112,25 @@ std::vector<std::string> wrapText(const sf::Font& font, std::string_view text, u
     return lines;
 }
 
+std::vector<std::string> wrapWholeSentences(const sf::Font& font, std::string_view text, unsigned size, float maxWidth,
+                                            std::size_t maxLines)
+{
+    std::vector<std::string> best;
+    for (std::size_t end = 0; end < text.size();)
+    {
+        std::size_t next = text.size();
+        for (const char* stop : {". ", "? ", "! "})
+            next = std::min(next, text.find(stop, end + 1) == std::string_view::npos ? text.size()
+                                                                                     : text.find(stop, end + 1) + 1);
+        std::vector<std::string> lines = wrapText(font, text.substr(0, next), size, maxWidth);
+        if (lines.size() > maxLines)
+            break;
+        best = std::move(lines);
+        end = next;
+    }
+    return best;
+}
+
 std::string fitToWidth(const sf::Font& font, std::string_view text, unsigned size, float maxWidth, Cut cut)
 {
     const auto fits = [&](std::string_view line)

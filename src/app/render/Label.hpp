@@ -28,6 +28,11 @@ sf::Vector2f measureText(const sf::Font& font, const sf::String& text, unsigned 
 /// own).
 std::vector<std::string> wrapText(const sf::Font& font, std::string_view text, unsigned size, float maxWidth);
 
+/// The text's first whole sentences (ending in ". ", "? " or "! ") that wrap into at most maxLines lines, wrapped;
+/// empty when not even the first sentence does. A card short of room says less rather than stop mid-sentence.
+std::vector<std::string> wrapWholeSentences(const sf::Font& font, std::string_view text, unsigned size, float maxWidth,
+                                            std::size_t maxLines);
+
 /// Where fitToWidth may cut a line that is too wide.
 enum class Cut
 {

@@ -58,6 +58,7 @@ void FeedbackView::update(const GameSession& session, const std::optional<AimRea
     try
     {
         m_sentences = shotFeedback(session.level(), session.catalog(), shot, session.world().dt());
+        m_summary = shotSummary(session.level(), session.catalog(), shot, session.world().dt());
         m_spot.reset();
         m_movedDuringShot = false;
     }
@@ -81,9 +82,11 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
     for (const std::string& sentence : m_sentences)
         for (std::string& line : wrapText(font, sentence, rowSize, maxWidth))
             full.push_back(std::move(line));
-    // Where the whole card has no room (a small window, large text, many panels), the first sentence on one line.
-    const std::vector<std::string> summary{fitToWidth(
-        font, m_sentences.front(), rowSize, std::min(maxWidth, windowWidth - 24.0f * scale - 2.0f * pad), Cut::AtWord)};
+    // Where the whole card has no room (a small window, large text, many panels), the first sentence's gist on one
+    // line, whole or not at all: a sentence cut short would say something else.
+    const bool summaryFits =
+        measureText(font, utf8(m_summary), rowSize).x <= std::min(maxWidth, windowWidth - 24.0f * scale - 2.0f * pad);
+    const std::vector<std::string> summary{summaryFits ? m_summary : std::string()};
     std::vector<sf::FloatRect> panels;
     for (const ScreenRegion& region : screenLayout())
         panels.push_back(region.rect);
@@ -212,8 +215,9 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
         return least;
     };
     const std::optional<Choice> whole = leastCovering(full);
-    const std::optional<Choice> line =
-        !whole || whole->covered.first > 0.0f ? leastCovering(summary) : std::optional<Choice>{};
+    const std::optional<Choice> line = (!whole || whole->covered.first > 0.0f) && !summary.front().empty()
+                                           ? leastCovering(summary)
+                                           : std::optional<Choice>{};
     if (line && (!whole || line->covered.first < whole->covered.first))
         draw(line->rect, line->spot, true);
     else if (whole)

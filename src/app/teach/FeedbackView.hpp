@@ -50,6 +50,7 @@ private:
     bool m_done = false;
     std::optional<std::pair<double, double>> m_firstAim; ///< angle and speed when the next bird became ready
     std::vector<std::string> m_sentences;
+    std::string m_summary; ///< the first sentence's gist, for the one-line card
 };
 
 } // namespace abalike::app

@@ -53,7 +53,7 @@ sf::FloatRect GuideRunner::draw(sf::RenderTarget& target, const sf::Font& font, 
         return sf::FloatRect(topLeft, {maxWidth, 2.0f * pad + titleHeight + rowHeight * static_cast<float>(rows)});
     };
     // In a window too small for the whole step (large text, a low window) the card keeps as many lines as have room
-    // above the panels under it, the last ending in an ellipsis; with no room even for its title it is left out.
+    // above the panels under it, filled with its first whole sentences; with no room even for its title it is left out.
     std::size_t rows = std::min(lines.size(), shrunkRows("guide").value_or(lines.size()));
     while (rows > 0 && !panelHasRoom(target, cardWith(rows)))
         --rows;
@@ -65,9 +65,9 @@ sf::FloatRect GuideRunner::draw(sf::RenderTarget& target, const sf::Font& font, 
         return {};
     if (rows < lines.size())
     {
-        lines.resize(rows);
-        if (rows > 0) // the ellipsis says the step goes on
-            lines.back() = fitToWidth(font, lines.back() + "\u2026", rowSize, maxWidth - 2.0f * pad, Cut::AtWord);
+        // Its first whole sentences that fit: never a sentence cut short.
+        lines = wrapWholeSentences(font, text, rowSize, maxWidth - 2.0f * pad, rows);
+        rows = lines.size();
     }
     const sf::FloatRect rect = cardWith(rows);
     drawTeachPanel(target, rect, scale, "guide");

@@ -6,6 +6,7 @@
 #include "teach/TeachDraw.hpp"
 
 #include <cmath>
+#include <numbers>
 
 namespace abalike::app
 {
@@ -88,18 +89,23 @@ void addBalanceRows(std::vector<PanelRow>& rows, const FirstImpact& impact, cons
 } // namespace
 
 sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topRight,
-                              const FirstImpact& impact, double bodyStrengthNs, unsigned titleSize, unsigned rowSize,
-                              float scale)
+                              const FirstImpact& impact, double bodyStrengthNs, bool university, unsigned titleSize,
+                              unsigned rowSize, float scale)
 {
     const std::string body = impact.bodyType + (impact.bodyKind == EntityKind::Pig ? " pig" : " block");
     // One row per body, before \u2192 after the step: speed and spin, momentum, kinetic energy.
-    const auto bodyRow = [](const std::string& name, double massKg, double inertia, const BodyVelocity& before,
-                            const BodyVelocity& after) -> PanelRow
+    const auto spin = [university](double omegaRadPerS)
+    {
+        return university ? withUnit(omegaRadPerS, 1, "rad/s")
+                          : withUnit(omegaRadPerS / (2.0 * std::numbers::pi), 2, "turns/s");
+    };
+    const auto bodyRow = [&spin](const std::string& name, double massKg, double inertia, const BodyVelocity& before,
+                                 const BodyVelocity& after) -> PanelRow
     {
         const double kineticBefore =
             0.5 * massKg * speed(before) * speed(before) + 0.5 * inertia * before.omegaRadPerS * before.omegaRadPerS;
         return {name + ", " + formatFixed(massKg, 1) + " kg: " + formatFixed(speed(before), 1) + " \u2192 " +
-                    withUnit(speed(after), 2, "m/s") + ", " + withUnit(after.omegaRadPerS, 1, "rad/s"),
+                    withUnit(speed(after), 2, "m/s") + ", " + spin(after.omegaRadPerS),
                 formatFixed(massKg * speed(before), 1) + " \u2192 " + momentum(massKg, after) + "   " +
                     formatFixed(kineticBefore, 1) + " \u2192 " + kinetic(massKg, inertia, after)};
     };
@@ -110,7 +116,9 @@ sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf
          withUnit(impact.kineticBeforeJ(), 0, "") + "\u2192 " + withUnit(impact.kineticAfterJ(), 0, "J")},
     };
     if (const auto e = impact.restitution())
-        rows.push_back({"restitution e = separating / closing speed", formatFixed(*e, 2)});
+        rows.push_back(
+            {university ? "restitution e = separating / closing speed" : "bounciness e = separating / closing speed",
+             formatFixed(*e, 2)});
     addBalanceRows(rows, impact, impact.bodyKind == EntityKind::Pig ? "pig" : "block");
     std::string damage = withUnit(impact.damageNs, 1, "N\u00B7s");
     if (bodyStrengthNs > 0.0)

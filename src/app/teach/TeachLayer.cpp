@@ -265,7 +265,8 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
                                             ? (pig ? pig->healthNs : 0.0)
                                             : (material ? material->strengthNs : 0.0);
                 // The impact panel is as wide as its numbers need, its right edge on the column's.
-                below(drawImpactPanel(target, *font, right, *shot.impact, strength, titleSize, rowSize, scale));
+                below(drawImpactPanel(target, *font, right, *shot.impact, strength, m_app.universityWording(),
+                                      titleSize, rowSize, scale));
             }
         }
     }

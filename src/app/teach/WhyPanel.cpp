@@ -37,7 +37,8 @@ sf::FloatRect drawWhyPanel(sf::RenderTarget& target, const sf::Font& font, sf::V
             std::to_string(world.lastSubsteps()) + " sub-step" + (world.lastSubsteps() > 1 ? "s" : "");
         rows.push_back({"  now", world.birdInFreeFlight()
                                      ? "t " + withUnit(session.timeSinceLaunch(), 2, "s") + ", on the predicted path"
-                                     : (university ? "Box2D owns the bird (" : "colliding (") + substeps + ")"});
+                                 : university ? "Box2D owns the bird (" + substeps + ")"
+                                              : std::string("colliding")});
     }
     if (!session.shots().empty())
     {

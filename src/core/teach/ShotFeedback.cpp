@@ -66,12 +66,28 @@ std::string momentumSentence(const FirstImpact& impact, const Catalog& catalog)
     return text + ".";
 }
 
-} // namespace
-
-std::vector<std::string> shotFeedback(const LevelDef& level, const Catalog& catalog, const ShotRecord& shot,
-                                      double physicsDtS)
+/// The momentum sentence's gist, short enough for one line.
+std::string momentumBrief(const FirstImpact& impact, const Catalog& catalog)
 {
-    std::vector<std::string> sentences;
+    const std::string name = hitName(impact, catalog);
+    if (!impact.broke)
+        return format("The bird hit %s with an impulse of %.0f N\u00B7s.", name.c_str(),
+                      std::hypot(impact.balance.pushOnBody[0], impact.balance.pushOnBody[1]));
+    const bool keptDirection = impact.birdAfter.vx * impact.birdBefore.vx > 0.0;
+    return format("The bird %s %s %s.", impact.bodyKind == EntityKind::Pig ? "defeated" : "broke", name.c_str(),
+                  keptDirection ? "and flew on" : "but was turned back");
+}
+
+/// A sentence of feedback and its gist.
+struct Said
+{
+    std::string full;
+    std::string brief;
+};
+
+std::vector<Said> compose(const LevelDef& level, const Catalog& catalog, const ShotRecord& shot, double physicsDtS)
+{
+    std::vector<Said> sentences;
     const BirdType* bird = catalog.findBird(shot.bird);
     if (bird == nullptr)
         return sentences;
@@ -87,7 +103,7 @@ std::vector<std::string> shotFeedback(const LevelDef& level, const Catalog& cata
     const std::optional<double> range = rangeAtAngle(launch, shot.angleDeg);
 
     if (shot.impact)
-        sentences.push_back(momentumSentence(*shot.impact, catalog));
+        sentences.push_back({momentumSentence(*shot.impact, catalog), momentumBrief(*shot.impact, catalog)});
     if (wind && range)
     {
         RangeLaunch calm = launch;
@@ -95,10 +111,12 @@ std::vector<std::string> shotFeedback(const LevelDef& level, const Catalog& cata
         calm.model.gusts.reset();
         if (const std::optional<double> still = rangeAtAngle(calm, shot.angleDeg);
             still && std::abs(*range - *still) >= kWindShiftWorthM)
-            sentences.push_back(format("The wind moved the landing point %.1f m %s: %.1f m instead of %.1f m in still "
-                                       "air.",
-                                       std::abs(*range - *still), *range > *still ? "forward" : "back", *range,
-                                       *still));
+            sentences.push_back(
+                {format("The wind moved the landing point %.1f m %s: %.1f m instead of %.1f m in "
+                        "still air.",
+                        std::abs(*range - *still), *range > *still ? "forward" : "back", *range, *still),
+                 format("The wind moved the landing point %.1f m %s.", std::abs(*range - *still),
+                        *range > *still ? "forward" : "back")});
     }
     if (drag)
     {
@@ -117,11 +135,14 @@ std::vector<std::string> shotFeedback(const LevelDef& level, const Catalog& cata
                                                     -loss, launchJ);
             if (airless && range)
                 text += format("; in vacuum this launch would land %.1f m away instead of %.1f m", *airless, *range);
-            sentences.push_back(text + ".");
+            sentences.push_back({text + ".", loss >= 0.0 ? format("Air drag took %.0f %% of the bird's launch energy.",
+                                                                  100.0 * loss / launchJ)
+                                                         : format("The wind pushed %.0f J into the flight.", -loss)});
         }
         else if (airless && range && std::abs(*airless - *range) >= kWindShiftWorthM)
             sentences.push_back(
-                format("In vacuum this launch would land %.1f m away instead of %.1f m.", *airless, *range));
+                {format("In vacuum this launch would land %.1f m away instead of %.1f m.", *airless, *range),
+                 format("In vacuum it would land %.1f m away, not %.1f m.", *airless, *range)});
     }
     else if (range)
     {
@@ -131,15 +152,26 @@ std::vector<std::string> shotFeedback(const LevelDef& level, const Catalog& cata
         // angle is not 45 degrees, which is what the lessons teach for a launch from the ground.
         RangeLaunch level = launch;
         level.heightM = 0.0;
-        const std::optional<double> back = shot.angleDeg > 0.0 ? rangeAtAngle(level, shot.angleDeg) : std::nullopt;
+        // Back at the launch height: only a launch upwards from above the ground comes back there.
+        double backM = 0.0;
+        bool comesBack = false;
+        if (shot.angleDeg > 0.0 && launch.heightM > 0.0)
+            if (const std::optional<double> back = rangeAtAngle(level, shot.angleDeg))
+            {
+                backM = *back;
+                comesBack = true;
+            }
         std::string text = format("With no air (g = %.2f m/s\u00B2), %.1f\u00B0 at %.1f m/s ", launch.model.gravity,
                                   shot.angleDeg, shot.speedMps);
-        if (back && launch.heightM > 0.0)
+        if (comesBack)
             text += format("brings the bird's centre back to the launch height %.1f m away and down to the ground, "
                            "%.1f m lower, %.1f m away",
-                           *back, launch.heightM, *range);
+                           backM, launch.heightM, *range);
         else
             text += format("brings the bird's centre down to the ground %.1f m away", *range);
+        const std::string brief =
+            comesBack ? format("No air: back at the launch height at %.1f m, at the ground at %.1f m.", backM, *range)
+                      : format("With no air it came down to the ground %.1f m away.", *range);
         const RangeChart chart = rangeChart(launch, 0.0, 90.0, 1.0);
         if (chart.bestAngleDeg && chart.bestRangeM)
             text += launch.heightM > 0.0
@@ -148,11 +180,28 @@ std::vector<std::string> shotFeedback(const LevelDef& level, const Catalog& cata
                                  *chart.bestAngleDeg, *chart.bestRangeM,
                                  shot.speedMps * shot.speedMps / launch.model.gravity)
                         : format("; %.1f\u00B0 reaches the furthest, %.1f m", *chart.bestAngleDeg, *chart.bestRangeM);
-        sentences.push_back(text + ".");
+        sentences.push_back({text + ".", brief});
     }
     if (sentences.size() > kMaxSentences)
         sentences.resize(kMaxSentences);
     return sentences;
+}
+
+} // namespace
+
+std::vector<std::string> shotFeedback(const LevelDef& level, const Catalog& catalog, const ShotRecord& shot,
+                                      double physicsDtS)
+{
+    std::vector<std::string> out;
+    for (Said& said : compose(level, catalog, shot, physicsDtS))
+        out.push_back(std::move(said.full));
+    return out;
+}
+
+std::string shotSummary(const LevelDef& level, const Catalog& catalog, const ShotRecord& shot, double physicsDtS)
+{
+    std::vector<Said> said = compose(level, catalog, shot, physicsDtS);
+    return said.empty() ? std::string() : std::move(said.front().brief);
 }
 
 } // namespace abalike
