@@ -4,14 +4,9 @@
 // keep each panel drawn over the world inside the window and apart from every other. The game runs in this process
 // under a virtual display with its frames laid out but not drawn (FrameObserver::layoutEvery), which costs a fraction
 // of drawing them: the whole grid takes minutes instead of the two hours of one `abalike play` run per cell.
-#include "render/Font.hpp"
-#include "screens/GameScreens.hpp"
-#include "shell/App.hpp"
+#include "Walk.hpp"
 
-#include <abalike/level/Campaign.hpp>
-#include <abalike/level/LevelFlight.hpp>
 #include <abalike/level/LevelIO.hpp>
-#include <abalike/save/SaveStore.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -20,25 +15,17 @@
 #include <gtest/gtest.h>
 #include <iostream>
 #include <map>
-#include <memory>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
-#include <unistd.h>
 
 namespace abalike::app
 {
 namespace
 {
 
-const std::filesystem::path kSource = ABALIKE_SOURCE_DIR;
+using namespace walk;
 
-/// Frames per run on Earth: the reference shot leaves the slingshot at frame 30; 600 frames (10 s of game time)
-/// reach the next bird's readiness, when the second shot flies, on every level whose first shot does not end it.
-/// Weaker gravity flies and settles slower (framesFor).
-constexpr int kEarthFrames = 600;
-/// Every fourth frame is laid out (15 a second): the panels move with the camera, which moves smoothly.
-constexpr int kLayoutEvery = 4;
 /// Problems listed per level before the rest are only counted.
 constexpr int kListedProblems = 12;
 
@@ -64,23 +51,6 @@ std::vector<Setting> everySetting()
             settings.push_back({scale, false, w, h, "game"});
         }
     return settings;
-}
-
-/// Every campaign level (in play order) and every lesson.
-std::vector<std::string> walkedLevels()
-{
-    std::vector<std::string> paths;
-    const nlohmann::json manifest = nlohmann::json::parse(std::ifstream(kSource / "levels/campaign.json"));
-    for (const nlohmann::json& episode : manifest.at("episodes"))
-        for (const nlohmann::json& level : episode.at("levels"))
-            paths.push_back((kSource / "levels" / level.get<std::string>()).string());
-    std::vector<std::string> lessons;
-    for (const auto& entry : std::filesystem::directory_iterator(kSource / "levels/lessons"))
-        if (entry.path().extension() == ".json")
-            lessons.push_back(entry.path().string());
-    std::sort(lessons.begin(), lessons.end());
-    paths.insert(paths.end(), lessons.begin(), lessons.end());
-    return paths;
 }
 
 std::string describe(const Setting& s)
@@ -117,22 +87,6 @@ std::vector<std::string> layoutProblems(const FrameLayout& frame)
     return problems;
 }
 
-class ScratchData
-{
-public:
-    ScratchData() : m_path(std::filesystem::temp_directory_path() / ("abalike-layout-" + std::to_string(::getpid())))
-    {
-        std::filesystem::create_directories(m_path);
-    }
-    ~ScratchData() { std::filesystem::remove_all(m_path); }
-    ScratchData(const ScratchData&) = delete;
-    ScratchData& operator=(const ScratchData&) = delete;
-    const std::filesystem::path& path() const { return m_path; }
-
-private:
-    std::filesystem::path m_path;
-};
-
 /// What one run of a level under one setting showed.
 struct WalkedRun
 {
@@ -145,30 +99,6 @@ struct WalkedRun
     /// not asserted (where the window has no room elsewhere a panel may have to).
     std::map<std::string, int> covering;
 };
-
-/// One window per size walked, kept open across runs: a new window is a new OpenGL context, whose start (the
-/// software rasterizer compiling its shaders) would cost more than the run laid out in it.
-sf::RenderWindow& windowOfSize(unsigned width, unsigned height)
-{
-    static std::map<std::pair<unsigned, unsigned>, std::unique_ptr<sf::RenderWindow>> windows;
-    std::unique_ptr<sf::RenderWindow>& window = windows[{width, height}];
-    if (!window)
-    {
-        window = std::make_unique<sf::RenderWindow>(sf::VideoMode(width, height), "abalike layout walk",
-                                                    sf::Style::Titlebar | sf::Style::Close);
-        window->setVerticalSyncEnabled(false);
-        window->setKeyRepeatEnabled(true);
-    }
-    return *window;
-}
-
-/// Frames to walk a level: flights and settling last about 1/sqrt(g) as long as on Earth.
-int framesFor(const LevelDef& level)
-{
-    const double slower = std::clamp(std::sqrt(9.81 / level.environment.gravity), 1.0, 3.0);
-    const int frames = static_cast<int>(std::ceil(kEarthFrames * slower));
-    return frames - frames % kLayoutEvery;
-}
 
 /// Lays out every kLayoutEvery-th frame of a run and records what is wrong with it and what covers what.
 class WalkObserver final : public FrameObserver
@@ -196,39 +126,23 @@ private:
 
 WalkedRun walk(const std::string& levelPath, const LevelDef& level, const Setting& setting, const ScratchData& data)
 {
-    // The player's files as a player with these settings has them.
-    std::ofstream(data.path() / "settings.json") << nlohmann::json{
-        {"format", 1},
-        {"text_scale", setting.textScale},
-        {"teaching_overlay", setting.overlay},
-        {"mode", setting.mode}}.dump();
-    SaveStore store(data.path());
-    store.load(SaveStore::Damaged::LeaveAlone);
-
     WalkedRun run;
     AppOptions options;
     options.levelPath = levelPath;
     options.level = level;
     options.frames = framesFor(level);
-    // The reference shot, then the same again (as fast as the next bird can go) when the next bird is ready:
-    // aiming, flight, the action after the first contact and the return to the slingshot.
-    const ScriptedShot first{level.referenceShot->angleDeg, level.referenceShot->speedMps};
-    ScriptedShot second = first;
-    if (level.birds.size() > 1)
-        if (const BirdType* bird = Catalog::builtin().findBird(level.birds[1]))
-            second.speedMps = std::min(second.speedMps, maxLaunchSpeed(level.slingshot, *bird, Catalog::builtin()));
-    options.shots = {first, second};
+    options.shots = walkedShots(level);
     options.width = setting.width;
     options.height = setting.height;
-    options.window = &windowOfSize(setting.width, setting.height);
-    options.tracePath = (data.path() / "trace.jsonl").string();
     WalkObserver observer(run);
     options.observer = &observer;
-    useGameScreens(options);
-    {
-        App app(std::move(options), Campaign{}, std::move(store), loadGameFont());
-        run.exitCode = app.run();
-    }
+    // The player's files as a player with these settings has them.
+    run.exitCode = playLaidOut(std::move(options),
+                               {{"format", 1},
+                                {"text_scale", setting.textScale},
+                                {"teaching_overlay", setting.overlay},
+                                {"mode", setting.mode}},
+                               data);
     std::ifstream trace(data.path() / "trace.jsonl");
     for (std::string line; std::getline(trace, line);)
     {
@@ -279,15 +193,7 @@ TEST_P(LayoutWalk, EveryPanelStaysInsideTheWindowAndApartFromTheOthers)
                            << " listed above)";
 }
 
-std::string testName(const ::testing::TestParamInfo<std::string>& info)
-{
-    std::string name = std::filesystem::path(info.param).stem().string();
-    std::replace_if(
-        name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
-    return name;
-}
-
-INSTANTIATE_TEST_SUITE_P(CampaignAndLessons, LayoutWalk, ::testing::ValuesIn(walkedLevels()), testName);
+INSTANTIATE_TEST_SUITE_P(CampaignAndLessons, LayoutWalk, ::testing::ValuesIn(walkedLevels()), walkedLevelName);
 
 } // namespace
 } // namespace abalike::app

@@ -191,13 +191,10 @@ int App::finishRun(int exitCode, bool layoutOnly)
     else if (!m_options.screenshotPath.empty() || !m_options.tracePath.empty())
     {
         m_screens.finishBackgroundWork();
-        std::vector<DrawnText> drawn;
-        setDrawnTextSink(&drawn);
         const FrameLayout layout = recordFrame(true);
-        setDrawnTextSink(nullptr);
         std::vector<std::string> texts;
         std::vector<std::string> kinds;
-        for (const DrawnText& text : drawn)
+        for (const DrawnText& text : layout.texts)
         {
             texts.push_back(text.text);
             kinds.emplace_back(textKindName(text.kind));
@@ -345,6 +342,7 @@ FrameLayout App::recordFrame(bool pixels)
     layout.window = windowSize();
     setScreenRegionSink(&layout.panels);
     setKeepVisibleSink(&layout.keepVisible);
+    setDrawnTextSink(&layout.texts);
     if (pixels)
         drawFrame();
     else
@@ -361,6 +359,7 @@ FrameLayout App::recordFrame(bool pixels)
     }
     setScreenRegionSink(nullptr);
     setKeepVisibleSink(nullptr);
+    setDrawnTextSink(nullptr);
     return layout;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "render/Label.hpp"
 #include "render/ScreenRegions.hpp"
 
 #include <SFML/System/Vector2.hpp>
@@ -15,6 +16,7 @@ struct FrameLayout
     sf::Vector2u window;
     std::vector<ScreenRegion> panels;      ///< every panel drawn over the world, in drawing order
     std::vector<ScreenRegion> keepVisible; ///< what the panels should leave visible (slingshot, flying bird, pigs)
+    std::vector<DrawnText> texts;          ///< every text the frame draws, in drawing order
 };
 
 } // namespace abalike::app
