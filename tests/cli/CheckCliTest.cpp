@@ -37,6 +37,24 @@ TEST(CheckCli, AGoodLevelPasses)
     EXPECT_TRUE(r.err.empty()) << r.err;
 }
 
+TEST(CheckCli, FillPrintsATextWithTheLevelsValuesAsTheGameFillsIt)
+{
+    // lesson-angle: the red bird at full pull leaves at sqrt(2 E / m) = sqrt(760.5 * 2 / 4) = 19.5 m/s; its concept
+    // says the best angle from its slingshot is 43.9 degrees.
+    const std::string lesson = sourcePath("levels/lessons/lesson-angle.json");
+    const RunResult r = runAbalike("check " + lesson + " --fill 'v0 {v_max:red} m/s, best {vacuum_best_angle:red}' " +
+                                   "--fill '{2 * g|1}'");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("  fill: v0 19.5 m/s, best 43.9\n  fill: 19.6\n"), std::string::npos) << r.out;
+    const RunResult json = runAbalike("check " + lesson + " --json --fill '{g}'");
+    EXPECT_EQ(nlohmann::json::parse(json.out)["files"][0]["filled"], nlohmann::json::array({"9.81"})) << json.out;
+    // A value that does not fill is a usage error naming the text, where and what.
+    const RunResult bad = runAbalike("check " + lesson + " --fill 'best {vacum_best_angle:red}'");
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.err.find("--fill \"best {vacum_best_angle:red}\" at character 7"), std::string::npos) << bad.err;
+    EXPECT_NE(bad.err.find("unknown value \"vacum_best_angle\""), std::string::npos) << bad.err;
+}
+
 TEST(CheckCli, WallsAndMixedTowersPass)
 {
     // Bricks side by side, and a tower whose columns change material storey by storey (issue 9).

@@ -41,6 +41,7 @@ struct CheckArgs
     bool solve = false;
     bool fix = false;
     bool texts = false;
+    std::vector<std::string> fill; ///< texts to fill with each level's values (--fill)
     int threads = 0;
     std::size_t playerRuns = 40;
 };
@@ -390,6 +391,28 @@ void printTexts(const LevelDef& level)
         show("hint " + std::to_string(i + 1), level.hints[i]);
 }
 
+/// Each --fill text with the level's {values} filled, as the game fills its texts. Throws UsageError saying which
+/// text, where in it and what is wrong when one does not fill.
+std::vector<std::string> filledTexts(const CheckArgs& a, const FileReport& r)
+{
+    std::vector<std::string> out;
+    if (!r.level)
+        return out;
+    for (const std::string& text : a.fill)
+    {
+        try
+        {
+            out.push_back(fillText(text, *r.level, Catalog::builtin()));
+        }
+        catch (const TextValueError& e)
+        {
+            throw UsageError("--fill \"" + text + "\" at character " + std::to_string(e.offset() + 1) + " for " +
+                             r.file + ": " + e.what());
+        }
+    }
+    return out;
+}
+
 int runCheck(const CheckArgs& a)
 {
     if (a.threads < 0 || a.threads > 256)
@@ -408,7 +431,12 @@ int runCheck(const CheckArgs& a)
         out["ok"] = allOk;
         out["files"] = nlohmann::ordered_json::array();
         for (const FileReport& r : reports)
-            out["files"].push_back(reportJson(r));
+        {
+            nlohmann::ordered_json file = reportJson(r);
+            if (!a.fill.empty())
+                file["filled"] = filledTexts(a, r);
+            out["files"].push_back(std::move(file));
+        }
         std::cout << out.dump(2) << '\n';
     }
     else
@@ -420,6 +448,8 @@ int runCheck(const CheckArgs& a)
             std::cout << escapeForTerminal(summaryLine(r)) << '\n';
             if (a.texts && r.level)
                 printTexts(*r.level);
+            for (const std::string& filled : filledTexts(a, r))
+                std::cout << "  fill: " << escapeForTerminal(filled) << '\n';
             // Every problem in the FILE:LINE:COL form editors jump to, on stderr like a compiler's.
             for (const LevelIssue& issue : r.issues)
                 std::cerr << issue.format() << '\n';
@@ -444,6 +474,9 @@ CommandRunner addCheckCommand(CLI::App& app)
                     "0: none)");
     cmd->add_flag("--texts", args->texts,
                   "also print each level's concept and hints as the player reads them, their {...} values filled");
+    cmd->add_option("--fill", args->fill,
+                    "also print this text with its {...} values filled from each level, as the game fills its texts "
+                    "(repeatable; a value that does not fill is a usage error)");
     cmd->add_flag("--fix", args->fix,
                   "snap bodies that float or overlap by up to 2 cm onto what is under them, rewriting just those "
                   "numbers in the file, and print each change");
