@@ -178,18 +178,19 @@ Guide lesson(const std::string& id, const LevelDef& level, const Catalog& catalo
               won}},
             "Drag grows with the square of the speed: the faster the shot, the bigger the share the air takes."};
     if (id == "lesson-wind")
-        return {"Lesson: wind",
-                {overlayStep("the green arrow is the bird's velocity through the air, v \u2212 w."),
-                 {"Launch into the headwind. The wind has no force of its own: drag points against v \u2212 w, and "
-                  "against the wind that is a bigger push.",
-                  launched},
-                 {"Press G: the range chart includes the wind. Find an angle that still reaches the tower.",
-                  [](const GuideContext& c)
-                  {
-                      return c.chartOn;
-                  }},
-                 {"Take out the pig: higher and harder than in still air.", won}},
-                "A headwind shortens every shot and favours flatter ones; a tailwind carries high, slow shots."};
+        return {
+            "Lesson: wind",
+            {overlayStep("the green arrow is the bird's velocity through the air, v \u2212 w."),
+             {"Launch into the headwind. The wind has no force of its own: drag points against v \u2212 w, and "
+              "against the wind that is a bigger push.",
+              launched},
+             {"Press G: the range chart includes the wind. Find an angle that still reaches the tower.",
+              [](const GuideContext& c)
+              {
+                  return c.chartOn;
+              }},
+             {"Take out the pig: pull harder than in still air. The chart's best angle is lower, not higher.", won}},
+            "A headwind shortens every shot and favours flatter ones; a tailwind carries high, slow shots."};
     if (id == "lesson-momentum")
         return {"Lesson: momentum and energy",
                 {overlayStep("after the first impact a panel shows momentum and energy."),
