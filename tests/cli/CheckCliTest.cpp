@@ -105,6 +105,21 @@ TEST(CheckCli, AClaimThatDoesNotHoldFailsTheLevelAtTheClaim)
     EXPECT_EQ(r.err.find("/claims/0"), std::string::npos) << r.err;
 }
 
+TEST(CheckCli, AnOutcomeClaimThatDoesNotHoldFailsAtItsOutcome)
+{
+    // 2-8's towers: the first, hit high at 16 degrees and 28 m/s, lands on the pig of the second (its claim holds, in
+    // at least 7 of the 9 aims around the shot); no aim makes it reach the pig of the last.
+    const std::string file = sourcePath("tests/level/claims/tower-onto-the-last.json");
+    const RunResult r = runAbalike("check " + file);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find(file + ":19:18: error: /claims/1/outcome: does not hold for this level: a pig at x 28 to 29 m "
+                                "falls to a block from x 17.5 to 18.5 m in 0 of the 9 aims around 16\u00B0, 28 m/s "
+                                "(the claim needs 5) (so /hints/1 says something untrue)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("/claims/0"), std::string::npos) << r.err;
+}
+
 TEST(CheckCli, OneBadFileFailsTheRunButEveryFileIsReported)
 {
     const RunResult r = runAbalike("check " + kFirstLevel + " " + malformed("unknown-bird"));

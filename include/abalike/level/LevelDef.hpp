@@ -124,12 +124,28 @@ inline constexpr const char* kCustomBirdName = "custom";
 
 enum class WorldTheme; // WorldTheme.hpp
 
-/// A qualitative promise one of the level's texts makes, as a comparison the program computes for the level
-/// (`abalike check` fails when it does not hold): "best_angle:red < calm_best_angle:red".
+/// An outcome a text promises for a shot: over a fan of aims around it, a pig standing in an x range is defeated (by a
+/// block that stood in another x range, when given) in at least so many of the aims. Toppling is chaotic: one aim
+/// proves little, most of a small fan does.
+struct OutcomeClaimDef
+{
+    double angleDeg = 0.0; ///< the shot the text describes ("shot": [angle, speed])
+    double speedMps = 0.0;
+    std::array<double, 2> pigX{}; ///< "pig_x": a pig whose x as written is in [min, max] is defeated ...
+    std::optional<std::array<double, 2>> byBlockX; ///< "by_block_x": ... by a block whose x as written is in it
+    int inAtLeast = 1;                             ///< "in_at_least": of the fan's kOutcomeFanAims aims
+
+    bool operator==(const OutcomeClaimDef&) const = default;
+};
+
+/// A qualitative promise one of the level's texts makes, as something the program computes for the level (`abalike
+/// check` fails when it does not hold): a comparison ("best_angle:red < calm_best_angle:red") or an outcome.
 struct ClaimDef
 {
     std::string about; ///< the text it backs, as a JSON pointer: "/concept" or "/hints/N"
-    std::string holds; ///< EXPRESSION OP EXPRESSION, OP one of < > <= >=, expressions as in the placeholders
+    std::string holds; ///< EXPRESSION OP EXPRESSION, OP one of < > <= >=, expressions as in the placeholders; empty
+                       ///< for an outcome
+    std::optional<OutcomeClaimDef> outcome;
 
     bool operator==(const ClaimDef&) const = default;
 };

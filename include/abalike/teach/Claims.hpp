@@ -11,6 +11,13 @@
 namespace abalike
 {
 
+/// An outcome claim's fan: its shot and the aims around it, 1 degree and 0.5 m/s apart (3 x 3).
+inline constexpr int kOutcomeFanAims = 9;
+inline constexpr double kOutcomeFanAngleStepDeg = 1.0;
+inline constexpr double kOutcomeFanSpeedStepMps = 0.5;
+/// How long after its launch each aim of the fan is watched: a tower takes a few seconds to fall onto the next.
+inline constexpr double kOutcomeWatchS = 8.0;
+
 /// A claim's comparison, split: LEFT OP RIGHT (levels/README.md, "Claims").
 struct ClaimParts
 {
@@ -36,8 +43,11 @@ struct ClaimResult
     double left = 0.0;
     double right = 0.0;
     std::string message; ///< "best_angle:red = 34.0 is not < calm_best_angle:red = 39.4", or why it cannot be computed
+    int aimsThatDo = 0;  ///< an outcome: how many of the fan's aims make it happen
 };
 
+/// Computes the claim for the level: a comparison from the level's values; an outcome by playing the level's first
+/// bird at each aim of the fan around its shot (the speed kept to what the slingshot gives) for kOutcomeWatchS.
 ClaimResult evaluateClaim(const ClaimDef& claim, const LevelDef& level, const Catalog& catalog);
 
 } // namespace abalike

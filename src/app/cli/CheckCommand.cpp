@@ -227,7 +227,8 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
     {
         const ClaimResult claim = evaluateClaim(level.claims[i], level, Catalog::builtin());
         if (!claim.holds)
-            falseClaims.push_back({item.file, 0, 0, "/claims/" + std::to_string(i) + "/holds",
+            falseClaims.push_back({item.file, 0, 0,
+                                   "/claims/" + std::to_string(i) + (level.claims[i].outcome ? "/outcome" : "/holds"),
                                    "does not hold for this level: " + claim.message + " (so " + level.claims[i].about +
                                        " says something untrue)"});
     }

@@ -358,7 +358,58 @@ void readHints(LevelReader& r, const json& root, LevelDef& level)
     }
 }
 
-void readClaims(LevelReader& r, const json& root, LevelDef& level)
+/// [min, max] of two numbers in range, min <= max; nullopt (reported) otherwise.
+std::optional<std::array<double, 2>> readRange(LevelReader& r, const json& object, const std::string& p,
+                                               const char* key, const NumberRange& range)
+{
+    const auto it = object.find(key);
+    const std::string pointer = p + "/" + key;
+    if (it == object.end() || !r.array(*it, pointer, 2, 2, "numbers [min, max]"))
+        return std::nullopt;
+    const auto low = r.numberAt((*it)[0], pointer + "/0", range);
+    const auto high = r.numberAt((*it)[1], pointer + "/1", range);
+    if (!low || !high)
+        return std::nullopt;
+    if (*low > *high)
+    {
+        r.error(pointer, "expected [min, max] with min <= max, got " + it->dump());
+        return std::nullopt;
+    }
+    return std::array<double, 2>{*low, *high};
+}
+
+/// "outcome": {"shot": [ANGLE, SPEED], "pig_x": [MIN, MAX], "by_block_x": [MIN, MAX], "in_at_least": K}.
+std::optional<OutcomeClaimDef> readOutcome(LevelReader& r, const json& value, const std::string& p,
+                                           const Catalog& catalog)
+{
+    if (!r.object(value, p, {"shot", "pig_x", "by_block_x", "in_at_least"}))
+        return std::nullopt;
+    OutcomeClaimDef outcome;
+    const auto shot = value.find("shot");
+    if (shot == value.end())
+        r.error(p, "missing required key \"shot\" (expected [angle_deg, speed_mps], the shot the text describes)");
+    else if (r.array(*shot, p + "/shot", 2, 2, "numbers [angle_deg, speed_mps]"))
+    {
+        outcome.angleDeg = r.numberAt((*shot)[0], p + "/shot/0", NumberRange{-90.0, 90.0, "degrees"}).value_or(0.0);
+        outcome.speedMps =
+            r.numberAt((*shot)[1], p + "/shot/1", NumberRange{0.0, catalog.maxLaunchSpeedMps(), "m/s"}).value_or(0.0);
+    }
+    const NumberRange world{-kWorldExtentM, kWorldExtentM, "m"};
+    if (value.find("pig_x") == value.end())
+        r.error(p, "missing required key \"pig_x\" (expected [min, max]: where the pig the text promises stands)");
+    else if (const auto pigX = readRange(r, value, p, "pig_x", world))
+        outcome.pigX = *pigX;
+    if (value.find("by_block_x") != value.end())
+        outcome.byBlockX = readRange(r, value, p, "by_block_x", world);
+    outcome.inAtLeast = static_cast<int>(
+        r.number(value, p, "in_at_least", 1.0, true, NumberRange{1.0, static_cast<double>(kOutcomeFanAims), "aims"}));
+    if (const auto k = value.find("in_at_least"); k != value.end() && k->is_number() && !k->is_number_integer() &&
+                                                  k->get<double>() != std::floor(k->get<double>()))
+        r.error(p + "/in_at_least", "expected a whole number of aims, got " + k->dump());
+    return outcome;
+}
+
+void readClaims(LevelReader& r, const json& root, LevelDef& level, const Catalog& catalog)
 {
     const auto it = root.find("claims");
     if (it == root.end() || !r.array(*it, "/claims", 0, kMaxClaims, "claims"))
@@ -366,11 +417,20 @@ void readClaims(LevelReader& r, const json& root, LevelDef& level)
     for (std::size_t i = 0; i < it->size(); ++i)
     {
         const std::string p = "/claims/" + std::to_string(i);
-        if (!r.object((*it)[i], p, {"about", "holds"}))
+        const json& item = (*it)[i];
+        if (!r.object(item, p, {"about", "holds", "outcome"}))
             continue;
         ClaimDef claim;
-        claim.about = r.string((*it)[i], p, "about", "", true);
-        claim.holds = r.string((*it)[i], p, "holds", "", true);
+        claim.about = r.string(item, p, "about", "", true);
+        const bool holds = item.contains("holds");
+        const bool outcome = item.contains("outcome");
+        if (holds == outcome)
+            r.error(p, holds ? "expected \"holds\" or \"outcome\", not both"
+                             : "missing \"holds\" (a comparison) or \"outcome\" (what a shot does)");
+        if (holds)
+            claim.holds = r.string(item, p, "holds", "", true);
+        else if (outcome)
+            claim.outcome = readOutcome(r, item["outcome"], p + "/outcome", catalog);
         level.claims.push_back(std::move(claim));
     }
 }
@@ -394,8 +454,9 @@ void checkClaims(LevelReader& r, const LevelDef& level, const Catalog& catalog)
                              : "\"/concept\" or \"/hints/0\" to \"/hints/" + std::to_string(hints - 1) + "\"";
             r.error(p + "/about", "expected the text the claim backs: " + texts + ", got \"" + claim.about + "\"");
         }
-        for (const auto& [offset, message] : checkClaim(claim.holds, level, catalog))
-            r.error(p + "/holds", "character " + std::to_string(offset + 1) + " of the claim: " + message);
+        if (!claim.outcome && !claim.holds.empty())
+            for (const auto& [offset, message] : checkClaim(claim.holds, level, catalog))
+                r.error(p + "/holds", "character " + std::to_string(offset + 1) + " of the claim: " + message);
     }
 }
 
@@ -516,7 +577,7 @@ LevelDef parseLevelText(std::string_view text, const std::string& fileName, cons
 
     readHeader(r, root, level);
     readHints(r, root, level);
-    readClaims(r, root, level);
+    readClaims(r, root, level, catalog);
     readSlingshot(r, root, level);
     readBirds(r, root, level, catalog);
     readBlocks(r, root, level, catalog);

@@ -237,7 +237,20 @@ std::string writeLevelJson(const LevelDef& level, const std::string& schemaRefer
     {
         OrderedJson claims = OrderedJson::array();
         for (const ClaimDef& claim : level.claims)
-            claims.push_back({{"about", claim.about}, {"holds", claim.holds}});
+        {
+            if (!claim.outcome)
+            {
+                claims.push_back({{"about", claim.about}, {"holds", claim.holds}});
+                continue;
+            }
+            const OutcomeClaimDef& o = *claim.outcome;
+            OrderedJson outcome = {{"shot", OrderedJson::array({num(o.angleDeg), num(o.speedMps)})},
+                                   {"pig_x", OrderedJson::array({num(o.pigX[0]), num(o.pigX[1])})}};
+            if (o.byBlockX)
+                outcome["by_block_x"] = OrderedJson::array({num((*o.byBlockX)[0]), num((*o.byBlockX)[1])});
+            outcome["in_at_least"] = o.inAtLeast;
+            claims.push_back({{"about", claim.about}, {"outcome", std::move(outcome)}});
+        }
         root["claims"] = std::move(claims);
     }
     if (level.sandbox)

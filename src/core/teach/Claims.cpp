@@ -1,6 +1,10 @@
+#include <abalike/game/GameSession.hpp>
+#include <abalike/level/LevelCatalog.hpp>
+#include <abalike/level/LevelFlight.hpp>
 #include <abalike/teach/Claims.hpp>
 #include <abalike/teach/TextValues.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -25,6 +29,73 @@ std::string shown(double value)
     char text[32];
     std::snprintf(text, sizeof text, "%.4g", value);
     return text;
+}
+
+bool within(double x, const std::array<double, 2>& range)
+{
+    return x >= range[0] && x <= range[1];
+}
+
+/// Whether one aim defeats a pig the outcome names, by a block it names.
+bool aimDoesIt(const OutcomeClaimDef& outcome, const LevelDef& level, const Catalog& catalog, double angleDeg,
+               double speedMps)
+{
+    const std::unique_ptr<GameSession> session = simulateShots(level, {{angleDeg, speedMps}}, catalog);
+    // The shot's own window ends when the next bird is ready; a tower may still be falling onto the next.
+    while (!session->finished() && session->timeSinceLaunch() < kOutcomeWatchS)
+        session->step();
+    for (const DestroyedEvent& event : session->defeats())
+    {
+        if (event.kind != EntityKind::Pig || event.index < 0 ||
+            !within(level.pigs[static_cast<std::size_t>(event.index)].x, outcome.pigX))
+            continue;
+        if (!outcome.byBlockX)
+            return true;
+        if (event.cause.kind == CauseKind::Block && event.cause.index >= 0 &&
+            within(level.blocks[static_cast<std::size_t>(event.cause.index)].x, *outcome.byBlockX))
+            return true;
+    }
+    return false;
+}
+
+std::string rangeText(const std::array<double, 2>& range)
+{
+    return shown(range[0]) + " to " + shown(range[1]) + " m";
+}
+
+ClaimResult evaluateOutcome(const OutcomeClaimDef& outcome, const LevelDef& level, const Catalog& catalog)
+{
+    ClaimResult result;
+    const Catalog own = levelCatalog(level, catalog);
+    const BirdType* bird = level.birds.empty() ? nullptr : own.findBird(level.birds.front());
+    if (bird == nullptr)
+    {
+        result.message = "cannot be computed: the level has no bird to shoot";
+        return result;
+    }
+    const double fastest = maxLaunchSpeed(level.slingshot, *bird, own);
+    try
+    {
+        for (const double da : {-kOutcomeFanAngleStepDeg, 0.0, kOutcomeFanAngleStepDeg})
+            for (const double dv : {-kOutcomeFanSpeedStepMps, 0.0, kOutcomeFanSpeedStepMps})
+                if (aimDoesIt(outcome, level, catalog, outcome.angleDeg + da,
+                              std::clamp(outcome.speedMps + dv, 0.0, fastest)))
+                    ++result.aimsThatDo;
+    }
+    catch (const LaunchError& e)
+    {
+        result.message = std::string("cannot be computed: ") + e.what();
+        return result;
+    }
+    result.holds = result.aimsThatDo >= outcome.inAtLeast;
+    result.left = result.aimsThatDo;
+    result.right = outcome.inAtLeast;
+    result.message = "a pig at x " + rangeText(outcome.pigX) + " falls" +
+                     (outcome.byBlockX ? " to a block from x " + rangeText(*outcome.byBlockX) : std::string()) +
+                     " in " + std::to_string(result.aimsThatDo) + " of the " + std::to_string(kOutcomeFanAims) +
+                     " aims around " + shown(outcome.angleDeg) + "\u00B0, " + shown(outcome.speedMps) +
+                     " m/s (the claim needs " + std::to_string(outcome.inAtLeast) + ")";
+    return result;
 }
 
 } // namespace
@@ -84,6 +155,8 @@ std::vector<std::pair<std::size_t, std::string>> checkClaim(std::string_view hol
 
 ClaimResult evaluateClaim(const ClaimDef& claim, const LevelDef& level, const Catalog& catalog)
 {
+    if (claim.outcome)
+        return evaluateOutcome(*claim.outcome, level, catalog);
     ClaimResult result;
     std::string error;
     const std::optional<ClaimParts> parts = splitClaim(claim.holds, error);
