@@ -36,18 +36,26 @@ LevelDef headwind()
     return loadLevel(kLevels + "3-4-headwind.json", Catalog::builtin());
 }
 
+ClaimDef comparison(const std::string& about, const std::string& holds)
+{
+    ClaimDef claim;
+    claim.about = about;
+    claim.holds = holds;
+    return claim;
+}
+
 TEST(Claims, AHeadwindLowersTheBestAngleAndATailwindRaisesIt)
 {
     // The misconception the campaign once taught: "in a headwind, aim higher".
     const LevelDef against = headwind();
     const ClaimResult lower =
-        evaluateClaim({"/concept", "best_angle:red < calm_best_angle:red"}, against, Catalog::builtin());
+        evaluateClaim(comparison("/concept", "best_angle:red < calm_best_angle:red"), against, Catalog::builtin());
     EXPECT_TRUE(lower.holds) << lower.message;
     EXPECT_NEAR(lower.left, 34.0, 0.5);
     EXPECT_NEAR(lower.right, 39.4, 0.5);
     const LevelDef with = loadLevel(kLevels + "3-6-windy-ridge.json", Catalog::builtin());
     const ClaimResult farther =
-        evaluateClaim({"/concept", "best_range:red > vacuum_best_range:red"}, with, Catalog::builtin());
+        evaluateClaim(comparison("/concept", "best_range:red > vacuum_best_range:red"), with, Catalog::builtin());
     EXPECT_FALSE(farther.holds) << "an 8 m/s tailwind does not beat vacuum at full pull";
     EXPECT_EQ(farther.message.rfind("best_range:red = 65.2", 0), 0u) << farther.message;
     EXPECT_NE(farther.message.find(" is not > vacuum_best_range:red = 93.2"), std::string::npos) << farther.message;
@@ -58,7 +66,7 @@ TEST(Claims, ComparisonsAndExpressions)
     const LevelDef level = headwind();
     const auto holds = [&](const std::string& claim)
     {
-        return evaluateClaim({"/concept", claim}, level, Catalog::builtin()).holds;
+        return evaluateClaim(comparison("/concept", claim), level, Catalog::builtin()).holds;
     };
     EXPECT_TRUE(holds("v_max:red > v_max:black"));
     EXPECT_TRUE(holds("v_max:red >= 30"));
@@ -85,6 +93,27 @@ TEST(Claims, SyntaxIsCheckedWithoutComputing)
     ASSERT_EQ(problems.size(), 1u);
     EXPECT_EQ(problems[0].first, 4u) << "the character where the unknown name starts";
     EXPECT_NE(problems[0].second.find("unknown value \"best_angel\""), std::string::npos);
+}
+
+TEST(Claims, AnOutcomeCountsTheAimsOfItsFanThatDoWhatTheTextSays)
+{
+    // 2-8: the first tower (a stone pillar at x = 18), hit high, falls onto the pig on the second (x = 21.5).
+    const LevelDef level = loadLevel(kLevels + "2-8-wrecking-crew.json", Catalog::builtin());
+    ASSERT_EQ(level.claims.size(), 1u);
+    ClaimDef claim = level.claims.front();
+    ASSERT_TRUE(claim.outcome.has_value());
+    const ClaimResult onto = evaluateClaim(claim, level, Catalog::builtin());
+    EXPECT_TRUE(onto.holds) << onto.message;
+    EXPECT_GE(onto.aimsThatDo, 7) << onto.message;
+    // The same pig felled by a block that stood elsewhere (the third tower) does not count ...
+    claim.outcome->byBlockX = std::array<double, 2>{24.5, 25.5};
+    EXPECT_EQ(evaluateClaim(claim, level, Catalog::builtin()).aimsThatDo, 0);
+    // ... and a shot that misses the tower high up (aimed at the ground in front of it) fells nothing.
+    claim.outcome->byBlockX.reset();
+    claim.outcome->angleDeg = -10.0;
+    const ClaimResult low = evaluateClaim(claim, level, Catalog::builtin());
+    EXPECT_FALSE(low.holds);
+    EXPECT_EQ(low.aimsThatDo, 0) << low.message;
 }
 
 } // namespace

@@ -20,7 +20,9 @@ def level(id_, title, concept, hints, birds, scene, reference_shot, slingshot=No
         "episode": id_.split("-")[0],
         "concept": concept,
         "hints": hints,
-        **({"claims": [{"about": about, "holds": holds} for about, holds in claims]} if claims else {}),
+        # A claim is (about, "comparison") or (about, {outcome}) (levels/README.md, "Claims").
+        **({"claims": [{"about": about, ("holds" if isinstance(what, str) else "outcome"): what}
+                       for about, what in claims]} if claims else {}),
         "slingshot": slingshot or {"x": 0, "y": 1.5},
         "birds": birds,
         "blocks": scene.blocks,
@@ -121,18 +123,27 @@ def l2_7():
 
 def l2_8():
     s = Scene()
-    tower(s, 20, 0, 3, 2.0, 2.0, ("wood",), ("wood",), ("small", "medium", "small"))
-    tower(s, 24, 0, 3, 2.0, 2.0, ("wood",), ("wood",), ("large", None, "small"))
-    top = tower(s, 28, 0, 3, 2.0, 2.0, ("wood",), ("wood",), ("helmet", "small", None))
-    roof(s, 28, top, 2.6, "wood")
-    ball(s, 20, 6.75, 0.6, "stone")
-    ball(s, 24, 6.75, 0.6, "stone")
+    # Tall stone towers closer together than they are tall: one pushed high tips about its foot onto the next. The
+    # pigs on the plinths are what a falling tower lands on; the ones in the wood frames between are for the next birds.
+    s.block("stone", 18, 3, 0.3, 6)
+    roof(s, 19.75, frame(s, 19.75, 0, 1.6, 1.2, "wood", "wood", "medium"), 1.6, "wood")
+    s.block("stone", 21.5, 2.25, 0.6, 4.5)
+    s.pig("small", 21.5, 4.5)
+    ball(s, 23.3, 0, 0.6, "stone")
+    s.block("stone", 25, 3, 0.3, 6)
+    roof(s, 26.75, frame(s, 26.75, 0, 1.6, 1.2, "wood", "wood", "medium"), 1.6, "wood")
+    s.block("stone", 28.5, 2.25, 0.6, 4.5)
+    s.pig("small", 28.5, 4.5)
+    roof(s, 31, frame(s, 31, 0, 1.6, 1.2, "wood", "ice", "small"), 1.6, "ice")
+    s.pig("small", 34, pyramid(s, 34, 0, 3, 0.8, "wood"))
     return level("2-8", "Wrecking Crew",
-                 "A falling tower passes its push on: the towers stand closer than they are tall, so the first one "
-                 "to fall lands on the next, and that one on the last; gravity speeds each as it tips. The bird "
-                 "only has to start it.",
+                 "A tall tower tips when it is pushed high up: the push turns it about its foot, and once its centre "
+                 "of mass passes over the edge gravity does the rest. These towers stand closer together than they "
+                 "are tall, so the first one to fall lands on the next. The bird only has to start it.",
                  ["Hit the first tower high up: it falls onto the next."],
-                 ["red", "red", "blue"], s, (12.0, 26.0))
+                 ["red", "red", "blue", "red"], s, (16.0, 28.0),
+                 claims=[("/hints/0", {"shot": [16.0, 28.0], "pig_x": [21.0, 22.0], "by_block_x": [17.5, 18.5],
+                                       "in_at_least": 7})])
 
 
 # Episode 3: air and wind ----------------------------------------------------------------------------------------------
