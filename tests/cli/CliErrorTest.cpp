@@ -54,7 +54,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInvocation{"PlayBadSize", "play " + kLevel + " --size 10x10 --frames 1", "--size"},
         BadInvocation{"PlayBadFrames", "play " + kLevel + " --frames -5", "--frames"},
         BadInvocation{"PlayMissingLevel", "play /nonexistent.json --frames 1", "cannot open"},
-        BadInvocation{"PlayUnknownLevelId", "play --level 9-9 --frames 1", "no campaign level has the id \"9-9\""},
+        BadInvocation{"PlayUnknownLevelId", "play --level 9-9 --frames 1", "no campaign level has the number \"9-9\""},
         BadInvocation{"PlayLevelIdAndFile", "play " + kLevel + " --level 3-2 --frames 1", "--level"}),
     [](const ::testing::TestParamInfo<BadInvocation>& info) { return std::string(info.param.name); });
 

@@ -27,6 +27,30 @@ TEST(Campaign, LoadsEveryLevelInPlayOrder)
     EXPECT_FALSE(campaign.indexOf("9-9").has_value());
 }
 
+TEST(Campaign, ALevelsNumberIsItsPlaceAndItsProgressKeyIsItsId)
+{
+    // The balance orders each episode by difficulty, so the ids no longer count up: the number a player sees (tile,
+    // title, play --level) is the level's place in its episode; progress stays under the id, which never moves.
+    const Campaign campaign =
+        loadCampaignLevels(std::string(ABALIKE_SOURCE_DIR) + "/levels/campaign.json", Catalog::builtin());
+    std::size_t place = 0;
+    for (std::size_t i = 0; i < campaign.levels.size(); ++i)
+    {
+        const CampaignLevel& level = campaign.levels[i];
+        place = i > 0 && campaign.levels[i - 1].episode == level.episode ? place + 1 : 1;
+        EXPECT_EQ(level.number, campaign.episodes[level.episode].id + "-" + std::to_string(place)) << level.level.id;
+        EXPECT_EQ(level.key, level.level.id);
+        EXPECT_EQ(campaign.indexOfNumber(level.number), i);
+    }
+    // Episode 2 starts 2-4, 2-2, 2-3: the second tile is 2-2 Heavy Hitter, whose id is 2-2; the sixth, numbered
+    // 2-6, is Wrecking Crew, saved as 2-8.
+    const std::size_t crew = *campaign.indexOfNumber("2-6");
+    EXPECT_EQ(campaign.levels[crew].level.title, "Wrecking Crew");
+    EXPECT_EQ(campaign.levels[crew].key, "2-8");
+    EXPECT_FALSE(campaign.indexOfNumber("2-9").has_value());
+    EXPECT_EQ(campaign.levelArguments().front(), "1-1");
+}
+
 TEST(Campaign, ReportsTheProblemsOfEveryBrokenLevel)
 {
     const auto dir = std::filesystem::temp_directory_path() / ("abalike-campaign-" + std::to_string(::getpid()));
@@ -109,6 +133,10 @@ TEST(Campaign, ASaveOfTheFirstTwentyFiveLevelsKeepsItsStarsAndOpensTheNewLevelsI
     unlockCampaign(progress, ids);
 
     EXPECT_EQ(progress.levels, saved.levels) << "every star and best score stays";
+    // ... with the level it was won on, whatever number that level now shows: 2-4 Rolling Ball is tile 2-1.
+    const Campaign campaign =
+        loadCampaignLevels(std::string(ABALIKE_SOURCE_DIR) + "/levels/campaign.json", Catalog::builtin());
+    EXPECT_EQ(progress.levels.at(campaign.levels[*campaign.indexOfNumber("2-1")].key).bestScore, 20000);
     for (const std::string& id : saved.unlocked)
         EXPECT_TRUE(progress.isUnlocked(id)) << id << " stays open";
     for (std::size_t i = 1; i < ids.size(); ++i)

@@ -301,12 +301,20 @@ TEST_F(ScreenFlow, PlayPackOpensThePacksFirstUnfinishedLevelAndInstalledPacksFol
     EXPECT_EQ(installed.err.find("does not load"), std::string::npos) << installed.err;
 }
 
-TEST_F(ScreenFlow, PlayLevelOpensACampaignLevelByItsIdEvenLocked)
+TEST_F(ScreenFlow, PlayLevelOpensACampaignLevelByItsNumberEvenLocked)
 {
+    // 3-2 is the second tile of episode 3 (Breathing Wind, saved under its id 3-3), and its title says 3-2.
     const GameRun run = play("--level 3-2 --frames 3");
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"3-2"}));
-    EXPECT_EQ(run.values("level", "campaign_index"), (std::vector<std::string>{"19"}));
+    EXPECT_EQ(run.values("level", "number"), (std::vector<std::string>{"3-2"}));
+    EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"3-3"}));
+    EXPECT_EQ(run.values("level", "campaign_index"), (std::vector<std::string>{"17"}));
+    bool titled = false;
+    for (const nlohmann::json& line : run.trace)
+        if (line.value("event", "") == "texts")
+            for (const nlohmann::json& text : line["shown"])
+                titled = titled || text.get<std::string>() == "Level 3-2: Breathing Wind";
+    EXPECT_TRUE(titled);
 }
 
 TEST_F(ScreenFlow, ATimedLevelThatRunsOutSaysOutOfTimeAndTheTraceSaysWhy)

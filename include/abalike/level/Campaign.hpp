@@ -18,9 +18,16 @@ struct CampaignLevel
     std::string path;        ///< the level file
     std::size_t episode = 0; ///< index into Campaign::episodes
     LevelDef level;
-    /// What progress is saved under: the level's id for the bundled campaign, "PACK/ID" for a level pack's.
+    /// What progress is saved under: the level's id for the bundled campaign, "PACK/ID" for a level pack's. It never
+    /// changes when the campaign's order does, so saved stars stay with their level.
     std::string key;
     std::string pack; ///< the level pack's name (its folder); empty for the bundled campaign
+    /// What the player calls it: its episode and its place there, from 1 ("2-6" for the sixth level of episode 2), on
+    /// its tile, in its title and for `play --level`. Follows the order, so it can differ from the id.
+    std::string number;
+
+    /// The name `play --level` takes: the number, "PACK/NUMBER" for a level pack's.
+    std::string levelArgument() const { return pack.empty() ? number : pack + "/" + number; }
 };
 
 /// A campaign manifest with every level it lists loaded, in play order.
@@ -34,6 +41,10 @@ struct Campaign
     std::vector<std::string> levelIds() const;
     /// Index into levels of the level with that progress key.
     std::optional<std::size_t> indexOf(const std::string& levelKey) const;
+    /// Index into levels of the level `play --level` names (CampaignLevel::levelArgument).
+    std::optional<std::size_t> indexOfNumber(const std::string& levelArgument) const;
+    /// Every level's levelArgument, in play order.
+    std::vector<std::string> levelArguments() const;
 };
 
 /// Loads a manifest and every level it lists. Throws LevelLoadError with the problems of every file that does not

@@ -82,17 +82,18 @@ int runPlayCommand(const PlayArgs& a)
     }
     if (!a.levelId.empty())
     {
-        // A campaign level by its id (as level select shows it; a pack's as PACK/ID), for a class told "open 3-2".
+        // A campaign level by its number, as its tile and its title show it (a pack's as PACK/NUMBER), for a class
+        // told "open 3-2".
         if (!a.level.empty() || !a.pack.empty())
-            throw UsageError("--level: give a level id, a level file or a pack, one of them");
-        const std::optional<std::size_t> index = campaign.indexOf(a.levelId);
+            throw UsageError("--level: give a level number, a level file or a pack, one of them");
+        const std::optional<std::size_t> index = campaign.indexOfNumber(a.levelId);
         if (!index)
         {
-            std::string ids;
-            for (const std::string& id : campaign.levelIds())
-                ids += (ids.empty() ? "" : ", ") + id;
-            throw UsageError("--level: no campaign level has the id \"" + a.levelId + "\" (expected one of: " + ids +
-                             ")");
+            std::string numbers;
+            for (const std::string& number : campaign.levelArguments())
+                numbers += (numbers.empty() ? "" : ", ") + number;
+            throw UsageError("--level: no campaign level has the number \"" + a.levelId +
+                             "\" (expected one of: " + numbers + ")");
         }
         options.levelPath = campaign.levels[*index].path;
         options.level = campaign.levels[*index].level;
@@ -153,8 +154,8 @@ CommandRunner addPlayCommand(CLI::App& app)
         "play", "Open the game window: the title screen, or straight into a level when one is given");
     cmd->add_option("level", args->level, "level JSON file to play directly (live reload while it runs)");
     cmd->add_option("--level", args->levelId,
-                    "a campaign level by its id (e.g. 3-2; a pack's as PACK/ID), opened directly even if it is "
-                    "still locked");
+                    "a campaign level by its number, as its tile and title show it (e.g. 3-2: episode 3, second "
+                    "level; a pack's as PACK/NUMBER), opened directly even if it is still locked");
     cmd->add_option("--pack", args->pack,
                     "a level pack (a folder with a campaign.json): its episodes follow the campaign's, and play opens "
                     "its first unfinished level");

@@ -17,6 +17,11 @@ ScenePlay::ScenePlay(App& app, const LevelDef& level, const Camera& camera)
 
 ScenePlay::~ScenePlay() = default;
 
+std::string ScenePlay::levelLabel() const
+{
+    return session().level().id;
+}
+
 PlayMode ScenePlay::playMode() const
 {
     return m_app.mode();

@@ -53,6 +53,7 @@ public:
     // PlayView
     App& app() override { return m_app; }
     PlayMode playMode() const override;
+    std::string levelLabel() const override;
     const GameSession& session() const override { return *m_session; }
     const Camera& camera() const override { return m_camera; }
     const PredictedFlight* preview() const override { return m_preview ? &*m_preview : nullptr; }

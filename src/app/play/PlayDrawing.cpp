@@ -104,7 +104,7 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
     }
 
     target.setView(still);
-    hud.draw(target, target.getSize(), session, view.aim(), view.playMode(),
+    hud.draw(target, target.getSize(), session, view.aim(), view.playMode(), view.levelLabel(),
              static_cast<float>(view.app().settings().textScale),
              PlayToolbar::reservedWidthPx(view.app(), target.getSize()));
     for (const auto& layer : layers)

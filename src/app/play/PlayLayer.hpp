@@ -31,6 +31,8 @@ public:
     virtual App& app() = 0;
     /// Game or learn: what this level shows (the tutorial and the lessons are always learn).
     virtual PlayMode playMode() const = 0;
+    /// What the player calls this level: a campaign level's number ("2-6"), else the level's id.
+    virtual std::string levelLabel() const = 0;
     virtual const GameSession& session() const = 0;
     virtual const Camera& camera() const = 0;
     /// The RK4 preview of the current aim while aiming, else null.

@@ -37,7 +37,8 @@ float hudScale(sf::Vector2u size)
 }
 
 void Hud::draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session,
-               const std::optional<AimReadout>& aim, PlayMode mode, float textScale, float reservedRightPx) const
+               const std::optional<AimReadout>& aim, PlayMode mode, std::string_view levelLabel, float textScale,
+               float reservedRightPx) const
 {
     if (m_font == nullptr)
         return;
@@ -45,7 +46,7 @@ void Hud::draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& s
     sf::FloatRect status;
     {
         const TextKindScope kind(TextKind::Hud);
-        status = drawStatus(target, size, scale, session);
+        status = drawStatus(target, size, scale, session, levelLabel);
     }
     const float environmentBottom =
         drawEnvironment(target, status.top + status.height + 6.0f * scale, scale, session.level(), mode);
@@ -76,8 +77,8 @@ std::optional<float> topSlot(float width, sf::Vector2u size, float left, float r
 }
 } // namespace
 
-sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float scale,
-                              const GameSession& session) const
+sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float scale, const GameSession& session,
+                              std::string_view levelLabel) const
 {
     const LevelDef& level = session.level();
     const unsigned titleSize = scaled(scale, 24.0f);
@@ -85,7 +86,7 @@ sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float
     // A long title drops the level's id first (a lesson's id is long), and only then is cut short rather than run
     // under the aim readout.
     const float titleRoom = 0.4f * static_cast<float>(size.x);
-    std::string titleText = "Level " + level.id + ": " + level.title;
+    std::string titleText = "Level " + std::string(levelLabel) + ": " + level.title;
     if (measureText(*m_font, utf8(titleText), titleSize).x > titleRoom)
         titleText = level.title;
     const sf::String title = utf8(fitToWidth(*m_font, titleText, titleSize, titleRoom, Cut::AtCharacter));

@@ -25,8 +25,9 @@ public:
     /// toolbar; the aim readout stays clear of it and of the status panel, moving under them when the top is full.
     /// Game mode shows the aim as the genre does (a power bar and the angle) and the air only when the wind blows;
     /// learn mode the band's numbers with units, how they follow from each other, and gravity and the air.
+    /// levelLabel: what the status panel calls the level ("2-6", PlayView::levelLabel).
     void draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session,
-              const std::optional<AimReadout>& aim, PlayMode mode, float textScale = 1.0f,
+              const std::optional<AimReadout>& aim, PlayMode mode, std::string_view levelLabel, float textScale = 1.0f,
               float reservedRightPx = 0.0f) const;
 
     /// How far up from the window's bottom the keys line and the level's hint reach (pixels), as draw lays them out
@@ -46,8 +47,8 @@ private:
     /// The keys line, then the level's hint: drawn bottom up in that order.
     std::vector<BottomText> bottomText(sf::Vector2u size, float scale, const LevelDef& level) const;
     /// Returns the panel it drew.
-    sf::FloatRect drawStatus(sf::RenderTarget& target, sf::Vector2u size, float scale,
-                             const GameSession& session) const;
+    sf::FloatRect drawStatus(sf::RenderTarget& target, sf::Vector2u size, float scale, const GameSession& session,
+                             std::string_view levelLabel) const;
     /// Returns the bottom edge of the panel it drew (top when it drew none).
     float drawEnvironment(sf::RenderTarget& target, float top, float scale, const LevelDef& level, PlayMode mode) const;
     /// Centred at the top between `left` and `right` if it fits there, else at the left from `below`.

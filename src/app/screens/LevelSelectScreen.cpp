@@ -238,8 +238,8 @@ void LevelSelectScreen::draw(sf::RenderTarget& target)
         if (font != nullptr)
         {
             const sf::Color colour = unlocked ? palette::kText : palette::kTextDisabled;
-            // The level's own id: a pack's episode heading already names the pack.
-            drawLabel(target, *font, utf8(campaign.levels[i].level.id),
+            // Its number, its place in the episode (a pack's episode heading already names the pack).
+            drawLabel(target, *font, utf8(campaign.levels[i].number),
                       {tile.left + 0.5f * tile.width, tile.top + 4.0f * scale}, tileSize, colour, Align::Centre);
             if (!unlocked)
                 drawLabel(target, *font, utf8("locked"),
@@ -256,7 +256,7 @@ void LevelSelectScreen::draw(sf::RenderTarget& target)
     const bool unlocked = m_app.isUnlocked(chosen.key);
     float detailY = window.y - margin - detailHeight;
     const auto record = m_app.progress().levels.find(chosen.key);
-    std::string heading = chosen.key + "  " + chosen.level.title;
+    std::string heading = chosen.number + "  " + chosen.level.title;
     if (record != m_app.progress().levels.end())
         heading += "   best " + formatPoints(record->second.bestScore);
     else if (!unlocked)

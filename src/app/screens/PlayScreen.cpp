@@ -59,7 +59,10 @@ void PlayScreen::startSession(bool withOpening)
     m_reloadErrors.clear();
     nlohmann::json event{{"id", m_source.level.id}, {"title", m_source.level.title}};
     if (m_source.campaignIndex)
+    {
         event["campaign_index"] = *m_source.campaignIndex;
+        event["number"] = levelLabel();
+    }
     m_app.trace().write("level", event);
     m_trails.onLevelStart(*m_session);
     for (const auto& layer : m_layers)
@@ -111,6 +114,11 @@ std::optional<std::size_t> PlayScreen::nextLevelIndex() const
     if (!m_source.campaignIndex || *m_source.campaignIndex + 1 >= m_app.campaign().levels.size())
         return std::nullopt;
     return *m_source.campaignIndex + 1;
+}
+
+std::string PlayScreen::levelLabel() const
+{
+    return m_source.campaignIndex ? m_app.campaign().levels[*m_source.campaignIndex].number : m_source.level.id;
 }
 
 PlayMode PlayScreen::playMode() const

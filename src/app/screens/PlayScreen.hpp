@@ -70,6 +70,7 @@ public:
     bool changesWhileCovered() const override { return settling(); }
     App& app() override { return m_app; }
     PlayMode playMode() const override;
+    std::string levelLabel() const override;
     const GameSession& session() const override { return *m_session; }
     const Camera& camera() const override { return m_rig.camera(); }
     const CameraRig& cameraRig() const { return m_rig; }

@@ -27,6 +27,23 @@ std::optional<std::size_t> Campaign::indexOf(const std::string& levelKey) const
     return std::nullopt;
 }
 
+std::optional<std::size_t> Campaign::indexOfNumber(const std::string& levelArgument) const
+{
+    for (std::size_t i = 0; i < levels.size(); ++i)
+        if (levels[i].levelArgument() == levelArgument)
+            return i;
+    return std::nullopt;
+}
+
+std::vector<std::string> Campaign::levelArguments() const
+{
+    std::vector<std::string> out;
+    out.reserve(levels.size());
+    for (const CampaignLevel& entry : levels)
+        out.push_back(entry.levelArgument());
+    return out;
+}
+
 Campaign loadCampaignLevels(const std::string& manifestPath, const Catalog& catalog)
 {
     Campaign campaign;
@@ -103,7 +120,8 @@ Campaign loadCampaignLevels(const std::string& manifestPath, const Catalog& cata
             atEntry("id \"" + level.id + "\" is already used by the level at " + first->second +
                     " (expected every id once: progress is saved by id)");
         const std::string key = level.id;
-        campaign.levels.push_back({episode.levelPaths[entry.index], entry.episode, std::move(level), key, ""});
+        const std::string number = episode.id + "-" + std::to_string(entry.index + 1);
+        campaign.levels.push_back({episode.levelPaths[entry.index], entry.episode, std::move(level), key, "", number});
     }
     if (!issues.empty())
         throw LevelLoadError(std::move(issues));
