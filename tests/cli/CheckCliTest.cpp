@@ -55,6 +55,55 @@ TEST(CheckCli, FillPrintsATextWithTheLevelsValuesAsTheGameFillsIt)
     EXPECT_NE(bad.err.find("unknown value \"vacum_best_angle\""), std::string::npos) << bad.err;
 }
 
+TEST(CheckCli, SolveRecommendsStarsAndWriteStarsWritesOnlyThem)
+{
+    // A pig in the open: the solver wins it and the model player too; the file's stars (1, 2, 3) are not what its
+    // wins recommend, and --write-stars replaces just those numbers.
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("abalike-write-stars-" + std::to_string(::getpid()) + ".json");
+    std::ofstream(path) << R"({"format": 1, "id": "ws", "title": "Write stars",
+  "slingshot": {"x": 0, "y": 1.5}, "birds": ["red", "red"],
+  "pigs": [{"type": "small", "x": 14, "y": 0.25}],
+  "stars": [1, 2, 3]}
+)";
+    const auto readFile = [&path]
+    {
+        std::ifstream in(path);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    struct Remove
+    {
+        std::filesystem::path p;
+        ~Remove() { std::filesystem::remove(p); }
+    } removeAtEnd{path};
+    const std::string file = path.string();
+    const RunResult dry = runAbalike("check " + file + " --solve --player-runs 4 --json");
+    ASSERT_EQ(dry.exitCode, 0) << dry.err;
+    const nlohmann::json report = nlohmann::json::parse(dry.out)["files"][0];
+    ASSERT_TRUE(report["recommended_stars"].is_array()) << dry.out;
+    const auto stars = report["recommended_stars"].get<std::vector<int>>();
+    EXPECT_GT(stars[0], 3);
+    EXPECT_LE(stars[0], stars[1]);
+    EXPECT_LE(stars[1], stars[2]);
+    EXPECT_FALSE(report["stars_written"].get<bool>());
+    EXPECT_NE(readFile().find("\"stars\": [1, 2, 3]"), std::string::npos) << "a plain check writes nothing";
+
+    const RunResult wrote = runAbalike("check " + file + " --solve --player-runs 4 --write-stars");
+    ASSERT_EQ(wrote.exitCode, 0) << wrote.err;
+    EXPECT_NE(wrote.out.find("written into the file"), std::string::npos) << wrote.out;
+    const std::string expected = "\"stars\": [" + std::to_string(stars[0]) + ", " + std::to_string(stars[1]) + ", " +
+                                 std::to_string(stars[2]) + "]}";
+    EXPECT_NE(readFile().find(expected), std::string::npos) << readFile();
+    EXPECT_NE(readFile().find("\"birds\": [\"red\", \"red\"],\n  \"pigs\""), std::string::npos)
+        << "every other byte as it was";
+
+    const RunResult alone = runAbalike("check " + file + " --write-stars");
+    EXPECT_EQ(alone.exitCode, 2);
+    EXPECT_NE(alone.err.find("--write-stars: the stars come from the solver and the model player: add --solve"),
+              std::string::npos)
+        << alone.err;
+}
+
 TEST(CheckCli, WallsAndMixedTowersPass)
 {
     // Bricks side by side, and a tower whose columns change material storey by storey (issue 9).

@@ -1,3 +1,5 @@
+#include "CatalogLoadError.hpp"
+
 #include <abalike/world/Ability.hpp>
 #include <abalike/world/Catalog.hpp>
 #include <algorithm>
@@ -26,19 +28,6 @@ int lineOf(const std::string& text, const std::string& needle)
     return at == std::string::npos ? 0 : 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
 }
 
-std::string loadError(const std::string& text)
-{
-    try
-    {
-        Catalog::fromJson(text);
-    }
-    catch (const std::runtime_error& e)
-    {
-        return e.what();
-    }
-    return "";
-}
-
 TEST(AbilityRegistry, EveryAbilityTheCatalogNamesIsRegisteredAndConfigured)
 {
     for (const BirdType& bird : Catalog::builtin().birds())
@@ -61,7 +50,7 @@ TEST(AbilityRegistry, AMisspeltAbilityIsALocatedErrorWithASuggestion)
     const int line = lineOf(text, blue);
     ASSERT_GT(line, 0);
     text.replace(text.find(blue), blue.size(), R"("ability": "spilt")");
-    const std::string error = loadError(text);
+    const std::string error = test::catalogLoadError(text);
     EXPECT_NE(error.find("assets/catalog.json:" + std::to_string(line) + ":"), std::string::npos) << error;
     EXPECT_NE(error.find("/birds/1/ability: unknown ability \"spilt\" (did you mean \"split\"?)"), std::string::npos)
         << error;
@@ -72,7 +61,7 @@ TEST(AbilityRegistry, AnUnknownAbilityFarFromAnyNameListsTheKnownOnes)
     std::string text = catalogText();
     const std::string red = R"("ability": "none")";
     text.replace(text.find(red), red.size(), R"("ability": "boomrang")");
-    const std::string error = loadError(text);
+    const std::string error = test::catalogLoadError(text);
     EXPECT_NE(error.find("/birds/0/ability: unknown ability \"boomrang\" (expected one of: none, boost, egg, explode, "
                          "split)"),
               std::string::npos)
@@ -84,7 +73,7 @@ TEST(AbilityRegistry, NumbersForAnAbilityNobodyKnowsAreAnErrorToo)
     std::string text = catalogText();
     const std::string block = R"("abilities": {)";
     text.replace(text.find(block), block.size(), R"("abilities": { "sonic": { "speed_mps": 3 },)");
-    const std::string error = loadError(text);
+    const std::string error = test::catalogLoadError(text);
     EXPECT_NE(error.find("/abilities/sonic: unknown ability \"sonic\""), std::string::npos) << error;
 }
 
@@ -96,7 +85,7 @@ TEST(AbilityRegistry, AnAbilitysNumbersComeFromTheCatalogAndAreChecked)
     text.replace(text.find(angle), angle.size(), R"("angle_deg": 25.0)");
     EXPECT_EQ(Catalog::fromJson(text).findAbility("split")->number("angle_deg"), 25.0);
     text.replace(text.find(R"("angle_deg": 25.0)"), angle.size(), R"("angle_deg": -1.0)");
-    EXPECT_NE(loadError(text).find("abilities.split.angle_deg must be > 0"), std::string::npos);
+    EXPECT_NE(test::catalogLoadError(text).find("abilities.split.angle_deg must be > 0"), std::string::npos);
     EXPECT_THROW(Catalog::builtin().findAbility("split")->number("nope"), std::out_of_range);
 }
 

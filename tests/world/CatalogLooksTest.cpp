@@ -1,3 +1,5 @@
+#include "CatalogLoadError.hpp"
+
 #include <abalike/world/Catalog.hpp>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -21,19 +23,6 @@ std::string catalogWith(const std::string& from, const std::string& to)
     return text.replace(at, from.size(), to);
 }
 
-std::string loadError(const std::string& text)
-{
-    try
-    {
-        Catalog::fromJson(text);
-    }
-    catch (const std::runtime_error& e)
-    {
-        return e.what();
-    }
-    return "";
-}
-
 TEST(CatalogLooks, MaterialsAndBirdsHaveTheLooksTheCatalogGives)
 {
     const Catalog& catalog = Catalog::builtin();
@@ -53,7 +42,8 @@ TEST(CatalogLooks, MaterialsAndBirdsHaveTheLooksTheCatalogGives)
 
 TEST(CatalogLooks, AnUnknownSurfaceIsALocatedErrorWithASuggestion)
 {
-    const std::string error = loadError(catalogWith(R"("surface": "masonry")", R"("surface": "masonary")"));
+    const std::string error =
+        test::catalogLoadError(catalogWith(R"("surface": "masonry")", R"("surface": "masonary")"));
     EXPECT_NE(error.find("assets/catalog.json:"), std::string::npos) << error;
     EXPECT_NE(error.find("/materials/2/look/surface: unknown surface \"masonary\" (did you mean \"masonry\"?)"),
               std::string::npos)
@@ -62,17 +52,17 @@ TEST(CatalogLooks, AnUnknownSurfaceIsALocatedErrorWithASuggestion)
 
 TEST(CatalogLooks, ABadColourIsALocatedError)
 {
-    const std::string error = loadError(catalogWith(R"("body": "#4e96e8")", R"("body": "blue")"));
+    const std::string error = test::catalogLoadError(catalogWith(R"("body": "#4e96e8")", R"("body": "blue")"));
     EXPECT_NE(error.find("/birds/1/look/body: expected a colour \"#rrggbb\" or \"#rrggbbaa\", got \"blue\""),
               std::string::npos)
         << error;
-    const std::string shortHex = loadError(catalogWith(R"("body": "#4e96e8")", R"("body": "#4e96e")"));
+    const std::string shortHex = test::catalogLoadError(catalogWith(R"("body": "#4e96e8")", R"("body": "#4e96e")"));
     EXPECT_NE(shortHex.find("/birds/1/look/body"), std::string::npos) << shortHex;
 }
 
 TEST(CatalogLooks, ABirdWithoutALookIsAnErrorNotARedBird)
 {
-    const std::string error = loadError(catalogWith(
+    const std::string error = test::catalogLoadError(catalogWith(
         R"(,
       "look": { "body": "#fad428", "outline": "#aa820a", "belly": "#fff0aa", "brow": "#3c280a" })",
         ""));

@@ -5,6 +5,7 @@
 
 #include <abalike/design/ModelPlayer.hpp>
 #include <abalike/design/Solver.hpp>
+#include <abalike/design/StarThresholds.hpp>
 #include <abalike/level/Campaign.hpp>
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/level/LevelText.hpp>
@@ -40,6 +41,7 @@ struct CheckArgs
     bool json = false;
     bool solve = false;
     bool fix = false;
+    bool writeStars = false; ///< --write-stars: the recommended thresholds into the file
     bool texts = false;
     std::vector<std::string> fill; ///< texts to fill with each level's values (--fill)
     int threads = 0;
@@ -62,9 +64,11 @@ struct FileReport
     std::optional<RestReport> rest;
     std::optional<Solution> solution;
     std::optional<PlayerDifficulty> player;
-    std::vector<std::string> reasons;  ///< why it fails, one short phrase each
-    std::vector<std::string> warnings; ///< worth a look, but the level is fine
-    std::vector<std::string> fixes;    ///< what --fix changed in the file
+    std::vector<std::string> reasons;                   ///< why it fails, one short phrase each
+    std::vector<std::string> warnings;                  ///< worth a look, but the level is fine
+    std::vector<std::string> fixes;                     ///< what --fix changed in the file
+    std::optional<std::array<int, 3>> recommendedStars; ///< from the model player's wins (--solve)
+    bool starsWritten = false;                          ///< --write-stars wrote them into the file
 
     bool ok() const { return reasons.empty(); }
 };
@@ -303,6 +307,16 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
             report.player = measurePlayerDifficulty(level, Catalog::builtin(), playerOptions);
             playerBar.finish();
         }
+        if (report.solution->outcome.won)
+        {
+            report.recommendedStars =
+                recommendedStars(report.player.value_or(PlayerDifficulty{}), report.solution->outcome.score);
+            if (a.writeStars && *report.recommendedStars != level.starScores)
+            {
+                writeFileAtomically(item.file, withStars(readText(item.file), *report.recommendedStars));
+                report.starsWritten = true;
+            }
+        }
     }
     return report;
 }
@@ -340,6 +354,20 @@ std::string summaryLine(const FileReport& r)
              << r.solution->shots.size() << " shot(s)";
     if (r.player)
         line << "; " << playerDifficultyText(*r.player);
+    if (r.recommendedStars)
+    {
+        const auto stars = [](const std::array<int, 3>& s)
+        {
+            return std::to_string(s[0]) + " / " + std::to_string(s[1]) + " / " + std::to_string(s[2]);
+        };
+        line << "; stars: recommended " << stars(*r.recommendedStars);
+        if (r.starsWritten)
+            line << ", written into the file";
+        else if (*r.recommendedStars != r.level->starScores)
+            line << ", the file has " << stars(r.level->starScores) << " (--write-stars writes them)";
+        else
+            line << ", as the file has";
+    }
     line << ")";
     return line.str();
 }
@@ -373,6 +401,8 @@ nlohmann::ordered_json reportJson(const FileReport& r)
         out["rest"] = nullptr;
     out["solve"] = r.solution ? solutionToJson(*r.level, *r.solution) : nlohmann::ordered_json(nullptr);
     out["player"] = r.player ? playerDifficultyJson(*r.player) : nlohmann::ordered_json(nullptr);
+    out["recommended_stars"] = r.recommendedStars ? nlohmann::ordered_json(*r.recommendedStars) : nullptr;
+    out["stars_written"] = r.starsWritten;
     out["reasons"] = r.reasons;
     out["warnings"] = r.warnings;
     out["fixes"] = r.fixes;
@@ -416,6 +446,8 @@ std::vector<std::string> filledTexts(const CheckArgs& a, const FileReport& r)
 
 int runCheck(const CheckArgs& a)
 {
+    if (a.writeStars && !a.solve)
+        throw UsageError("--write-stars: the stars come from the solver and the model player: add --solve");
     if (a.threads < 0 || a.threads > 256)
         throw UsageError("--threads: expected 0 (all cores) to 256, got " + std::to_string(a.threads));
     std::vector<FileReport> reports;
@@ -478,6 +510,9 @@ CommandRunner addCheckCommand(CLI::App& app)
     cmd->add_option("--fill", args->fill,
                     "also print this text with its {...} values filled from each level, as the game fills its texts "
                     "(repeatable; a value that does not fill is a usage error)");
+    cmd->add_flag("--write-stars", args->writeStars,
+                  "with --solve: write the recommended star thresholds (from the model player's winning scores) "
+                  "into each level file, every other byte as it was");
     cmd->add_flag("--fix", args->fix,
                   "snap bodies that float or overlap by up to 2 cm onto what is under them, rewriting just those "
                   "numbers in the file, and print each change");

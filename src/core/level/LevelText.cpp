@@ -1,4 +1,5 @@
 #include "level/JsonLocator.hpp"
+#include <cctype>
 
 #include <abalike/level/LevelText.hpp>
 #include <stdexcept>
@@ -30,6 +31,27 @@ std::string replaceNumber(std::string_view text, const std::string& pointer, con
     out += number;
     out += text.substr(offset + raw.size());
     return out;
+}
+
+std::string withStars(std::string_view text, const std::array<int, 3>& stars)
+{
+    const JsonLocator locator(text);
+    std::string out(text);
+    const std::string_view last = locator.rawScalar("/stars/2");
+    if (!last.empty() && last.front() >= '0' && last.front() <= '9')
+    {
+        for (std::size_t i = 0; i < 3; ++i)
+            out = replaceNumber(out, "/stars/" + std::to_string(i), std::to_string(stars[i]));
+        return out;
+    }
+    const std::size_t close = out.find_last_of('}');
+    if (close == std::string::npos)
+        throw std::invalid_argument("the level file has no closing brace");
+    std::size_t end = close;
+    while (end > 0 && std::isspace(static_cast<unsigned char>(out[end - 1])))
+        --end;
+    return out.substr(0, end) + ",\n  \"stars\": [" + std::to_string(stars[0]) + ", " + std::to_string(stars[1]) +
+           ", " + std::to_string(stars[2]) + "]\n" + out.substr(close);
 }
 
 } // namespace abalike
