@@ -11,7 +11,8 @@ namespace abalike
 namespace
 {
 
-/// A pack folder NAME with two levels copied from the campaign under new ids and episode "A".
+/// A pack folder NAME with two levels copied from the campaign under new ids and episode "A" (the second without
+/// "episode": it belongs to the episode that lists it).
 std::filesystem::path makePack(const std::filesystem::path& parent, const std::string& name)
 {
     const auto folder = parent / name;
@@ -22,7 +23,8 @@ std::filesystem::path makePack(const std::filesystem::path& parent, const std::s
     {
         LevelDef level = loadLevel((levels / from).string(), Catalog::builtin());
         level.id = std::string(id);
-        level.episode = std::string(1, 'A'); // (not = "A": GCC 12 warns falsely, -Wrestrict)
+        // (std::string(1, 'A'), not "A": GCC 12 warns falsely, -Wrestrict)
+        level.episode = std::string(id) == "p-1" ? std::string(1, 'A') : std::string();
         std::ofstream(folder / to) << writeLevelJson(level, "");
     }
     std::ofstream(folder / "campaign.json")
@@ -43,6 +45,10 @@ TEST(LevelPack, ItsEpisodesFollowTheCampaignsAndItsProgressKeysNameThePack)
     EXPECT_EQ(campaign.levels.front().key, "1-1") << "the bundled campaign keeps today's keys";
     EXPECT_EQ(campaign.episodes.back().title, "mypack: Warm-up");
     EXPECT_EQ(campaign.indexOf("mypack/p-2"), bundled + 1);
+    EXPECT_EQ(campaign.levels[bundled + 1].level.episode, "A") << "a level without \"episode\" takes its listing's";
+    // Numbered by their place in the pack's episode, as every tile is.
+    EXPECT_EQ(campaign.levels[bundled + 1].number, "A-2");
+    EXPECT_EQ(campaign.indexOfNumber("mypack/A-2"), bundled + 1);
     // The same pack twice is refused (its progress would mix).
     EXPECT_THROW(appendLevelPack(campaign, (dir / "mypack").string(), Catalog::builtin()), LevelLoadError);
     // Installed packs are the folders with a campaign.json.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <SFML/Graphics/Font.hpp>
+#include <SFML/Graphics/Rect.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <string>
 #include <vector>
@@ -9,7 +10,8 @@ namespace abalike::app
 {
 
 /// Live reload's message over the scene: the problems of an invalid edit of the level file, while the last good
-/// version keeps playing. Draws nothing without a font or without problems.
+/// version keeps playing. Folded (the default) it is one line, the heading and how many problems, so the level stays
+/// in view; B or a click on it opens it to every problem in whole lines. Draws nothing without a font or problems.
 class ReloadNotice
 {
 public:
@@ -25,8 +27,16 @@ public:
     static constexpr const char* kDoesNotStand =
         "This level does not stand as built: bodies move with no shot fired. Save a fix to reload.";
 
+    /// Opens or folds it (key B).
+    void toggle() { m_expanded = !m_expanded; }
+    bool expanded() const { return m_expanded; }
+    /// A click at (x, y) on the banner as last drawn opens or folds it; true when it did.
+    bool handleClick(float x, float y);
+
 private:
     const sf::Font* m_font;
+    bool m_expanded = false;
+    mutable sf::FloatRect m_lastRect; ///< where the last draw put it (empty when nothing was drawn)
 };
 
 } // namespace abalike::app

@@ -214,6 +214,10 @@ void PlayScreen::handleEvent(const sf::Event& event)
     for (auto it = m_layers.rbegin(); it != m_layers.rend(); ++it)
         if ((*it)->handleEvent(event, *this))
             return;
+    // The problems banner: B or a click on it opens or folds it.
+    if (event.type == sf::Event::MouseButtonPressed && event.mouseButton.button == sf::Mouse::Left &&
+        m_reloadNotice.handleClick(static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y)))
+        return;
     if (event.type == sf::Event::KeyPressed)
         handleKey(event.key);
 
@@ -256,6 +260,10 @@ void PlayScreen::handleKey(const sf::Event::KeyEvent& key)
         break;
     case sf::Keyboard::N:
         goToNextLevel();
+        break;
+    case sf::Keyboard::B:
+        if (!m_reloadErrors.empty() || !m_restFindings.empty())
+            m_reloadNotice.toggle();
         break;
     default:
         break;

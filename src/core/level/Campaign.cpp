@@ -112,6 +112,9 @@ Campaign loadCampaignLevels(const std::string& manifestPath, const Catalog& cata
             continue;
         }
         LevelDef& level = *entry.level;
+        // "episode" is optional in a level file: one without it belongs to the episode that lists it.
+        if (level.episode.empty())
+            level.episode = episode.id;
         if (level.episode != episode.id && !level.sandbox) // a sandbox scene is reported as one above
             atEntry("the level says \"episode\": \"" + level.episode + "\" but is listed in episode \"" + episode.id +
                     "\" (expected them to agree)");
