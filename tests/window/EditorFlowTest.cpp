@@ -161,13 +161,20 @@ TEST_F(EditorFlow, PlayingFromTheEditorReturnsToTheExactScene)
     std::filesystem::copy_file(sourceFile("levels/1-1-first-flight.json"), after);
     const GameRun plain = edit("'" + before + "' --frames 10" + script(R"([{"frame": 3, "key": "S", "ctrl": true}])"));
     ASSERT_EQ(plain.exitCode, 0) << plain.err;
-    const GameRun played = edit("'" + after + "' --frames 260" + script(R"([{"frame": 3, "key": "F5"},
-        {"frame": 10, "key": "Space"}, {"frame": 240, "key": "Escape"}, {"frame": 250, "key": "S", "ctrl": true}])"));
+    // (Zoomed in first, so that the view has to follow the bird.)
+    const GameRun played =
+        edit("'" + after + "' --frames 260" + script(R"([{"frame": 2, "wheel": 6, "x": 500, "y": 500},
+        {"frame": 3, "key": "F5"}, {"frame": 10, "key": "Space"}, {"frame": 240, "key": "Escape"},
+        {"frame": 250, "key": "S", "ctrl": true}])"));
     ASSERT_EQ(played.exitCode, 0) << played.err;
     EXPECT_EQ(played.values("launch", "speed").size(), 1u) << "one bird was fired";
     EXPECT_EQ(played.values("editor-play", "level").size(), 1u);
     EXPECT_EQ(played.values("editor-edit", "level").size(), 1u);
     EXPECT_EQ(readText(after), readText(before));
+    // The view followed the bird, and came back with the scene.
+    ASSERT_EQ(played.values("editor-edit", "view").size(), 1u);
+    EXPECT_EQ(played.values("editor-edit", "view"), played.values("editor-play", "view"));
+    EXPECT_NE(played.values("editor-edit", "play_view"), played.values("editor-play", "view"));
 }
 
 TEST_F(EditorFlow, UnsavedChangesAreNeverDroppedSilently)

@@ -6,20 +6,34 @@
 #include <SFML/Graphics/Sprite.hpp>
 #include <algorithm>
 #include <box2d/box2d.h>
+#include <nlohmann/json.hpp>
 
 namespace abalike::app
 {
+
+namespace
+{
+
+/// The view in the trace: the world point at the window's top left (m) and the scale (pixels per metre).
+nlohmann::json viewJson(const EditorView& view)
+{
+    const sf::Vector2f origin = view.toWorld({0.0f, 0.0f});
+    return {origin.x, origin.y, view.pixelsPerMetre()};
+}
+
+} // namespace
 
 void PlayTest::start()
 {
     if (playing())
         return;
     m_ctx.scene().endDrag();
+    m_viewBefore = m_ctx.view;
     // The first camera is the editor's view over the area the panels leave while editing.
     m_play = std::make_unique<ScenePlay>(m_ctx.app, m_ctx.scene().level(), camera());
     m_ctx.playing = true;
     m_play->aimAt(angleDeg, std::min(speedMps, m_play->maxSpeedMps()));
-    m_ctx.app.trace().write("editor-play", {{"level", m_ctx.scene().level().id}});
+    m_ctx.app.trace().write("editor-play", {{"level", m_ctx.scene().level().id}, {"view", viewJson(m_ctx.view)}});
     m_ctx.say("Drag the bird back, or set the angle and speed here and Fire. Esc returns to the scene as it was.");
 }
 
@@ -29,7 +43,11 @@ void PlayTest::stop()
         return;
     m_play.reset();
     m_ctx.playing = false;
-    m_ctx.app.trace().write("editor-edit", {{"level", m_ctx.scene().level().id}});
+    const EditorView followed = m_ctx.view;
+    m_ctx.view = m_viewBefore; // the scene as it was, seen as it was
+    m_ctx.app.trace().write(
+        "editor-edit",
+        {{"level", m_ctx.scene().level().id}, {"view", viewJson(m_ctx.view)}, {"play_view", viewJson(followed)}});
     m_ctx.say("Back to the scene as it was before the shot.");
 }
 

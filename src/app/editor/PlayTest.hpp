@@ -1,5 +1,6 @@
 #pragma once
 
+#include "editor/EditorView.hpp"
 #include "editor/ScenePlay.hpp"
 
 #include <SFML/Graphics/RenderTexture.hpp>
@@ -47,6 +48,7 @@ private:
 
     EditorContext& m_ctx;
     std::unique_ptr<ScenePlay> m_play;
+    EditorView m_viewBefore;     ///< the view when the play started: it follows the bird, and comes back with the scene
     sf::RenderTexture m_texture; ///< the play is drawn here, then into the free part of the window
 };
 
