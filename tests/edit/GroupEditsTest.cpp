@@ -122,10 +122,11 @@ TEST(SceneEditorClipboard, CopyAndPasteAcrossScenesAsLevelJson)
     ASSERT_EQ(pasted.blocks.size(), 4u);
     ASSERT_EQ(pasted.pigs.size(), 1u);
     ASSERT_EQ(pasted.terrain.size(), 1u);
-    // The group spans x = 19.75 .. 36 in the first scene: centre 27.875, moved by 22.125, heights kept.
-    EXPECT_DOUBLE_EQ(pasted.blocks[1].x, 20.0 + 22.125);
+    // The group spans x = 19.75 .. 36 in the first scene: centre 27.875, so 22.125 to the pointer, moved by whole
+    // 0.25 m grid steps (22.25): bodies on the grid stay on it. Heights kept.
+    EXPECT_DOUBLE_EQ(pasted.blocks[1].x, 20.0 + 22.25);
     EXPECT_DOUBLE_EQ(pasted.blocks[1].y, 1.0);
-    EXPECT_DOUBLE_EQ(pasted.terrain[0].points[0][0], 30.0 + 22.125);
+    EXPECT_DOUBLE_EQ(pasted.terrain[0].points[0][0], 30.0 + 22.25);
     EXPECT_EQ(to.selection().size(), 5u);
     to.undo();
     EXPECT_EQ(to.level().blocks, second.blocks);
@@ -153,6 +154,30 @@ TEST(SceneEditorClipboard, APastedGroupSettlesOntoTheSurfaceUnderIt)
     // Never under the ground: a drop below it comes up onto it.
     ASSERT_EQ(editor.insertBodies(tower, std::array<double, 2>{10.0, -3.0}, "Insert tower"), "");
     EXPECT_NEAR(editor.level().blocks[4].y, 1.0, 1e-9);
+}
+
+TEST(SceneEditorClipboard, APasteLandsOnTheGridAndFallsOntoTheSurfaceFromAnyHeight)
+{
+    // The designer's case: a plank pasted with the pointer at x = 14.771127701, 24 cm and then 3 m above a plinth.
+    LevelDef scene = emptyScene();
+    scene.blocks = {box(15.0, 0.5, 4.0, 1.0, "stone")}; // top at y = 1
+    SceneEditor editor(scene);
+    editor.selectAll();
+    LevelDef plank = emptyScene();
+    plank.blocks = {box(0.0, 0.1, 2.0, 0.2)};
+    for (const double height : {1.24, 4.0})
+    {
+        SCOPED_TRACE(height);
+        ASSERT_EQ(editor.insertBodies(plank, std::array<double, 2>{14.771127701, height}, "Paste"), "");
+        const BlockDef& pasted = editor.level().blocks.back();
+        EXPECT_DOUBLE_EQ(pasted.x, 14.75) << "on the 0.25 m grid";
+        EXPECT_NEAR(pasted.y, 1.1, 1e-9) << "resting on the plinth";
+        editor.undo();
+    }
+    // With surfaces off it stays where it was put (on the grid's heights too).
+    editor.snapSettings().surfaces = false;
+    ASSERT_EQ(editor.insertBodies(plank, std::array<double, 2>{14.771127701, 3.9}, "Paste"), "");
+    EXPECT_NEAR(editor.level().blocks.back().y, 4.0 + 0.1, 1e-9);
 }
 
 TEST(SceneEditorVertices, MovesAddsAndRemovesCornersAndRefusesACrossing)

@@ -2,6 +2,7 @@
 #include "edit/EditCommand.hpp"
 #include "edit/EditHelpers.hpp"
 #include "edit/History.hpp"
+#include "level/LevelLimits.hpp"
 
 #include <abalike/edit/SceneEditor.hpp>
 #include <abalike/level/LevelCatalog.hpp>
@@ -200,15 +201,23 @@ std::string SceneEditor::insertBodies(const LevelDef& source, const std::optiona
             right = std::max(right, hi[0]);
             bottom = std::min(bottom, lo[1]);
         }
-        const double dx = (*at)[0] - 0.5 * (left + right);
-        const double dy = std::max((*at)[1], m_level.groundY) - bottom;
+        double dx = (*at)[0] - 0.5 * (left + right);
+        double dy = std::max((*at)[1], m_level.groundY) - bottom;
+        // On the grid: the group moves by whole grid steps, so bodies that were on it stay on it.
+        if (m_snap.grid && m_snap.gridM > 0.0)
+        {
+            dx = std::round(dx / m_snap.gridM) * m_snap.gridM;
+            dy = std::max(m_level.groundY - bottom, std::round(dy / m_snap.gridM) * m_snap.gridM);
+        }
         for (ObjectDef& def : bodies)
             def = shifted(def, dx, dy);
-        // The group's lowest bodies settle onto what is under them, within snap reach; the rest keep formation.
+        // The group's lowest bodies settle onto what is under them, from any height (a paste above a tower lands on
+        // it); the rest keep formation.
         if (m_snap.surfaces)
         {
             SnapSettings settle = m_snap;
             settle.grid = false;
+            settle.surfaceReachM = 2.0 * limits::kWorldExtentM;
             double lift = -std::numeric_limits<double>::infinity();
             for (const ObjectDef& def : bodies)
             {
