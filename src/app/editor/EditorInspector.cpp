@@ -1,6 +1,7 @@
 #include "editor/EditorInspector.hpp"
 
 #include "editor/EditorContext.hpp"
+#include "editor/MixedFields.hpp"
 #include "editor/PanelStyle.hpp"
 #include "editor/PlayTest.hpp"
 #include "editor/SceneDrawing.hpp"
@@ -793,7 +794,12 @@ void EditorInspector::multiSelectionFields(const std::vector<ObjectRef>& selecti
             blocks.push_back(ref);
     if (blocks.empty())
         return;
-    BlockDef first = std::get<BlockDef>(objectDef(m_ctx.scene().level(), blocks.front()));
+    // The blocks' common fields: a value they share is shown as it is, one where they differ as "mixed", and a field
+    // changes every selected block only when it is set.
+    std::vector<BlockDef> defs;
+    for (const ObjectRef& ref : blocks)
+        defs.push_back(std::get<BlockDef>(objectDef(m_ctx.scene().level(), ref)));
+    BlockDef first = defs.front();
     ImGui::TextDisabled("For all %zu selected blocks:", blocks.size());
     ImGui::PushItemWidth(-110.0f * m_ctx.app.uiScale());
     const auto applyToAll = [&](const char* label, const auto& change)
@@ -812,14 +818,21 @@ void EditorInspector::multiSelectionFields(const std::vector<ObjectRef>& selecti
             m_ctx.messageIsError = true;
         }
     };
-    if (std::string name = first.material; catalogCombo("Material", Catalog::builtin().materials(), name))
+    std::vector<std::string> materials;
+    for (const Material& material : Catalog::builtin().materials())
+        materials.push_back(material.name);
+    if (std::string name;
+        mixedNameCombo("Material", sharedValue(defs, [](const BlockDef& b) { return b.material; }), materials, name))
         applyToAll("Material", [&](BlockDef& b) { b.material = name; });
-    if (inputDouble("Width (m)", first.widthM, m_ctx.fieldReleased))
+    if (mixedNumberField("Width (m)", sharedValue(defs, [](const BlockDef& b) { return b.widthM; }), first.widthM,
+                         m_ctx.fieldReleased))
         applyToAll("Width", [&](BlockDef& b) { b.widthM = first.widthM; });
-    if (inputDouble("Height (m)", first.heightM, m_ctx.fieldReleased))
+    if (mixedNumberField("Height (m)", sharedValue(defs, [](const BlockDef& b) { return b.heightM; }), first.heightM,
+                         m_ctx.fieldReleased))
         applyToAll("Height",
                    [&](BlockDef& b) { b.heightM = b.shape == BlockShape::Circle ? b.widthM : first.heightM; });
-    if (inputDouble("Angle (\u00B0)", first.angleDeg, m_ctx.fieldReleased, "%.1f"))
+    if (mixedNumberField("Angle (\u00B0)", sharedValue(defs, [](const BlockDef& b) { return b.angleDeg; }),
+                         first.angleDeg, m_ctx.fieldReleased, "%.1f"))
         applyToAll("Angle", [&](BlockDef& b) { b.angleDeg = first.angleDeg; });
     ImGui::PopItemWidth();
 }
