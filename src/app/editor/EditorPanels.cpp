@@ -180,6 +180,8 @@ void EditorPanels::prefabMenu()
             if (ImGui::MenuItem(("  " + file.stem().string()).c_str()))
                 m_clipboard.insertPrefab(file);
     };
+    // The campaign's castle parts first (tools/levelgen's prefabs as level files), then the stress test scenes.
+    listFolder("Castle parts", std::filesystem::path(levelsDirectory()) / "parts");
     listFolder("Structures", std::filesystem::path(levelsDirectory()) / "structures");
     listFolder("My prefabs", EditorClipboard::userPrefabFolder());
     ImGui::EndMenu();
