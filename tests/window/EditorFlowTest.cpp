@@ -205,7 +205,7 @@ TEST_F(EditorFlow, ALevelWithGeometryProblemsOpensWithThemListed)
 
 TEST_F(EditorFlow, PrefabsMirrorAndPolygonCornersWorkWithTheMouseAndFindingsFollowEveryEdit)
 {
-    // Insert > My prefabs > lean-to (from the data folder's prefabs/), Ctrl+M mirrors it, the wheel zooms, a right
+    // Insert > My prefabs > lean-to (from the data folder's prefabs/; a submenu), Ctrl+M mirrors it, the wheel zooms, a right
     // drag pans, a click selects the hill, its top-left corner is dragged up; Ctrl+S saves. The level opened with an
     // overlap, which the re-check after each edit keeps finding. (tools/gallery takes docs/img/editor-tools.png
     // from the same steps.)
@@ -218,9 +218,10 @@ TEST_F(EditorFlow, PrefabsMirrorAndPolygonCornersWorkWithTheMouseAndFindingsFoll
         {"frame": 8, "mouse": "move", "x": 114, "y": 11},
         {"frame": 9, "mouse": "press", "button": "left", "x": 114, "y": 11},
         {"frame": 9, "mouse": "release", "button": "left", "x": 114, "y": 11},
-        {"frame": 12, "mouse": "move", "x": 126, "y": 482},
-        {"frame": 13, "mouse": "press", "button": "left", "x": 126, "y": 482},
-        {"frame": 13, "mouse": "release", "button": "left", "x": 126, "y": 482},
+        {"frame": 10, "mouse": "move", "x": 130, "y": 102},
+        {"frame": 12, "mouse": "move", "x": 340, "y": 102},
+        {"frame": 13, "mouse": "press", "button": "left", "x": 340, "y": 102},
+        {"frame": 13, "mouse": "release", "button": "left", "x": 340, "y": 102},
         {"frame": 16, "key": "M", "ctrl": true},
         {"frame": 18, "mouse": "move", "x": 560, "y": 600},
         {"frame": 19, "wheel": 2, "x": 560, "y": 600},

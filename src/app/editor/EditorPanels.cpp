@@ -169,16 +169,19 @@ void EditorPanels::prefabMenu()
     if (ImGui::MenuItem("Save selection as prefab", nullptr, false, any))
         m_clipboard.saveSelectionAsPrefab();
     ImGui::Separator();
+    // Each folder a submenu of its own: together they are longer than a window is tall.
     const auto listFolder = [&](const char* title, const std::filesystem::path& folder)
     {
-        ImGui::TextDisabled("%s", title);
+        if (!ImGui::BeginMenu(title))
+            return;
         const std::vector<std::filesystem::path> files =
             folder.empty() ? std::vector<std::filesystem::path>{} : levelFilesIn(folder);
         if (files.empty())
-            ImGui::TextDisabled("  (none in %s)", folder.string().c_str());
+            ImGui::TextDisabled("(none in %s)", folder.string().c_str());
         for (const std::filesystem::path& file : files)
-            if (ImGui::MenuItem(("  " + file.stem().string()).c_str()))
+            if (ImGui::MenuItem(file.stem().string().c_str()))
                 m_clipboard.insertPrefab(file);
+        ImGui::EndMenu();
     };
     // The campaign's castle parts first (tools/levelgen's prefabs as level files), then the stress test scenes.
     listFolder("Castle parts", std::filesystem::path(levelsDirectory()) / "parts");
