@@ -263,6 +263,35 @@ TEST(CheckCli, HeavyOnLightThatStandsIsAWarningNotAFailure)
     EXPECT_NE(file["warnings"][0].get<std::string>().find("mass ratio 24"), std::string::npos) << file["warnings"];
 }
 
+TEST(CheckCli, FixWorksInRoundsAndSaysWhatItCouldNotFix)
+{
+    // Stacked floaters (1 cm, then 3 cm above that): both set down, bottom up, and the level stands. A block on
+    // nothing has no fix: --fix says so, and why.
+    const auto path =
+        std::filesystem::temp_directory_path() / ("abalike-check-fix-rounds-" + std::to_string(::getpid()) + ".json");
+    std::ofstream(path) << R"({"format": 1, "id": "rounds", "title": "Rounds", "slingshot": {"x": 0, "y": 1.5},
+  "birds": ["red"], "pigs": [{"type": "small", "x": 24, "y": 0.25}],
+  "blocks": [{"material": "wood", "x": 20, "y": 0.51, "w": 1, "h": 1},
+             {"material": "wood", "x": 20, "y": 1.54, "w": 1, "h": 1}]}
+)";
+    const RunResult stacked = runAbalike("check --fix " + path.string());
+    EXPECT_EQ(stacked.exitCode, 0) << stacked.out << stacked.err;
+    EXPECT_NE(stacked.out.find("/blocks/0/y: 0.51 -> 0.5"), std::string::npos) << stacked.out;
+    EXPECT_NE(stacked.out.find("/blocks/1/y: 1.54 -> 1.5"), std::string::npos) << stacked.out;
+    EXPECT_NE(stacked.out.find("PASS "), std::string::npos) << stacked.out;
+
+    std::ofstream(path) << R"({"format": 1, "id": "rounds", "title": "Rounds", "slingshot": {"x": 0, "y": 1.5},
+  "birds": ["red"], "pigs": [{"type": "small", "x": 24, "y": 0.25}],
+  "blocks": [{"material": "wood", "x": 20, "y": 3, "w": 1, "h": 1}]}
+)";
+    const RunResult nothing = runAbalike("check --fix " + path.string());
+    std::filesystem::remove(path);
+    EXPECT_EQ(nothing.exitCode, 2);
+    EXPECT_NE(nothing.out.find("could not fix " + path.string() + ": /blocks/0: falls: nothing is under it"),
+              std::string::npos)
+        << nothing.out;
+}
+
 TEST(CheckCli, FixSnapsFloatingAndOverlappingBodiesAndKeepsTheFilesLayout)
 {
     const auto path =

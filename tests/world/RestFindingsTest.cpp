@@ -42,7 +42,7 @@ TEST(RestFindings, APlankOverlappingItsPostNamesThePostAndTheDepth)
         "pigs": [{"type": "small", "x": 30.0, "y": 0.25}])"));
     ASSERT_FALSE(findings.empty());
     EXPECT_EQ(findings.back().pointer, "/blocks/2");
-    EXPECT_EQ(findings.back().what, "overlaps block 0 (wood) by 7.0 mm");
+    EXPECT_EQ(findings.back().what, "overlaps block 0 (wood) and block 1 (wood) by 7.0 mm") << "it rests on both";
     EXPECT_EQ(findings.back().fix, "set y = 1.625");
 }
 
@@ -56,7 +56,9 @@ TEST(RestFindings, ACantileverFallsPastItsSupportsEdge)
     const RestFinding& f = findings.back();
     EXPECT_EQ(f.pointer, "/blocks/1");
     EXPECT_EQ(f.what.rfind("falls: its centre of mass is 40.0 cm past block 0 (wood)'s edge", 0), 0u) << f.what;
-    EXPECT_EQ(f.fix, "move it 40.0 cm left or support its centre");
+    // To 1 cm inside the edge; the fix was tried: moved there, it stands.
+    EXPECT_EQ(f.fix, "move it 41.0 cm left (set x = 40.49) or support its centre");
+    EXPECT_EQ(f.fixX, 40.49);
     EXPECT_FALSE(f.snapY);
 }
 
@@ -68,6 +70,62 @@ TEST(RestFindings, ABlockFloatingFarAboveItsSupportGetsAFixButNoSnap)
     EXPECT_EQ(findings[0].what.rfind("floats 10.0 cm above the ground", 0), 0u) << findings[0].what;
     EXPECT_EQ(findings[0].fix, "set y = 0.5");
     EXPECT_FALSE(findings[0].snapY) << "more than 2 cm is a design decision, not a slip";
+}
+
+TEST(RestFindings, TheBodyThatStartsItIsBlamedAndWhatFollowsIsListedUnderIt)
+{
+    // The designer's plank on two posts with a stone 3 cm above it: the stone falls first and breaks the plank, which
+    // falls on the pig. One finding, at the stone, with the plank and the pig under it; its fix was tried and works.
+    const auto findings = findingsOf(scene(R"("blocks": [
+        {"material": "wood", "x": 19, "y": 1, "w": 0.25, "h": 2}, {"material": "wood", "x": 21, "y": 1, "w": 0.25, "h": 2},
+        {"material": "wood", "x": 20, "y": 2.125, "w": 2.6, "h": 0.25},
+        {"material": "stone", "x": 20, "y": 2.78, "w": 1, "h": 1}],
+        "pigs": [{"type": "small", "x": 20, "y": 0.25}])"));
+    ASSERT_EQ(findings.size(), 1u);
+    EXPECT_EQ(findings[0].pointer, "/blocks/3");
+    EXPECT_EQ(findings[0].what.rfind("floats 3.0 cm above block 2 (wood)", 0), 0u) << findings[0].what;
+    EXPECT_EQ(findings[0].consequences, (std::vector<std::string>{"/blocks/2", "/pigs/0"}));
+    EXPECT_NE(findings[0].what.find("it moves 2 bodies with it: block 2 (wood) and pig 0"), std::string::npos);
+    EXPECT_EQ(findings[0].fix, "set y = 2.75");
+    EXPECT_EQ(findings[0].fixY, 2.75);
+    EXPECT_FALSE(findings[0].snapY) << "3 cm: more than the 2 cm a snap moves";
+}
+
+TEST(RestFindings, AFloatingPigIsBlamedNotTheBlockUnderIt)
+{
+    const auto findings = findingsOf(scene(R"("blocks": [{"material": "wood", "x": 20, "y": 0.5, "w": 1, "h": 1}],
+        "pigs": [{"type": "small", "x": 20, "y": 1.28}])"));
+    ASSERT_EQ(findings.size(), 1u);
+    EXPECT_EQ(findings[0].pointer, "/pigs/0");
+    EXPECT_EQ(findings[0].fix, "set y = 1.25");
+}
+
+TEST(RestFindings, StackedFloatersGetFixesWorkedOutBottomUp)
+{
+    // The lower block floats 1 cm, the upper 3 cm above it as written: 4 cm once the lower one is set down.
+    const auto findings = findingsOf(scene(R"("blocks": [
+        {"material": "wood", "x": 20, "y": 0.51, "w": 1, "h": 1}, {"material": "wood", "x": 20, "y": 1.54, "w": 1, "h": 1}],
+        "pigs": [{"type": "small", "x": 24, "y": 0.25}])"));
+    ASSERT_EQ(findings.size(), 2u);
+    EXPECT_EQ(findings[0].fix, "set y = 0.5");
+    EXPECT_EQ(findings[1].what.rfind("floats 4.0 cm above block 0 (wood)", 0), 0u) << findings[1].what;
+    EXPECT_EQ(findings[1].fix, "set y = 1.5");
+}
+
+TEST(RestFindings, AFixThatDoesNotMakeItStandIsNotSuggested)
+{
+    // 2 cm above a post, but most of it past the post's edge: resting it on the post still lets it fall, so the y
+    // is not offered as a fix, and the finding says it was tried.
+    const auto findings = findingsOf(scene(R"("blocks": [
+        {"material": "wood", "x": 20, "y": 0.75, "w": 0.25, "h": 1.5}, {"material": "stone", "x": 20.6, "y": 1.77, "w": 1, "h": 0.5}],
+        "pigs": [{"type": "small", "x": 24, "y": 0.25}])"));
+    ASSERT_FALSE(findings.empty());
+    const RestFinding& f = findings.back();
+    EXPECT_EQ(f.pointer, "/blocks/1");
+    EXPECT_TRUE(f.fix.empty()) << f.fix;
+    EXPECT_FALSE(f.fixY);
+    EXPECT_NE(f.what.find("set y = 1.75 was tried and it still moves, so no fix is suggested"), std::string::npos)
+        << f.what;
 }
 
 TEST(RestFindings, AStandingLevelHasNone)

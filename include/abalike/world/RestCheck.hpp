@@ -3,6 +3,7 @@
 #include <abalike/level/LevelDef.hpp>
 #include <abalike/world/Catalog.hpp>
 #include <abalike/world/GameWorld.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,11 @@ struct BodyRest
     double finalDisplacementM = 0.0; ///< the same at the end of the check
     bool damaged = false;
     bool destroyed = false;
+    /// When it started: the first time it moved more than kStartedMovingM or took damage (s); none if never. The
+    /// first bodies to start are what makes a level fail; the ones that start later, touching them, follow.
+    std::optional<double> startedS;
+
+    static constexpr double kStartedMovingM = 0.001;
 };
 
 /// The largest mass ratio of a body resting on a lighter one (Box2D's stacking degrades past 10:1 heavy on light;

@@ -21,6 +21,13 @@ struct RestFinding
     /// The y that rests the body on its support (for floating or overlapping bodies within kMaxSnapM); what
     /// `check --fix` writes.
     std::optional<double> snapY;
+    /// The verified fix as numbers (the body's new y, x or angle_deg): what `check --fix` writes. Set only when the
+    /// rest check, run with every finding's fix made, found this body and its consequences standing.
+    std::optional<double> fixY;
+    std::optional<double> fixX;
+    std::optional<double> fixAngleDeg;
+    /// The bodies that only follow this one (they start moving after it, touching it): fixing it fixes them.
+    std::vector<std::string> consequences;
 
     /// "what; fix" (or just "what").
     std::string message() const;

@@ -121,7 +121,7 @@ RestReport checkRest(const LevelDef& level, const Catalog& catalog, double secon
             continue;
         tracked.push_back(static_cast<int>(i));
         designed.push_back(designedPose(level, e));
-        report.bodies.push_back({e.kind, e.defIndex, e.typeName, 0.0, false, false});
+        report.bodies.push_back({e.kind, e.defIndex, e.typeName, 0.0, 0.0, false, false, std::nullopt});
     }
 
     const int steps = static_cast<int>(std::lround(seconds / world.dt()));
@@ -138,6 +138,8 @@ RestReport checkRest(const LevelDef& level, const Catalog& catalog, double secon
             BodyRest& body = report.bodies[k];
             body.finalDisplacementM = displacement(e, designed[k]);
             body.maxDisplacementM = std::max(body.maxDisplacementM, body.finalDisplacementM);
+            if (!body.startedS && (body.finalDisplacementM > BodyRest::kStartedMovingM || e.health < e.maxHealth))
+                body.startedS = static_cast<double>(step + 1) * world.dt();
         }
     }
     // Contacts of bodies at rest: the pairs the solver has to hold up.

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iterator>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <sstream>
@@ -54,6 +55,22 @@ std::string metres(double m)
     else
         out << std::fixed << std::setprecision(2) << m << " m";
     return out.str();
+}
+
+Bounds bodyBounds(const LevelDef& level, const Catalog& catalog, bool pig, int index)
+{
+    if (!pig)
+        return blockBounds(level.blocks[static_cast<std::size_t>(index)]);
+    const PigDef& p = level.pigs[static_cast<std::size_t>(index)];
+    const PigType* type = catalog.findPig(p.type);
+    const double r = type != nullptr ? type->radiusM : 0.25;
+    return {p.x - r, p.x + r, p.y - r, p.y + r};
+}
+
+std::string bodyName(const LevelDef& level, bool pig, int index)
+{
+    return pig ? "pig " + std::to_string(index)
+               : "block " + std::to_string(index) + " (" + level.blocks[static_cast<std::size_t>(index)].material + ")";
 }
 
 /// The shortest decimal that holds y to 0.1 mm (what a designer would type).
@@ -117,6 +134,15 @@ SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig,
             return; // not under it
         if (b.top > self.bottom + kSearchM || b.top < self.bottom - kSearchM || b.top > 0.5 * (self.bottom + self.top))
             return; // too far below, or beside it rather than under it
+        // A body on two posts rests on both: supports whose tops are level share it, and their extent is the span
+        // its centre of mass must stay over.
+        if (!best.support.empty() && std::abs(b.top - bestTop) <= kTouchM)
+        {
+            best.support += " and " + name;
+            best.supportLeftM = std::min(best.supportLeftM, b.left);
+            best.supportRightM = std::max(best.supportRightM, b.right);
+            return;
+        }
         if (b.top <= bestTop)
             return;
         bestTop = b.top;
@@ -160,87 +186,262 @@ SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig,
     return best;
 }
 
+namespace
+{
+
+/// What is wrong with one body as built (on the level as fixed so far) and the change that would fix it. `own` is
+/// false when nothing about the body itself is wrong: it only moved.
+struct Defect
+{
+    std::string what;
+    std::string fix;
+    bool own = false;
+    std::optional<double> y; ///< the fix as numbers: the body's new y, x or angle
+    std::optional<double> x;
+    std::optional<double> angleDeg;
+};
+
+Defect defectOf(const LevelDef& level, const Catalog& catalog, bool pig, int index, bool moved, double movedM)
+{
+    Defect d;
+    const std::size_t i = static_cast<std::size_t>(index);
+    const double y = pig ? level.pigs[i].y : level.blocks[i].y;
+    const double x = pig ? level.pigs[i].x : level.blocks[i].x;
+    const SupportGap under = supportUnder(level, catalog, pig, index);
+    std::ostringstream what;
+    const BlockDef* block = pig ? nullptr : &level.blocks[i];
+    const bool leaning = block != nullptr && block->shape != BlockShape::Circle &&
+                         std::abs(std::remainder(block->angleDeg, 90.0)) > 1e-9;
+    double pastCorner = 0.0;
+    if (leaning)
+    {
+        // Where its lowest corner is: a box tilted on one corner tips unless its centre is above that corner.
+        const double a = block->angleDeg * std::numbers::pi / 180.0;
+        double lowestY = 1e300;
+        double cornerX = x;
+        for (const double sx : {-0.5, 0.5})
+            for (const double sy : {-0.5, 0.5})
+            {
+                const double cx = sx * block->widthM;
+                const double cy = sy * block->heightM;
+                const double py = y + std::sin(a) * cx + std::cos(a) * cy;
+                if (py < lowestY - 1e-9)
+                {
+                    lowestY = py;
+                    cornerX = x + std::cos(a) * cx - std::sin(a) * cy;
+                }
+            }
+        pastCorner = std::abs(x - cornerX);
+    }
+    d.own = true;
+    if (leaning && moved && pastCorner > 0.01)
+    {
+        what << "leans " << std::fixed << std::setprecision(0) << std::abs(std::remainder(block->angleDeg, 90.0))
+             << "\u00B0 on one corner with its centre of mass " << metres(pastCorner) << " past it, so it tips over";
+        d.angleDeg = 90.0 * std::round(block->angleDeg / 90.0);
+        d.fix = "set angle_deg = " + coordinate(*d.angleDeg) + " or lean it against something";
+    }
+    else if (!under.support.empty() && std::abs(under.gapM) > kTouchM)
+    {
+        if (under.gapM > 0.0)
+            what << "floats " << metres(under.gapM) << " above " << under.support;
+        else
+            what << "overlaps " << under.support << " by " << metres(-under.gapM);
+        d.y = y - under.gapM;
+        d.fix = "set y = " + coordinate(*d.y);
+    }
+    else if (!under.support.empty() && (x < under.supportLeftM || x > under.supportRightM))
+    {
+        const double past = x < under.supportLeftM ? under.supportLeftM - x : x - under.supportRightM;
+        what << "falls: its centre of mass is " << metres(past) << " past " << under.support << "'s edge";
+        d.x = x < under.supportLeftM ? under.supportLeftM + 0.01 : under.supportRightM - 0.01;
+        d.fix = "move it " + metres(past + 0.01) + (x < under.supportLeftM ? " right" : " left") +
+                " (set x = " + coordinate(*d.x) + ") or support its centre";
+    }
+    else if (under.supportIsSlippery && moved)
+        what << "slides off " << under.support << " (" << under.supportMaterial << " is slippery: friction "
+             << under.supportFriction << ")";
+    else if (under.support.empty())
+        what << "falls: nothing is under it";
+    else
+    {
+        d.own = false;
+        if (moved)
+            what << "moves " << metres(movedM) << " while left alone";
+    }
+    d.what = what.str();
+    return d;
+}
+
+/// The level with a defect's fix applied to the body.
+void applyFix(LevelDef& level, bool pig, int index, const Defect& d)
+{
+    const std::size_t i = static_cast<std::size_t>(index);
+    if (pig)
+    {
+        level.pigs[i].y = d.y.value_or(level.pigs[i].y);
+        level.pigs[i].x = d.x.value_or(level.pigs[i].x);
+        return;
+    }
+    level.blocks[i].y = d.y.value_or(level.blocks[i].y);
+    level.blocks[i].x = d.x.value_or(level.blocks[i].x);
+    level.blocks[i].angleDeg = d.angleDeg.value_or(level.blocks[i].angleDeg);
+}
+
+std::string pointerOf(const BodyRest& body)
+{
+    return (body.kind == EntityKind::Pig ? "/pigs/" : "/blocks/") + std::to_string(body.defIndex);
+}
+
+bool failsIn(const RestReport& report, const std::string& pointer)
+{
+    for (const BodyRest& body : report.bodies)
+        if (pointerOf(body) == pointer)
+            return body.maxDisplacementM > report.toleranceM || body.damaged || body.destroyed;
+    return false;
+}
+
+} // namespace
+
 std::vector<RestFinding> restFindings(const LevelDef& level, const Catalog& catalog, const RestReport& report)
 {
-    std::vector<RestFinding> findings;
-    for (const BodyRest& body : report.bodies)
+    // The bodies that fail. Those with something wrong of their own (floating, overlapping, past their supports'
+    // edge, leaning, on nothing) are the causes; the rest only follow them and are listed under the cause that
+    // touches them or is nearest, started no later. When no body has a defect of its own (a stack that leans as a
+    // whole), the first to move, the lowest of those that start together, stands for the group.
+    struct Failing
     {
+        std::size_t k;
+        bool pig;
+        int index;
+        Bounds bounds;
+        double startS;
+        Defect defect;
+    };
+    std::vector<Failing> failing;
+    for (std::size_t k = 0; k < report.bodies.size(); ++k)
+    {
+        const BodyRest& body = report.bodies[k];
         const bool moved = body.maxDisplacementM > report.toleranceM;
         if (!moved && !body.damaged && !body.destroyed)
             continue;
         const bool pig = body.kind == EntityKind::Pig;
+        failing.push_back({k, pig, body.defIndex, bodyBounds(level, catalog, pig, body.defIndex),
+                           body.startedS.value_or(1e300),
+                           defectOf(level, catalog, pig, body.defIndex, moved, body.maxDisplacementM)});
+    }
+    std::vector<std::size_t> causes;
+    for (std::size_t i = 0; i < failing.size(); ++i)
+        if (failing[i].defect.own)
+            causes.push_back(i);
+    if (causes.empty() && !failing.empty())
+    {
+        std::size_t first = 0;
+        for (std::size_t i = 1; i < failing.size(); ++i)
+            if (failing[i].startS < failing[first].startS ||
+                (failing[i].startS == failing[first].startS && failing[i].bounds.bottom < failing[first].bounds.bottom))
+                first = i;
+        causes.push_back(first);
+    }
+    // Bottom up: a fix above another is worked out on the level with the one below fixed.
+    std::sort(causes.begin(), causes.end(),
+              [&](std::size_t a, std::size_t b) { return failing[a].bounds.bottom < failing[b].bounds.bottom; });
+    std::map<std::size_t, std::vector<std::size_t>> follow;
+    for (std::size_t i = 0; i < failing.size(); ++i)
+    {
+        if (std::find(causes.begin(), causes.end(), i) != causes.end())
+            continue;
+        std::optional<std::size_t> best;
+        double bestDistance = 1e300;
+        for (const std::size_t c : causes)
+        {
+            const Bounds& a = failing[c].bounds;
+            const Bounds& b = failing[i].bounds;
+            const double dx = std::max({0.0, a.left - b.right, b.left - a.right});
+            const double dy = std::max({0.0, a.bottom - b.top, b.bottom - a.top});
+            const double distance = std::hypot(dx, dy) + (failing[c].startS <= failing[i].startS ? 0.0 : 1e6);
+            if (distance < bestDistance)
+            {
+                bestDistance = distance;
+                best = c;
+            }
+        }
+        if (best)
+            follow[*best].push_back(i);
+    }
+
+    // Every fix worked out bottom up (a fix above another assumes the one below is made), then all of them tried at
+    // once: a fix is suggested only when, with them, its body and what follows it stand the rest check.
+    LevelDef fixed = level;
+    std::vector<Defect> defects;
+    for (const std::size_t c : causes)
+    {
+        const Failing& cause = failing[c];
+        const BodyRest& body = report.bodies[cause.k];
+        defects.push_back(cause.defect.own ? defectOf(fixed, catalog, cause.pig, cause.index,
+                                                      body.maxDisplacementM > report.toleranceM, body.maxDisplacementM)
+                                           : cause.defect);
+        if (!defects.back().fix.empty())
+            applyFix(fixed, cause.pig, cause.index, defects.back());
+    }
+    const bool anyFix = std::any_of(defects.begin(), defects.end(), [](const Defect& d) { return !d.fix.empty(); });
+    const std::optional<RestReport> withFixes =
+        anyFix ? std::optional<RestReport>(checkRest(fixed, catalog, report.seconds, {}, report.toleranceM))
+               : std::nullopt;
+
+    // Listed in the file's order (blocks, then pigs), as a designer reads the file.
+    std::vector<std::size_t> order(causes.size());
+    for (std::size_t n = 0; n < order.size(); ++n)
+        order[n] = n;
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return failing[causes[a]].k < failing[causes[b]].k; });
+    std::vector<RestFinding> findings;
+    for (const std::size_t n : order)
+    {
+        const Failing& cause = failing[causes[n]];
+        const BodyRest& body = report.bodies[cause.k];
+        const Defect& d = defects[n];
         RestFinding f;
-        f.pointer = (pig ? "/pigs/" : "/blocks/") + std::to_string(body.defIndex);
-        const double y = pig ? level.pigs[static_cast<std::size_t>(body.defIndex)].y
-                             : level.blocks[static_cast<std::size_t>(body.defIndex)].y;
-        const double x = pig ? level.pigs[static_cast<std::size_t>(body.defIndex)].x
-                             : level.blocks[static_cast<std::size_t>(body.defIndex)].x;
-        const SupportGap under = supportUnder(level, catalog, pig, body.defIndex);
+        f.pointer = pointerOf(body);
+        for (const std::size_t i : follow[causes[n]])
+            f.consequences.push_back(pointerOf(report.bodies[failing[i].k]));
         std::ostringstream what;
-        const BlockDef* block = pig ? nullptr : &level.blocks[static_cast<std::size_t>(body.defIndex)];
-        const bool leaning = block != nullptr && block->shape != BlockShape::Circle &&
-                             std::abs(std::remainder(block->angleDeg, 90.0)) > 1e-9;
-        double pastCorner = 0.0;
-        if (leaning)
-        {
-            // Where its lowest corner is: a box tilted on one corner tips unless its centre is above that corner.
-            const double a = block->angleDeg * std::numbers::pi / 180.0;
-            double lowestY = 1e300;
-            double cornerX = x;
-            for (const double sx : {-0.5, 0.5})
-                for (const double sy : {-0.5, 0.5})
-                {
-                    const double cx = sx * block->widthM;
-                    const double cy = sy * block->heightM;
-                    const double py = y + std::sin(a) * cx + std::cos(a) * cy;
-                    if (py < lowestY - 1e-9)
-                    {
-                        lowestY = py;
-                        cornerX = x + std::cos(a) * cx - std::sin(a) * cy;
-                    }
-                }
-            pastCorner = std::abs(x - cornerX);
-        }
-        if (leaning && moved && pastCorner > 0.01)
-        {
-            what << "leans " << std::fixed << std::setprecision(0) << std::abs(std::remainder(block->angleDeg, 90.0))
-                 << "\u00B0 on one corner with its centre of mass " << metres(pastCorner)
-                 << " past it, so it tips over";
-            f.fix = "set angle_deg = " + coordinate(90.0 * std::round(block->angleDeg / 90.0)) +
-                    " or lean it against something";
-        }
-        else if (!under.support.empty() && under.gapM > kTouchM)
-        {
-            what << "floats " << metres(under.gapM) << " above " << under.support;
-            f.fix = "set y = " + coordinate(y - under.gapM);
-            if (under.gapM <= RestFinding::kMaxSnapM)
-                f.snapY = y - under.gapM;
-        }
-        else if (!under.support.empty() && under.gapM < -kTouchM)
-        {
-            what << "overlaps " << under.support << " by " << metres(-under.gapM);
-            f.fix = "set y = " + coordinate(y - under.gapM);
-            if (-under.gapM <= RestFinding::kMaxSnapM)
-                f.snapY = y - under.gapM;
-        }
-        else if (!under.support.empty() && (x < under.supportLeftM || x > under.supportRightM))
-        {
-            const double past = x < under.supportLeftM ? under.supportLeftM - x : x - under.supportRightM;
-            what << "falls: its centre of mass is " << metres(past) << " past " << under.support << "'s edge";
-            f.fix =
-                "move it " + metres(past) + (x < under.supportLeftM ? " right" : " left") + " or support its centre";
-        }
-        else if (under.supportIsSlippery && moved)
-            what << "slides off " << under.support << " (" << under.supportMaterial << " is slippery: friction "
-                 << under.supportFriction << ")";
-        else if (under.support.empty())
-            what << "falls: nothing is under it";
-        else if (moved)
-            what << "moves " << metres(body.maxDisplacementM) << " while left alone";
+        what << d.what;
         if (body.destroyed)
             what << (what.tellp() > 0 ? " and " : "") << "breaks before any shot";
         else if (body.damaged)
             what << (what.tellp() > 0 ? " and " : "") << "takes damage before any shot";
+        if (!f.consequences.empty())
+        {
+            what << "; it moves " << f.consequences.size() << (f.consequences.size() == 1 ? " body" : " bodies")
+                 << " with it: ";
+            const std::vector<std::size_t>& others = follow[causes[n]];
+            for (std::size_t i = 0; i < others.size(); ++i)
+                what << (i == 0                   ? ""
+                         : i + 1 == others.size() ? " and "
+                                                  : ", ")
+                     << bodyName(level, failing[others[i]].pig, failing[others[i]].index);
+        }
+        if (!d.fix.empty())
+        {
+            bool works = !failsIn(*withFixes, f.pointer);
+            for (const std::string& pointer : f.consequences)
+                works = works && !failsIn(*withFixes, pointer);
+            if (works)
+            {
+                f.fix = d.fix;
+                f.fixY = d.y;
+                f.fixX = d.x;
+                f.fixAngleDeg = d.angleDeg;
+                const double y = cause.pig ? level.pigs[static_cast<std::size_t>(cause.index)].y
+                                           : level.blocks[static_cast<std::size_t>(cause.index)].y;
+                if (d.y && std::abs(*d.y - y) <= RestFinding::kMaxSnapM)
+                    f.snapY = d.y;
+            }
+            else
+                what << "; " << d.fix.substr(0, d.fix.find(" or ")) << " was tried and it still moves, so no fix is "
+                     << "suggested";
+        }
         f.what = what.str();
         findings.push_back(std::move(f));
     }
