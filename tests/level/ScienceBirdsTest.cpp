@@ -3,7 +3,10 @@
 #include <abalike/world/Catalog.hpp>
 #include <abalike/world/RestCheck.hpp>
 
+#include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
+#include <iterator>
 
 namespace abalike
 {
@@ -277,6 +280,50 @@ TEST(ScienceBirdsImport, RefusesBytesThatAreNotText)
               "0:0 UTF-16 text with an odd number of bytes at byte 6 (expected UTF-8 or UTF-16 text)\n");
     EXPECT_EQ(importErrorOf(std::string("\xFF\xFE<\0\x00\xD8L\0", 8)),
               "0:0 a lone UTF-16 surrogate at byte 4 (expected UTF-8 or UTF-16 text)\n");
+}
+
+} // namespace
+} // namespace abalike
+
+namespace abalike
+{
+namespace
+{
+
+TEST(ScienceBirdsImport, ACorpusInBothConventionsImportsToLevelsThatStand)
+{
+    // tests/level/science-birds/: files made by the project the way Science Birds' generator writes them (its ground
+    // at y = -3.5) and the way its hand-made levels are (their ground 0.7 m higher). Every one imports to a level
+    // that stands without edits; the hand-made ones are read with their own ground, and one warning says so; a
+    // structure without pigs imports as a sandbox scene.
+    const std::filesystem::path folder = std::filesystem::path(ABALIKE_SOURCE_DIR) / "tests/level/science-birds";
+    std::size_t files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+    {
+        if (entry.path().extension() != ".xml")
+            continue;
+        ++files;
+        const std::string name = entry.path().filename().string();
+        SCOPED_TRACE(name);
+        std::ifstream in(entry.path(), std::ios::binary);
+        const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        const bool hasPigs = bytes.find("<Pig") != std::string::npos;
+        const ScienceBirdsLevel imported =
+            importScienceBirds(bytes, name, Catalog::builtin(), ScienceBirdsOptions{!hasPigs});
+        EXPECT_EQ(imported.level.sandbox, !hasPigs);
+        const RestReport rest = checkRest(imported.level);
+        EXPECT_TRUE(rest.passed()) << rest.summary();
+        std::size_t ownGround = 0;
+        for (const LevelIssue& warning : imported.warnings)
+            ownGround += warning.message.find("read with a ground of its own at y = -2.78") != std::string::npos;
+        EXPECT_EQ(ownGround, name.rfind("handmade-", 0) == 0 ? 1u : 0u);
+        EXPECT_FALSE(imported.level.blocks.empty());
+    }
+    EXPECT_GE(files, 5u);
+    // Without --sandbox a structure with no pig is refused, with the reason.
+    std::ifstream in(folder / "handmade-structure.xml", std::ios::binary);
+    const std::string structure{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_THROW(importScienceBirds(structure, "handmade-structure.xml", Catalog::builtin()), LevelLoadError);
 }
 
 } // namespace

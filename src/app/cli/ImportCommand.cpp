@@ -30,6 +30,7 @@ struct ImportArgs
     std::string id;
     std::string title;
     bool force = false;
+    bool sandbox = false;
 };
 
 /// "FILE:LINE:COL: warning: /pointer: message", as compilers write them; the pointer (of the level written) only
@@ -63,7 +64,7 @@ int runImport(const ImportArgs& a)
     ScienceBirdsLevel imported;
     try
     {
-        imported = importScienceBirds(bytes, a.input, Catalog::builtin());
+        imported = importScienceBirds(bytes, a.input, Catalog::builtin(), ScienceBirdsOptions{a.sandbox});
     }
     catch (const LevelLoadError& e)
     {
@@ -105,6 +106,8 @@ CommandRunner addImportCommand(CLI::App& app)
     cmd->add_option("--id", args->id, "the level's id (default: from the file name)");
     cmd->add_option("--title", args->title, "the level's title (default: \"Science Birds: ID\")");
     cmd->add_flag("--force", args->force, "replace the output file if it exists");
+    cmd->add_flag("--sandbox", args->sandbox,
+                  "write a sandbox scene (it may have no pig): a structure to open in the editor, never in a pack");
     return [args]
     {
         return runImport(*args);

@@ -65,7 +65,10 @@ std::string joinedKeys(const std::map<std::string, std::string>& names)
 class Importer
 {
 public:
-    Importer(const std::string& fileName, const Catalog& catalog) : m_file(fileName), m_catalog(catalog) {}
+    Importer(const std::string& fileName, const Catalog& catalog, const ScienceBirdsOptions& options)
+        : m_file(fileName), m_catalog(catalog), m_options(options)
+    {
+    }
 
     ScienceBirdsLevel run(std::string_view bytes);
 
@@ -101,11 +104,13 @@ private:
     /// Science Birds' y with its ground at -3.5 to ours at 0, to the micrometre (its files give centimetres).
     static double ourY(double y) { return tidy(y - kScienceBirdsGroundY); }
     static double tidy(double metres) { return std::round(metres * 1e6) / 1e6; }
+    void useOwnGround();
     void snapOntoSupports();
     void checkResult();
 
     std::string m_file;
     const Catalog& m_catalog;
+    ScienceBirdsOptions m_options;
     std::string m_original; ///< the decoded text, before closing leaf tags (places refer to it)
     std::vector<ClosedTag> m_closed;
     LevelDef m_level;
@@ -399,6 +404,47 @@ std::string centimetres(double metres)
     return text.substr(0, text.find('.') + 2) + " cm";
 }
 
+void Importer::useOwnGround()
+{
+    // The bodies on the ground or on nothing (not on a block or a platform): Science Birds' hand-made levels stand
+    // them on a ground of their own, higher than its generator's -3.5. When the lowest of them all float the same
+    // height above ours, more than the snap closes, that height is the file's ground.
+    std::vector<double> gaps;
+    for (std::size_t i = 0; i < m_level.blocks.size(); ++i)
+        if (const SupportGap under = supportUnder(m_level, m_catalog, false, static_cast<int>(i));
+            under.support.empty() || under.support == "the ground")
+            gaps.push_back(bottomOf(m_level.blocks[i]) - m_level.groundY);
+    for (std::size_t i = 0; i < m_level.pigs.size(); ++i)
+        if (const SupportGap under = supportUnder(m_level, m_catalog, true, static_cast<int>(i));
+            under.support.empty() || under.support == "the ground")
+        {
+            const PigType* type = m_catalog.findPig(m_level.pigs[i].type);
+            gaps.push_back(m_level.pigs[i].y - (type ? type->radiusM : 0.25) - m_level.groundY);
+        }
+    if (gaps.empty())
+        return;
+    const double lift = tidy(*std::min_element(gaps.begin(), gaps.end()));
+    if (lift <= kScienceBirdsSnapM)
+        return;
+    for (BlockDef& block : m_level.blocks)
+        block.y = tidy(block.y - lift);
+    for (PigDef& pig : m_level.pigs)
+        pig.y = tidy(pig.y - lift);
+    for (TerrainDef& terrain : m_level.terrain)
+    {
+        terrain.y = tidy(terrain.y - lift);
+        for (auto& point : terrain.points)
+            point[1] = tidy(point[1] - lift);
+    }
+    // The slingshot comes down with the scene, its pouch kept at least a metre above the ground.
+    m_level.slingshot.y = std::max(1.0, tidy(m_level.slingshot.y - lift));
+    m_warnings.push_back(issueAt(0, "",
+                                 "its lowest bodies stand " + centimetres(lift) + " above Science Birds' ground (y = " +
+                                     shortestNumber(kScienceBirdsGroundY) + "): read with a ground of its own at y = " +
+                                     shortestNumber(tidy(kScienceBirdsGroundY + lift)) +
+                                     ", so everything is that much lower than Science Birds' generator places it"));
+}
+
 void Importer::snapOntoSupports()
 {
     struct Body
@@ -534,8 +580,11 @@ ScienceBirdsLevel Importer::run(std::string_view bytes)
             name != "GameObjects" && name != "Camera" && name != "Score")
             warn(node, "", "<" + name + "> is not part of a Science Birds level; left out");
     }
+    if (m_options.sandbox)
+        m_level.sandbox = true; // a structure without pigs, for the editor
     if (m_errors.empty())
     {
+        useOwnGround();
         snapOntoSupports();
         checkResult();
     }
@@ -549,9 +598,10 @@ ScienceBirdsLevel Importer::run(std::string_view bytes)
 
 } // namespace
 
-ScienceBirdsLevel importScienceBirds(std::string_view bytes, const std::string& fileName, const Catalog& catalog)
+ScienceBirdsLevel importScienceBirds(std::string_view bytes, const std::string& fileName, const Catalog& catalog,
+                                     const ScienceBirdsOptions& options)
 {
-    return Importer(fileName, catalog).run(bytes);
+    return Importer(fileName, catalog, options).run(bytes);
 }
 
 } // namespace abalike
