@@ -6,6 +6,7 @@
 #include <abalike/design/ModelPlayer.hpp>
 #include <abalike/design/Solver.hpp>
 #include <abalike/design/StarThresholds.hpp>
+#include <abalike/design/WhyNotWon.hpp>
 #include <abalike/level/Campaign.hpp>
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/level/LevelText.hpp>
@@ -297,8 +298,12 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
         {
             std::string left;
             for (const int pig : report.solution->survivingPigs)
-                left += (left.empty() ? ": " : ", ") + std::string("pig ") + std::to_string(pig) + " (" +
+            {
+                left += (left.empty() ? ": " : "; ") + std::string("pig ") + std::to_string(pig) + " (" +
                         level.pigs[static_cast<std::size_t>(pig)].type + ")";
+                if (const std::string why = whyPigSurvives(level, Catalog::builtin(), pig); !why.empty())
+                    left += ", " + why;
+            }
             report.reasons.push_back(
                 "the solver found no win (best: " + std::to_string(report.solution->outcome.pigsRemaining) +
                 " pig(s) left" + left + ")");
