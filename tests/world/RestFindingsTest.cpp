@@ -128,6 +128,27 @@ TEST(RestFindings, AFixThatDoesNotMakeItStandIsNotSuggested)
         << f.what;
 }
 
+TEST(RestFindings, ALeaningStackNamesItsLeanAndStacksItStraight)
+{
+    // Each box sits 35 cm right of the one under it, over it on its own; the three upper ones together have their
+    // centre of mass 20 cm past the lowest one's right edge. Nothing single is wrong: the lean is.
+    const auto findings = findingsOf(scene(R"("blocks": [
+        {"material": "wood", "x": 20, "y": 0.25, "w": 1, "h": 0.5}, {"material": "wood", "x": 20.35, "y": 0.75, "w": 1, "h": 0.5},
+        {"material": "wood", "x": 20.7, "y": 1.25, "w": 1, "h": 0.5}, {"material": "wood", "x": 21.05, "y": 1.75, "w": 1, "h": 0.5}],
+        "pigs": [{"type": "small", "x": 26, "y": 0.25}])"));
+    ASSERT_EQ(findings.size(), 1u);
+    EXPECT_EQ(findings[0].pointer, "/blocks/1");
+    EXPECT_EQ(findings[0].what.rfind("leans: with the 2 bodies on it, its centre of mass is 20.0 cm past block 0 "
+                                     "(wood)'s right edge, so the stack tips over",
+                                     0),
+              0u)
+        << findings[0].what;
+    EXPECT_EQ(findings[0].fix,
+              "stack it and the bodies on it straight over block 0 (wood) (set x = 20 for each), or widen what it "
+              "stands on");
+    EXPECT_EQ(findings[0].groupX, 20.0);
+}
+
 TEST(RestFindings, AStandingLevelHasNone)
 {
     const LevelDef level =

@@ -26,6 +26,9 @@ struct RestFinding
     std::optional<double> fixY;
     std::optional<double> fixX;
     std::optional<double> fixAngleDeg;
+    /// A leaning stack's verified fix: the x to set for this body and each of its consequences (straight up over
+    /// what it stands on).
+    std::optional<double> groupX;
     /// The bodies that only follow this one (they start moving after it, touching it): fixing it fixes them.
     std::vector<std::string> consequences;
 

@@ -188,6 +188,26 @@ std::vector<std::string> fixRestFindings(const std::string& file, LevelDef& leve
                 field = *value;
                 changed = true;
             };
+            if (finding.groupX)
+            {
+                // A leaning stack: the body and the ones on it, straight up.
+                std::vector<std::string> group = finding.consequences;
+                group.insert(group.begin(), finding.pointer);
+                for (const std::string& member : group)
+                {
+                    const bool memberIsPig = member.rfind("/pigs/", 0) == 0;
+                    const auto i = static_cast<std::size_t>(std::stoi(member.substr(memberIsPig ? 6 : 8)));
+                    double& x = memberIsPig ? level.pigs[i].x : level.blocks[i].x;
+                    if (std::abs(*finding.groupX - x) < 1e-9)
+                        continue;
+                    const std::string number = shortest(*finding.groupX);
+                    text = replaceNumber(text, member + "/x", number);
+                    changes.push_back(member + "/x: " + shortest(x) + " -> " + number + " (stacked straight)");
+                    x = *finding.groupX;
+                    changed = true;
+                }
+                continue;
+            }
             if (pig)
             {
                 set("y", finding.fixY, level.pigs[index].y);

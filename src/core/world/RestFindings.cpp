@@ -199,7 +199,66 @@ struct Defect
     std::optional<double> y; ///< the fix as numbers: the body's new y, x or angle
     std::optional<double> x;
     std::optional<double> angleDeg;
+    /// A leaning group's fix: the x that stacks the body and the bodies on it (groupMembers) straight over the middle
+    /// of what it stands on.
+    std::optional<double> groupX;
+    std::vector<std::pair<bool, int>> groupMembers; ///< (pig, index) of the bodies on it
 };
+
+/// A body's mass as the world makes it: areal density times area.
+double massOf(const LevelDef& level, const Catalog& catalog, bool pig, int index)
+{
+    if (pig)
+    {
+        const PigType* type = catalog.findPig(level.pigs[static_cast<std::size_t>(index)].type);
+        return type != nullptr ? type->densityKgPerM2 * std::numbers::pi * type->radiusM * type->radiusM : 1.0;
+    }
+    const BlockDef& b = level.blocks[static_cast<std::size_t>(index)];
+    const Material* material = catalog.findMaterial(b.material);
+    const double density = material != nullptr ? material->densityKgPerM2 : 1.0;
+    if (b.shape == BlockShape::Circle)
+        return density * std::numbers::pi * 0.25 * b.widthM * b.widthM;
+    if (b.shape == BlockShape::Triangle)
+        return density * 0.5 * b.widthM * b.heightM;
+    if (b.shape == BlockShape::HollowBox)
+        return density * (b.widthM * b.heightM - (b.widthM - 2 * b.wallM) * (b.heightM - 2 * b.wallM));
+    return density * b.widthM * b.heightM;
+}
+
+/// A group that moves with nothing wrong with any one body: a stack leaning as a whole. Its centre of mass past the
+/// span of what the lowest rests on is the lean; the fix moves the group back over it.
+void leanOf(Defect& d, const LevelDef& level, const Catalog& catalog, bool pig, int index,
+            const std::vector<std::pair<bool, int>>& above)
+{
+    const SupportGap under = supportUnder(level, catalog, pig, index);
+    if (under.support.empty() || above.empty())
+        return;
+    double mass = 0.0;
+    double moment = 0.0;
+    const auto add = [&](bool p, int i)
+    {
+        const double m = massOf(level, catalog, p, i);
+        mass += m;
+        moment += m * (p ? level.pigs[static_cast<std::size_t>(i)].x : level.blocks[static_cast<std::size_t>(i)].x);
+    };
+    add(pig, index);
+    for (const auto& [p, i] : above)
+        add(p, i);
+    const double centre = moment / mass;
+    if (centre >= under.supportLeftM && centre <= under.supportRightM)
+        return;
+    const bool right = centre > under.supportRightM;
+    const double past = right ? centre - under.supportRightM : under.supportLeftM - centre;
+    std::ostringstream what;
+    what << "leans: with the " << above.size() << (above.size() == 1 ? " body" : " bodies")
+         << " on it, its centre of mass is " << metres(past) << " past " << under.support << "'s "
+         << (right ? "right" : "left") << " edge, so the stack tips over";
+    d.what = what.str();
+    d.groupX = std::round(0.5 * (under.supportLeftM + under.supportRightM) * 1e4) / 1e4;
+    d.groupMembers = above;
+    d.fix = "stack it and the bodies on it straight over " + under.support + " (set x = " + coordinate(*d.groupX) +
+            " for each), or widen what it stands on";
+}
 
 Defect defectOf(const LevelDef& level, const Catalog& catalog, bool pig, int index, bool moved, double movedM)
 {
@@ -276,6 +335,14 @@ Defect defectOf(const LevelDef& level, const Catalog& catalog, bool pig, int ind
 /// The level with a defect's fix applied to the body.
 void applyFix(LevelDef& level, bool pig, int index, const Defect& d)
 {
+    if (d.groupX)
+    {
+        std::vector<std::pair<bool, int>> group = d.groupMembers;
+        group.emplace_back(pig, index);
+        for (const auto& [p, i] : group)
+            (p ? level.pigs[static_cast<std::size_t>(i)].x : level.blocks[static_cast<std::size_t>(i)].x) = *d.groupX;
+        return;
+    }
     const std::size_t i = static_cast<std::size_t>(index);
     if (pig)
     {
@@ -381,6 +448,14 @@ std::vector<RestFinding> restFindings(const LevelDef& level, const Catalog& cata
         defects.push_back(cause.defect.own ? defectOf(fixed, catalog, cause.pig, cause.index,
                                                       body.maxDisplacementM > report.toleranceM, body.maxDisplacementM)
                                            : cause.defect);
+        if (!cause.defect.own)
+        {
+            std::vector<std::pair<bool, int>> above;
+            for (const std::size_t i : follow[c])
+                if (failing[i].bounds.bottom >= cause.bounds.bottom)
+                    above.emplace_back(failing[i].pig, failing[i].index);
+            leanOf(defects.back(), fixed, catalog, cause.pig, cause.index, above);
+        }
         if (!defects.back().fix.empty())
             applyFix(fixed, cause.pig, cause.index, defects.back());
     }
@@ -433,6 +508,7 @@ std::vector<RestFinding> restFindings(const LevelDef& level, const Catalog& cata
                 f.fixY = d.y;
                 f.fixX = d.x;
                 f.fixAngleDeg = d.angleDeg;
+                f.groupX = d.groupX;
                 const double y = cause.pig ? level.pigs[static_cast<std::size_t>(cause.index)].y
                                            : level.blocks[static_cast<std::size_t>(cause.index)].y;
                 if (d.y && std::abs(*d.y - y) <= RestFinding::kMaxSnapM)
