@@ -205,10 +205,10 @@ TEST_F(EditorFlow, ALevelWithGeometryProblemsOpensWithThemListed)
 
 TEST_F(EditorFlow, PrefabsMirrorAndPolygonCornersWorkWithTheMouseAndFindingsFollowEveryEdit)
 {
-    // Insert > My prefabs > lean-to (from the data folder's prefabs/; a submenu), Ctrl+M mirrors it, the wheel zooms, a right
-    // drag pans, a click selects the hill, its top-left corner is dragged up; Ctrl+S saves. The level opened with an
-    // overlap, which the re-check after each edit keeps finding. (tools/gallery takes docs/img/editor-tools.png
-    // from the same steps.)
+    // Insert > My prefabs > lean-to (from the data folder's prefabs/; a submenu), Ctrl+M mirrors it, the wheel zooms, a
+    // right drag pans, a click selects the hill, its top-left corner is dragged up; Ctrl+S saves. The level opened with
+    // an overlap, which the re-check after each edit keeps finding. (tools/gallery takes docs/img/editor-tools.png from
+    // the same steps.)
     const std::string file = m_dir.file("hillside.json");
     std::filesystem::copy_file(sourceFile("tests/window/data/editor-hillside.json"), file);
     std::filesystem::create_directories(data() / "prefabs");
