@@ -18,6 +18,31 @@ std::string malformed(const std::string& name)
     return sourcePath("tests/level/malformed/" + name + ".json");
 }
 
+/// A level file of the test's own in the temporary folder, removed when the test is done with it.
+class ScratchLevel
+{
+public:
+    explicit ScratchLevel(const std::string& name)
+        : m_path(std::filesystem::temp_directory_path() /
+                 ("abalike-" + name + "-" + std::to_string(::getpid()) + ".json"))
+    {
+    }
+    ~ScratchLevel() { std::filesystem::remove(m_path); }
+    ScratchLevel(const ScratchLevel&) = delete;
+    ScratchLevel& operator=(const ScratchLevel&) = delete;
+
+    std::string path() const { return m_path.string(); }
+    void write(const std::string& text) const { std::ofstream(m_path) << text; }
+    std::string read() const
+    {
+        std::ifstream in(m_path);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    }
+
+private:
+    std::filesystem::path m_path;
+};
+
 /// The expected lines of a malformed file, with the file named by its full path as the CLI prints it.
 std::vector<std::string> expectedLines(const std::string& name)
 {
@@ -59,24 +84,13 @@ TEST(CheckCli, SolveRecommendsStarsAndWriteStarsWritesOnlyThem)
 {
     // A pig in the open: the solver wins it and the model player too; the file's stars (1, 2, 3) are not what its
     // wins recommend, and --write-stars replaces just those numbers.
-    const std::filesystem::path path =
-        std::filesystem::temp_directory_path() / ("abalike-write-stars-" + std::to_string(::getpid()) + ".json");
-    std::ofstream(path) << R"({"format": 1, "id": "ws", "title": "Write stars",
+    const ScratchLevel level("write-stars");
+    level.write(R"({"format": 1, "id": "ws", "title": "Write stars",
   "slingshot": {"x": 0, "y": 1.5}, "birds": ["red", "red"],
   "pigs": [{"type": "small", "x": 14, "y": 0.25}],
   "stars": [1, 2, 3]}
-)";
-    const auto readFile = [&path]
-    {
-        std::ifstream in(path);
-        return std::string(std::istreambuf_iterator<char>(in), {});
-    };
-    struct Remove
-    {
-        std::filesystem::path p;
-        ~Remove() { std::filesystem::remove(p); }
-    } removeAtEnd{path};
-    const std::string file = path.string();
+)");
+    const std::string file = level.path();
     const RunResult dry = runAbalike("check " + file + " --solve --player-runs 4 --json");
     ASSERT_EQ(dry.exitCode, 0) << dry.err;
     const nlohmann::json report = nlohmann::json::parse(dry.out)["files"][0];
@@ -86,15 +100,15 @@ TEST(CheckCli, SolveRecommendsStarsAndWriteStarsWritesOnlyThem)
     EXPECT_LE(stars[0], stars[1]);
     EXPECT_LE(stars[1], stars[2]);
     EXPECT_FALSE(report["stars_written"].get<bool>());
-    EXPECT_NE(readFile().find("\"stars\": [1, 2, 3]"), std::string::npos) << "a plain check writes nothing";
+    EXPECT_NE(level.read().find("\"stars\": [1, 2, 3]"), std::string::npos) << "a plain check writes nothing";
 
     const RunResult wrote = runAbalike("check " + file + " --solve --player-runs 4 --write-stars");
     ASSERT_EQ(wrote.exitCode, 0) << wrote.err;
     EXPECT_NE(wrote.out.find("written into the file"), std::string::npos) << wrote.out;
     const std::string expected = "\"stars\": [" + std::to_string(stars[0]) + ", " + std::to_string(stars[1]) + ", " +
                                  std::to_string(stars[2]) + "]}";
-    EXPECT_NE(readFile().find(expected), std::string::npos) << readFile();
-    EXPECT_NE(readFile().find("\"birds\": [\"red\", \"red\"],\n  \"pigs\""), std::string::npos)
+    EXPECT_NE(level.read().find(expected), std::string::npos) << level.read();
+    EXPECT_NE(level.read().find("\"birds\": [\"red\", \"red\"],\n  \"pigs\""), std::string::npos)
         << "every other byte as it was";
 
     const RunResult alone = runAbalike("check " + file + " --write-stars");
@@ -267,27 +281,25 @@ TEST(CheckCli, FixWorksInRoundsAndSaysWhatItCouldNotFix)
 {
     // Stacked floaters (1 cm, then 3 cm above that): both set down, bottom up, and the level stands. A block on
     // nothing has no fix: --fix says so, and why.
-    const auto path =
-        std::filesystem::temp_directory_path() / ("abalike-check-fix-rounds-" + std::to_string(::getpid()) + ".json");
-    std::ofstream(path) << R"({"format": 1, "id": "rounds", "title": "Rounds", "slingshot": {"x": 0, "y": 1.5},
-  "birds": ["red"], "pigs": [{"type": "small", "x": 24, "y": 0.25}],
-  "blocks": [{"material": "wood", "x": 20, "y": 0.51, "w": 1, "h": 1},
-             {"material": "wood", "x": 20, "y": 1.54, "w": 1, "h": 1}]}
-)";
-    const RunResult stacked = runAbalike("check --fix " + path.string());
+    const ScratchLevel level("check-fix-rounds");
+    const auto withBlocks = [](const std::string& blocks)
+    {
+        return R"({"format": 1, "id": "rounds", "title": "Rounds", "slingshot": {"x": 0, "y": 1.5},
+  "birds": ["red"], "pigs": [{"type": "small", "x": 24, "y": 0.25}], "blocks": [)" +
+               blocks + "]}\n";
+    };
+    level.write(withBlocks(R"({"material": "wood", "x": 20, "y": 0.51, "w": 1, "h": 1},
+             {"material": "wood", "x": 20, "y": 1.54, "w": 1, "h": 1})"));
+    const RunResult stacked = runAbalike("check --fix " + level.path());
     EXPECT_EQ(stacked.exitCode, 0) << stacked.out << stacked.err;
     EXPECT_NE(stacked.out.find("/blocks/0/y: 0.51 -> 0.5"), std::string::npos) << stacked.out;
     EXPECT_NE(stacked.out.find("/blocks/1/y: 1.54 -> 1.5"), std::string::npos) << stacked.out;
     EXPECT_NE(stacked.out.find("PASS "), std::string::npos) << stacked.out;
 
-    std::ofstream(path) << R"({"format": 1, "id": "rounds", "title": "Rounds", "slingshot": {"x": 0, "y": 1.5},
-  "birds": ["red"], "pigs": [{"type": "small", "x": 24, "y": 0.25}],
-  "blocks": [{"material": "wood", "x": 20, "y": 3, "w": 1, "h": 1}]}
-)";
-    const RunResult nothing = runAbalike("check --fix " + path.string());
-    std::filesystem::remove(path);
+    level.write(withBlocks(R"({"material": "wood", "x": 20, "y": 3, "w": 1, "h": 1})"));
+    const RunResult nothing = runAbalike("check --fix " + level.path());
     EXPECT_EQ(nothing.exitCode, 2);
-    EXPECT_NE(nothing.out.find("could not fix " + path.string() + ": /blocks/0: falls: nothing is under it"),
+    EXPECT_NE(nothing.out.find("could not fix " + level.path() + ": /blocks/0: falls: nothing is under it"),
               std::string::npos)
         << nothing.out;
 }

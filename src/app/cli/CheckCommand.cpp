@@ -166,59 +166,46 @@ std::vector<std::string> fixRestFindings(const std::string& file, LevelDef& leve
         const std::vector<RestFinding> findings = restFindings(level, Catalog::builtin(), rest);
         std::string text = readText(file);
         bool changed = false;
+        // One number of one body ("/blocks/3" and "y"), in the level and in the file, with why it changed.
+        const auto set =
+            [&](const std::string& body, const char* key, std::optional<double> value, const std::string& why)
+        {
+            const bool pig = body.rfind("/pigs/", 0) == 0;
+            const auto i = static_cast<std::size_t>(std::stoi(body.substr(pig ? 6 : 8)));
+            const std::string_view name(key);
+            double& field = name == "y"   ? (pig ? level.pigs[i].y : level.blocks[i].y)
+                            : name == "x" ? (pig ? level.pigs[i].x : level.blocks[i].x)
+                                          : level.blocks[i].angleDeg;
+            if (!value || std::abs(*value - field) < 1e-9)
+                return;
+            const std::string number = shortest(*value);
+            try
+            {
+                text = replaceNumber(text, body + "/" + key, number);
+            }
+            catch (const std::invalid_argument&)
+            {
+                return; // not written in the file (a default): left to the designer, who reads the finding
+            }
+            changes.push_back(body + "/" + key + ": " + shortest(field) + " -> " + number + " (" + why + ")");
+            field = *value;
+            changed = true;
+        };
         for (const RestFinding& finding : findings)
         {
-            const bool pig = finding.pointer.rfind("/pigs/", 0) == 0;
-            const auto index = static_cast<std::size_t>(std::stoi(finding.pointer.substr(pig ? 6 : 8)));
-            const auto set = [&](const char* key, std::optional<double> value, double& field)
-            {
-                if (!value || std::abs(*value - field) < 1e-9)
-                    return;
-                const std::string number = shortest(*value);
-                try
-                {
-                    text = replaceNumber(text, finding.pointer + "/" + key, number);
-                }
-                catch (const std::invalid_argument&)
-                {
-                    return; // not written in the file (a default): left to the designer, who reads the finding
-                }
-                changes.push_back(finding.pointer + "/" + key + ": " + shortest(field) + " -> " + number + " (" +
-                                  finding.what.substr(0, finding.what.find(';')) + ")");
-                field = *value;
-                changed = true;
-            };
+            const std::string why = finding.what.substr(0, finding.what.find(';'));
             if (finding.groupX)
             {
                 // A leaning stack: the body and the ones on it, straight up.
-                std::vector<std::string> group = finding.consequences;
-                group.insert(group.begin(), finding.pointer);
-                for (const std::string& member : group)
-                {
-                    const bool memberIsPig = member.rfind("/pigs/", 0) == 0;
-                    const auto i = static_cast<std::size_t>(std::stoi(member.substr(memberIsPig ? 6 : 8)));
-                    double& x = memberIsPig ? level.pigs[i].x : level.blocks[i].x;
-                    if (std::abs(*finding.groupX - x) < 1e-9)
-                        continue;
-                    const std::string number = shortest(*finding.groupX);
-                    text = replaceNumber(text, member + "/x", number);
-                    changes.push_back(member + "/x: " + shortest(x) + " -> " + number + " (stacked straight)");
-                    x = *finding.groupX;
-                    changed = true;
-                }
+                set(finding.pointer, "x", finding.groupX, "stacked straight");
+                for (const std::string& member : finding.consequences)
+                    set(member, "x", finding.groupX, "stacked straight");
                 continue;
             }
-            if (pig)
-            {
-                set("y", finding.fixY, level.pigs[index].y);
-                set("x", finding.fixX, level.pigs[index].x);
-            }
-            else
-            {
-                set("y", finding.fixY, level.blocks[index].y);
-                set("x", finding.fixX, level.blocks[index].x);
-                set("angle_deg", finding.fixAngleDeg, level.blocks[index].angleDeg);
-            }
+            set(finding.pointer, "y", finding.fixY, why);
+            set(finding.pointer, "x", finding.fixX, why);
+            if (finding.pointer.rfind("/blocks/", 0) == 0)
+                set(finding.pointer, "angle_deg", finding.fixAngleDeg, why);
         }
         if (!changed)
         {

@@ -120,8 +120,9 @@ std::vector<std::string> wrapWholeSentences(const sf::Font& font, std::string_vi
     {
         std::size_t next = text.size();
         for (const char* stop : {". ", "? ", "! "})
-            next = std::min(next, text.find(stop, end + 1) == std::string_view::npos ? text.size()
-                                                                                     : text.find(stop, end + 1) + 1);
+            if (const std::size_t at = text.find(stop, end + 1); at != std::string_view::npos)
+                next = std::min(next, at + 1); // the sentence keeps its stop
+
         std::vector<std::string> lines = wrapText(font, text.substr(0, next), size, maxWidth);
         if (lines.size() > maxLines)
             break;

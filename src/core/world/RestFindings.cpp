@@ -1,3 +1,5 @@
+#include "world/Fixtures.hpp"
+
 #include <abalike/level/LevelText.hpp>
 #include <abalike/world/RestFindings.hpp>
 #include <algorithm>
@@ -106,22 +108,8 @@ std::string RestFinding::message() const
 
 SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig, int index)
 {
-    Bounds self;
-    bool round = false;
-    if (pig)
-    {
-        const PigDef& p = level.pigs[static_cast<std::size_t>(index)];
-        const PigType* type = catalog.findPig(p.type);
-        const double r = type != nullptr ? type->radiusM : 0.25;
-        self = {p.x - r, p.x + r, p.y - r, p.y + r};
-        round = true;
-    }
-    else
-    {
-        const BlockDef& b = level.blocks[static_cast<std::size_t>(index)];
-        self = blockBounds(b);
-        round = b.shape == BlockShape::Circle;
-    }
+    const Bounds self = bodyBounds(level, catalog, pig, index);
+    const bool round = pig || level.blocks[static_cast<std::size_t>(index)].shape == BlockShape::Circle;
     // A round body touches only under its centre; a flat one anywhere along its bottom.
     const double x = 0.5 * (self.left + self.right);
     const double from = round ? x - 1e-6 : self.left;
@@ -215,14 +203,7 @@ double massOf(const LevelDef& level, const Catalog& catalog, bool pig, int index
     }
     const BlockDef& b = level.blocks[static_cast<std::size_t>(index)];
     const Material* material = catalog.findMaterial(b.material);
-    const double density = material != nullptr ? material->densityKgPerM2 : 1.0;
-    if (b.shape == BlockShape::Circle)
-        return density * std::numbers::pi * 0.25 * b.widthM * b.widthM;
-    if (b.shape == BlockShape::Triangle)
-        return density * 0.5 * b.widthM * b.heightM;
-    if (b.shape == BlockShape::HollowBox)
-        return density * (b.widthM * b.heightM - (b.widthM - 2 * b.wallM) * (b.heightM - 2 * b.wallM));
-    return density * b.widthM * b.heightM;
+    return (material != nullptr ? material->densityKgPerM2 : 1.0) * designedArea(b);
 }
 
 /// A group that moves with nothing wrong with any one body: a stack leaning as a whole. Its centre of mass past the
