@@ -26,6 +26,7 @@ int main(int argc, char** argv)
     commands["chart"] = addChartCommand(app);
     commands["fmt"] = addFmtCommand(app);
     commands["import"] = addImportCommand(app);
+    commands["generate"] = addGenerateCommand(app);
 
     // CLI11 would only say "a subcommand is required" for `abalike fly`; name the word it did not know.
     if (argc > 1 && argv[1][0] != '-' && commands.count(argv[1]) == 0)

@@ -21,5 +21,6 @@ CommandRunner addWalkthroughCommand(CLI::App& app);
 CommandRunner addChartCommand(CLI::App& app);
 CommandRunner addFmtCommand(CLI::App& app);
 CommandRunner addImportCommand(CLI::App& app);
+CommandRunner addGenerateCommand(CLI::App& app);
 
 } // namespace abalike::app

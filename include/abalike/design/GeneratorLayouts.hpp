@@ -1,0 +1,45 @@
+#pragma once
+
+#include <abalike/design/Generator.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace abalike
+{
+
+/// The generator's random source: SplitMix64 over (seed, stream). It gives the same numbers on every platform, which
+/// the standard library's distributions do not promise, so a seed names one level everywhere.
+class GeneratorRng
+{
+public:
+    GeneratorRng(std::uint64_t seed, std::uint64_t stream);
+
+    std::uint64_t next();
+    /// In [lo, hi), rounded to whole centimetres so the level file reads well.
+    double metres(double lo, double hi);
+    /// In [0, n).
+    std::size_t index(std::size_t n);
+    /// True with probability one half.
+    bool coin() { return (next() >> 63) != 0; }
+
+private:
+    std::uint64_t m_state;
+};
+
+/// Lays out a level of a kind the source draws: castle parts placed left to right from 20-30 m, on the ground or on
+/// terrain, at most GeneratorOptions::kMaxBodies blocks and pigs, at least one pig. Returns the kind.
+GeneratedKind layOut(LevelDef& level, const std::vector<GeneratorPart>& parts, GeneratorRng& rng,
+                     const Catalog& catalog);
+
+/// Sets the level's gravity, air and look to a world's (earth, moon, mars, titan, jupiter; GravityPresets), its band
+/// scaled with gravity so the arcs stay on screen (the campaign's Moon and Jupiter levels do the same) but never below
+/// a third of Earth's, so a full pull still breaks wood. Earth keeps the format's defaults (still air). Throws
+/// std::invalid_argument for another name.
+void applyGeneratorWorld(LevelDef& level, const std::string& world);
+
+/// A hint for a level of this kind: what its structure invites, with no number to go stale.
+std::string kindHint(GeneratedKind kind);
+
+} // namespace abalike

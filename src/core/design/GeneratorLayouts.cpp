@@ -1,0 +1,349 @@
+#include <abalike/design/GeneratorLayouts.hpp>
+
+#include <abalike/flight/GravityPresets.hpp>
+#include <abalike/level/WorldTheme.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace abalike
+{
+
+GeneratorRng::GeneratorRng(std::uint64_t seed, std::uint64_t stream)
+    : m_state(seed * 0x9E3779B97F4A7C15ull ^ (stream + 1) * 0xD1B54A32D192ED03ull)
+{
+}
+
+std::uint64_t GeneratorRng::next()
+{
+    // SplitMix64 (Steele, Lea and Flood 2014): a 64-bit counter through a fixed mixing function.
+    std::uint64_t z = (m_state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+double GeneratorRng::metres(double lo, double hi)
+{
+    const double unit = static_cast<double>(next() >> 11) * 0x1.0p-53; // [0, 1), exact on every platform
+    return std::round((lo + unit * (hi - lo)) * 100.0) / 100.0;
+}
+
+std::size_t GeneratorRng::index(std::size_t n)
+{
+    return static_cast<std::size_t>(next() % n);
+}
+
+const char* generatedKindName(GeneratedKind kind)
+{
+    switch (kind)
+    {
+    case GeneratedKind::Towers:
+        return "towers";
+    case GeneratedKind::Castle:
+        return "castle";
+    case GeneratedKind::Cages:
+        return "cages";
+    case GeneratedKind::Pyramid:
+        return "pyramid";
+    case GeneratedKind::Bridge:
+        return "bridge";
+    case GeneratedKind::Hill:
+        return "hill";
+    case GeneratedKind::Island:
+        return "island";
+    case GeneratedKind::TntStore:
+        return "tnt store";
+    }
+    return "towers";
+}
+
+const std::vector<GeneratedKind>& generatedKinds()
+{
+    static const std::vector<GeneratedKind> kinds{GeneratedKind::Towers,  GeneratedKind::Castle,  GeneratedKind::Cages,
+                                                  GeneratedKind::Pyramid, GeneratedKind::Bridge,  GeneratedKind::Hill,
+                                                  GeneratedKind::Island,  GeneratedKind::TntStore};
+    return kinds;
+}
+
+std::string kindHint(GeneratedKind kind)
+{
+    switch (kind)
+    {
+    case GeneratedKind::Towers:
+        return "The towers stand close: hit the first one high and it falls onto the next.";
+    case GeneratedKind::Castle:
+        return "Stone walls hold; knock out what they stand on, or bring the black bird.";
+    case GeneratedKind::Cages:
+        return "Each cage is light: a flat shot can go through several.";
+    case GeneratedKind::Pyramid:
+        return "The pyramids shield the frames: go over them or push them into the frames.";
+    case GeneratedKind::Bridge:
+        return "Knock out a column and the bridge comes down on the pig beneath.";
+    case GeneratedKind::Hill:
+        return "The structure stands on a hill: aim a little higher than on flat ground.";
+    case GeneratedKind::Island:
+        return "The island floats: what you push off its edge falls a long way.";
+    case GeneratedKind::TntStore:
+        return "Hit the TNT crate: its blast breaks what stands around it.";
+    }
+    return "";
+}
+
+namespace
+{
+
+/// Fewer bodies than this and a layout gets neighbours (the campaign asks 15 of its levels; parts come in threes).
+constexpr int kMinBodies = 12;
+
+struct Extent
+{
+    double left = 0.0;
+    double right = 0.0;
+};
+
+/// The horizontal extent of a part's blocks and pigs.
+Extent extentOf(const LevelDef& part, const Catalog& catalog)
+{
+    Extent e{1e9, -1e9};
+    for (const BlockDef& b : part.blocks)
+    {
+        const double a = b.angleDeg * std::numbers::pi / 180.0;
+        const double half = 0.5 * (std::abs(std::cos(a)) * b.widthM + std::abs(std::sin(a)) * b.heightM);
+        e.left = std::min(e.left, b.x - half);
+        e.right = std::max(e.right, b.x + half);
+    }
+    for (const PigDef& p : part.pigs)
+    {
+        const PigType* type = catalog.findPig(p.type);
+        const double r = type != nullptr ? type->radiusM : 0.5;
+        e.left = std::min(e.left, p.x - r);
+        e.right = std::max(e.right, p.x + r);
+    }
+    return e;
+}
+
+int bodiesOf(const LevelDef& level)
+{
+    return static_cast<int>(level.blocks.size() + level.pigs.size());
+}
+
+/// Shifted coordinates keep the parts' own decimals (0.125, 2.6): rounding to 0.1 mm drops the float noise of the
+/// sum (1.8800000000000001) and nothing else.
+double tidy(double metres)
+{
+    return std::round(metres * 1e4) / 1e4;
+}
+
+/// Builds a level from left to right out of named parts.
+class Builder
+{
+public:
+    Builder(LevelDef& level, const std::vector<GeneratorPart>& parts, const Catalog& catalog, double start)
+        : m_level(level), m_parts(parts), m_catalog(catalog), m_x(start)
+    {
+    }
+
+    /// The part of that name, or null when the folder has none.
+    const LevelDef* part(const std::string& name) const
+    {
+        for (const GeneratorPart& p : m_parts)
+            if (p.name == name)
+                return &p.shape;
+        return nullptr;
+    }
+
+    /// Places the part with its left edge at the builder's x plus gap, on a surface at base; false (and nothing
+    /// placed) when the part is missing or would take the level over the body budget.
+    bool place(const std::string& name, double gap, double base = 0.0)
+    {
+        const LevelDef* shape = part(name);
+        if (shape == nullptr || bodiesOf(m_level) + bodiesOf(*shape) > GeneratorOptions::kMaxBodies)
+            return false;
+        const Extent e = extentOf(*shape, m_catalog);
+        const double dx = m_x + gap - e.left;
+        for (BlockDef b : shape->blocks)
+        {
+            b.x = tidy(b.x + dx);
+            b.y = tidy(b.y + base);
+            m_level.blocks.push_back(b);
+        }
+        for (PigDef p : shape->pigs)
+        {
+            p.x = tidy(p.x + dx);
+            p.y = tidy(p.y + base);
+            m_level.pigs.push_back(p);
+        }
+        m_x = tidy(e.right + dx);
+        return true;
+    }
+
+    /// Width of the part of that name (0 when missing).
+    double widthOf(const std::string& name) const
+    {
+        const LevelDef* shape = part(name);
+        if (shape == nullptr)
+            return 0.0;
+        const Extent e = extentOf(*shape, m_catalog);
+        return e.right - e.left;
+    }
+
+    double x() const { return m_x; }
+    void advance(double dx) { m_x += dx; }
+    LevelDef& level() { return m_level; }
+
+private:
+    LevelDef& m_level;
+    const std::vector<GeneratorPart>& m_parts;
+    const Catalog& m_catalog;
+    double m_x;
+};
+
+const std::string& pick(GeneratorRng& rng, const std::vector<std::string>& names)
+{
+    return names[rng.index(names.size())];
+}
+
+void towers(Builder& b, GeneratorRng& rng)
+{
+    // Closer than they are tall, so each can fall onto the next.
+    const std::size_t count = 2 + rng.index(2);
+    for (std::size_t i = 0; i < count; ++i)
+        b.place(pick(rng, {"tower-3", "ice-tower-2", "keep-2", "column-4"}), i == 0 ? 0.0 : rng.metres(0.5, 1.4));
+}
+
+void castle(Builder& b, GeneratorRng& rng)
+{
+    b.place(pick(rng, {"gate", "cage", "frame", "tnt-on-frame"}), 0.0);
+    if (!b.place(pick(rng, {"fortress", "castle", "keep-2"}), rng.metres(1.5, 3.0)))
+        b.place("keep-2", rng.metres(1.5, 3.0));
+}
+
+void cages(Builder& b, GeneratorRng& rng)
+{
+    const std::size_t count = 3 + rng.index(2);
+    for (std::size_t i = 0; i < count; ++i)
+        b.place(pick(rng, {"cage", "frame", "double-frame", "roofed-frame"}), i == 0 ? 0.0 : rng.metres(0.8, 2.5));
+}
+
+void pyramid(Builder& b, GeneratorRng& rng)
+{
+    b.place("pyramid-3", 0.0);
+    b.place(pick(rng, {"frame", "roofed-frame", "double-frame"}), rng.metres(0.8, 2.0));
+    if (rng.coin())
+        b.place("pyramid-3", rng.metres(0.8, 2.0));
+    b.place(pick(rng, {"frame", "roofed-frame", "cage"}), rng.metres(0.8, 2.0));
+}
+
+void bridge(Builder& b, GeneratorRng& rng)
+{
+    // Two stone columns, a wood plank across their tops, a pig on it and a pig beneath.
+    const double span = rng.metres(2.6, 4.0);
+    const double left = b.x();
+    if (!b.place("column-4", 0.0) || !b.place("column-4", span))
+        return;
+    const double width = b.x() - left;
+    const double top = 3.2; // column-4: four 0.8 m stone blocks
+    LevelDef& level = b.level();
+    const double middle = tidy(left + 0.5 * width);
+    level.blocks.push_back({BlockShape::Box, "wood", middle, top + 0.125, tidy(width), 0.25, 0.0, 0.1});
+    level.pigs.push_back({"small", middle, top + 0.25 + 0.25});
+    level.pigs.push_back({"medium", middle, 0.35});
+    if (rng.coin())
+        b.place(pick(rng, {"frame", "cage"}), rng.metres(1.0, 2.5));
+}
+
+/// A structure on terrain: a hill from the ground, or an island floating above it.
+void raised(Builder& b, GeneratorRng& rng, bool island)
+{
+    const std::string& name = pick(rng, {"tower-3", "keep-2", "roofed-frame", "double-frame", "gate"});
+    const double margin = rng.metres(1.0, 2.0);
+    const double width = b.widthOf(name) + 2.0 * margin;
+    const double height = island ? rng.metres(2.5, 4.5) : rng.metres(1.5, 3.0);
+    const double thickness = island ? 1.0 : height;
+    TerrainDef ground;
+    ground.x = tidy(b.x() + 0.5 * width);
+    ground.y = tidy(height - 0.5 * thickness);
+    ground.widthM = tidy(width);
+    ground.heightM = thickness;
+    b.level().terrain.push_back(ground);
+    b.place(name, margin, height);
+    b.advance(margin);
+    if (!island && rng.coin())
+        b.place(pick(rng, {"frame", "cage"}), rng.metres(1.0, 2.0));
+}
+
+void tntStore(Builder& b, GeneratorRng& rng)
+{
+    // Neighbours within the crate's blast.
+    b.place(pick(rng, {"frame", "tower-3", "double-frame"}), 0.0);
+    b.place("tnt-on-frame", rng.metres(0.5, 1.5));
+    b.place(pick(rng, {"frame", "cage", "roofed-frame"}), rng.metres(0.5, 1.5));
+}
+
+} // namespace
+
+void applyGeneratorWorld(LevelDef& level, const std::string& world)
+{
+    if (world == "earth")
+        return; // the format's defaults: Earth's gravity in still air, as most campaign levels
+    const std::optional<WorldTheme> theme = parseWorldTheme(world);
+    if (!theme)
+        throw std::invalid_argument("unknown world \"" + world + "\" (expected earth, moon, mars, titan or jupiter)");
+    for (const GravityPreset& preset : gravityPresets())
+    {
+        std::string name(preset.name);
+        std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+        if (name != world)
+            continue;
+        level.environment.gravity = preset.gravity;
+        level.environment.airDensity = preset.airDensity;
+        level.slingshot.maxForceN = SlingshotDef{}.maxForceN * std::clamp(preset.gravity / 9.81, 1.0 / 3.0, 3.0);
+    }
+    level.theme = theme;
+}
+
+GeneratedKind layOut(LevelDef& level, const std::vector<GeneratorPart>& parts, GeneratorRng& rng,
+                     const Catalog& catalog)
+{
+    const GeneratedKind kind = generatedKinds()[rng.index(generatedKinds().size())];
+    Builder b(level, parts, catalog, rng.metres(20.0, 30.0));
+    switch (kind)
+    {
+    case GeneratedKind::Towers:
+        towers(b, rng);
+        break;
+    case GeneratedKind::Castle:
+        castle(b, rng);
+        break;
+    case GeneratedKind::Cages:
+        cages(b, rng);
+        break;
+    case GeneratedKind::Pyramid:
+        pyramid(b, rng);
+        break;
+    case GeneratedKind::Bridge:
+        bridge(b, rng);
+        break;
+    case GeneratedKind::Hill:
+        raised(b, rng, false);
+        break;
+    case GeneratedKind::Island:
+        raised(b, rng, true);
+        break;
+    case GeneratedKind::TntStore:
+        tntStore(b, rng);
+        break;
+    }
+    // Every level has a pig and enough to knock down: small layouts get neighbours on the ground beyond.
+    while (bodiesOf(level) < kMinBodies)
+        if (!b.place(pick(rng, {"frame", "cage", "pyramid-3", "double-frame"}), rng.metres(1.0, 2.5)))
+            break;
+    if (level.pigs.empty() && !b.place("frame", rng.metres(1.0, 2.0)))
+        throw std::invalid_argument("the castle parts have no pig to place (levels/parts/frame.json is missing)");
+    return kind;
+}
+
+} // namespace abalike
