@@ -105,6 +105,15 @@ TEST(GenerateCli, BadOptionsSayWhatWasExpected)
         EXPECT_EQ(run.exitCode, 2) << c.args;
         EXPECT_NE(run.err.find(c.says), std::string::npos) << c.args << ": " << run.err;
     }
+    // `play --generated SEED[:L]` names a generated level; bad text is refused before anything is generated.
+    for (const char* name : {"6:x", "abc", "6:1.5", "-3"})
+    {
+        const RunResult run = runAbalike(std::string("play --generated ") + name);
+        EXPECT_EQ(run.exitCode, 2) << name;
+        EXPECT_NE(run.err.find("--generated: expected SEED or SEED:LOSS_SHARE (e.g. 4711 or 4711:0.3)"),
+                  std::string::npos)
+            << name << ": " << run.err;
+    }
 }
 
 } // namespace

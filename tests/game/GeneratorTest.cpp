@@ -88,6 +88,27 @@ TEST(Generator, ALevelIsVerifiedAndTheSameSeedGivesTheSameBytesWhateverTheThread
     EXPECT_EQ(one.level.title, "TNT store 6");
 }
 
+TEST(Generator, LayoutDistanceIsZeroForTheSameLayoutMovedAndGrowsWithDifference)
+{
+    LevelDef a;
+    a.blocks.push_back({BlockShape::Box, "wood", 20.0, 1.0, 0.25, 2.0, 0.0, 0.1});
+    a.pigs.push_back({"small", 21.0, 0.25});
+    LevelDef moved = a;
+    for (BlockDef& b : moved.blocks)
+        b.x += 7.3;
+    for (PigDef& p : moved.pigs)
+        p.x += 7.3;
+    EXPECT_DOUBLE_EQ(layoutDistance(a, moved, Catalog::builtin()), 0.0);
+    LevelDef taller = a;
+    taller.blocks.push_back({BlockShape::Box, "wood", 20.0, 3.0, 0.25, 2.0, 0.0, 0.1});
+    const double grown = layoutDistance(a, taller, Catalog::builtin());
+    EXPECT_GT(grown, 0.3);
+    EXPECT_LT(grown, 0.7); // half its cells are the first one's
+    LevelDef apart;
+    apart.blocks.push_back({BlockShape::Box, "stone", 20.0, 5.0, 0.25, 2.0, 0.0, 0.1}); // in the air: no cell shared
+    EXPECT_DOUBLE_EQ(layoutDistance(a, apart, Catalog::builtin()), 1.0);
+}
+
 TEST(Generator, TheWorldSetsGravityAirLookAndBand)
 {
     LevelDef moon;

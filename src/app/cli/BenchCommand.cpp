@@ -49,6 +49,9 @@ CommandRunner addBenchCommand(CLI::App& app)
          "and 1920x1080, every overlay on",
          runFramesBench},
         {"feel", "break-through, toppling defeats and the pace of turns over the campaign", runFeelBench},
+        {"generate",
+         "time per verified generated level, attempts rejected by reason, kinds, layout distance and toppling",
+         runGenerateBench},
     };
     for (const auto& suite : suites)
     {
@@ -59,6 +62,8 @@ CommandRunner addBenchCommand(CLI::App& app)
             sub->add_option("--scene", args->options.scenes,
                             "only this scene: a level id (1-3), a lesson id (lesson-angle) or a stress scene "
                             "(wall-20x50-mixed); repeat for more");
+        if (std::string_view(suite.name) == "generate")
+            sub->add_option("--seeds", args->options.seeds, "levels to generate, seeds 1 to N (default 20)");
         sub->callback([chosen, run = suite.run] { *chosen = run; });
     }
     return [args, chosen]

@@ -1,5 +1,6 @@
 #include "cli/Arguments.hpp"
 #include "cli/Commands.hpp"
+#include "cli/GeneratedLevelFile.hpp"
 #include "cli/UsageError.hpp"
 #include "cli/WindowOptions.hpp"
 #include "input/ScriptedInput.hpp"
@@ -31,12 +32,20 @@ struct PlayArgs
     std::string level;
     std::string pack;
     std::string levelId;
+    std::string generated;
     std::vector<std::string> shots;
     WindowArgs window;
 };
 
-int runPlayCommand(const PlayArgs& a)
+int runPlayCommand(PlayArgs a)
 {
+    if (!a.generated.empty())
+    {
+        if (!a.level.empty() || !a.pack.empty() || !a.levelId.empty())
+            throw UsageError(
+                "--generated: give a generated level, a level file, a level number or a pack, one of them");
+        a.level = generatedLevelFile(parseGeneratedLevelName(a.generated)).string();
+    }
     AppOptions options;
     options.levelPath = a.level;
     options.campaignPath = campaignManifest();
@@ -159,6 +168,9 @@ CommandRunner addPlayCommand(CLI::App& app)
     cmd->add_option("--pack", args->pack,
                     "a level pack (a folder with a campaign.json): its episodes follow the campaign's, and play opens "
                     "its first unfinished level");
+    cmd->add_option("--generated", args->generated,
+                    "SEED[:LOSS_SHARE]: the level `abalike generate --seed SEED --loss-share L` makes (default 0.5), "
+                    "generated once and kept in the cache folder");
     cmd->add_option("--shot", args->shots,
                     "ANGLE,SPEED[,ABILITY_AT_S] to fire when a bird is ready; repeat for more (with no level: the "
                     "campaign's first level)")

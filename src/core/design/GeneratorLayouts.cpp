@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <set>
 #include <stdexcept>
 
 namespace abalike
@@ -303,6 +304,57 @@ void applyGeneratorWorld(LevelDef& level, const std::string& world)
         level.slingshot.maxForceN = SlingshotDef{}.maxForceN * std::clamp(preset.gravity / 9.81, 1.0 / 3.0, 3.0);
     }
     level.theme = theme;
+}
+
+namespace
+{
+
+/// The occupied 0.5 m cells of a level, as (column, row) from its leftmost body.
+std::set<std::pair<int, int>> occupancy(const LevelDef& level, const Catalog& catalog)
+{
+    constexpr double kCell = 0.5;
+    struct Box
+    {
+        double left, right, bottom, top;
+    };
+    std::vector<Box> boxes;
+    for (const BlockDef& b : level.blocks)
+    {
+        const double a = b.angleDeg * std::numbers::pi / 180.0;
+        const double hw = 0.5 * (std::abs(std::cos(a)) * b.widthM + std::abs(std::sin(a)) * b.heightM);
+        const double hh = 0.5 * (std::abs(std::sin(a)) * b.widthM + std::abs(std::cos(a)) * b.heightM);
+        boxes.push_back({b.x - hw, b.x + hw, b.y - hh, b.y + hh});
+    }
+    for (const PigDef& p : level.pigs)
+    {
+        const PigType* type = catalog.findPig(p.type);
+        const double r = type != nullptr ? type->radiusM : 0.5;
+        boxes.push_back({p.x - r, p.x + r, p.y - r, p.y + r});
+    }
+    double origin = 1e9;
+    for (const Box& box : boxes)
+        origin = std::min(origin, box.left);
+    std::set<std::pair<int, int>> cells;
+    for (const Box& box : boxes)
+        for (int c = static_cast<int>(std::floor((box.left - origin) / kCell)); (c + 0.5) * kCell + origin <= box.right;
+             ++c)
+            for (int r = static_cast<int>(std::floor(box.bottom / kCell)); (r + 0.5) * kCell <= box.top; ++r)
+                if ((c + 0.5) * kCell + origin >= box.left && (r + 0.5) * kCell >= box.bottom)
+                    cells.insert({c, r});
+    return cells;
+}
+
+} // namespace
+
+double layoutDistance(const LevelDef& a, const LevelDef& b, const Catalog& catalog)
+{
+    const auto ca = occupancy(a, catalog);
+    const auto cb = occupancy(b, catalog);
+    std::size_t common = 0;
+    for (const auto& cell : ca)
+        common += cb.count(cell);
+    const std::size_t either = ca.size() + cb.size() - common;
+    return either == 0 ? 0.0 : 1.0 - static_cast<double>(common) / static_cast<double>(either);
 }
 
 GeneratedKind layOut(LevelDef& level, const std::vector<GeneratorPart>& parts, GeneratorRng& rng,
