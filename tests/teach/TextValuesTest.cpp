@@ -129,6 +129,9 @@ TEST(TextValues, ValuesAreTheLevelsOwnPhysicsRecomputedFromFirstPrinciples)
     EXPECT_DOUBLE_EQ(textValue(level, catalog, "areal_density", "ice"), 600.0 * catalog.slabDepthM());
     EXPECT_DOUBLE_EQ(textValue(level, catalog, "strength", "wood"), catalog.findMaterial("wood")->strengthNs);
     EXPECT_DOUBLE_EQ(textValue(level, catalog, "health", "helmet"), catalog.findPig("helmet")->healthNs);
+    // The white bird's egg, as the catalog has it (assets/catalog.json): 10 kg, 15 m/s faster downwards.
+    EXPECT_DOUBLE_EQ(textValue(level, catalog, "egg_mass", ""), 10.0);
+    EXPECT_DOUBLE_EQ(textValue(level, catalog, "egg_push", ""), 15.0);
 }
 
 TEST(TextValues, VacuumBestAngleFromAHeightMatchesTheClosedForm)

@@ -29,6 +29,8 @@ const std::vector<TextValueName>& textValueNames()
         {"calm_best_range", "BIRD", "best_range in this level's air with no wind (still air)", "m", 1},
         {"terminal", "BIRD", "terminal speed in this air, sqrt(m g / c) with c = 1/2 rho Cd A", "m/s", 1},
         {"boost", "", "speed the boost ability adds along the flight", "m/s", -1},
+        {"egg_mass", "", "mass of the egg the white bird drops", "kg", -1},
+        {"egg_push", "", "how much faster than the bird the egg leaves, downwards", "m/s", -1},
         {"g", "", "gravity", "m/s^2", -1},
         {"rho", "", "air density (0: vacuum)", "kg/m^3", -1},
         {"wind", "", "speed of the constant wind", "m/s", -1},
@@ -258,6 +260,13 @@ double evaluate(const LevelDef& level, const Catalog& seen, std::string_view nam
         if (boost == nullptr)
             fail("{boost}: no bird of the catalog has the boost ability");
         return boost->number("speed_gain_mps");
+    }
+    if (name == "egg_mass" || name == "egg_push")
+    {
+        const Ability* egg = seen.findAbility("egg");
+        if (egg == nullptr)
+            fail("{" + std::string(name) + "}: no bird of the catalog has the egg ability");
+        return egg->number(name == "egg_mass" ? "mass_kg" : "push_speed_mps");
     }
     if (name == "g")
         return air.gravity;
