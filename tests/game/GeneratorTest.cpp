@@ -88,6 +88,24 @@ TEST(Generator, ALevelIsVerifiedAndTheSameSeedGivesTheSameBytesWhateverTheThread
     EXPECT_EQ(one.level.title, "TNT store 6");
 }
 
+TEST(Generator, GenerateHereGivesEveryKindWithinItsSizeStanding)
+{
+    for (const GeneratedKind kind : generatedKinds())
+        for (const int size : {12, 20, 30})
+        {
+            SCOPED_TRACE(std::string(generatedKindName(kind)) + " " + std::to_string(size));
+            const std::optional<LevelDef> structure =
+                generateStructure(bundledParts(), kind, size, 3, Catalog::builtin());
+            ASSERT_TRUE(structure) << generatedKindName(kind) << " " << size;
+            const std::size_t bodies = structure->blocks.size() + structure->pigs.size();
+            EXPECT_LE(bodies, static_cast<std::size_t>(size)) << generatedKindName(kind);
+            EXPECT_GE(bodies, 3u) << generatedKindName(kind);
+            EXPECT_FALSE(structure->pigs.empty()) << generatedKindName(kind);
+            EXPECT_TRUE(checkRest(*structure).passed()) << generatedKindName(kind);
+            EXPECT_EQ(kind == GeneratedKind::Hill || kind == GeneratedKind::Island, !structure->terrain.empty());
+        }
+}
+
 TEST(Generator, LayoutDistanceIsZeroForTheSameLayoutMovedAndGrowsWithDifference)
 {
     LevelDef a;

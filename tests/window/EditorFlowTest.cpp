@@ -83,6 +83,50 @@ TEST_F(EditorFlow, AScriptedRunPlacesTwoBlocksAndAPigAndSaves)
     EXPECT_TRUE(std::filesystem::is_empty(data()));
 }
 
+TEST_F(EditorFlow, GenerateHereDropsAStandingStructureAsOneUndoStep)
+{
+    // Insert > Generate here > towers > medium (up to 20): a structure of the generator's layouts, verified to stand,
+    // dropped at the view's centre (the pointer is on the menu) onto the ground; Ctrl+S saves it. The second run
+    // generates two and takes the second back with one Ctrl+Z: what it saves is the first run's structure.
+    const auto generateAt = [](int frame)
+    {
+        std::string steps;
+        for (const auto& [dt, event] : std::vector<std::pair<int, std::string>>{
+                 {0, R"("mouse": "move", "x": 114, "y": 11)"},
+                 {1, R"("mouse": "press", "button": "left", "x": 114, "y": 11)"},
+                 {1, R"("mouse": "release", "button": "left", "x": 114, "y": 11)"},
+                 {3, R"("mouse": "move", "x": 130, "y": 126)"},
+                 {5, R"("mouse": "move", "x": 330, "y": 126)"},
+                 {7, R"("mouse": "move", "x": 460, "y": 146)"},
+                 {8, R"("mouse": "press", "button": "left", "x": 460, "y": 146)"},
+                 {8, R"("mouse": "release", "button": "left", "x": 460, "y": 146)"},
+                 {12, R"("mouse": "move", "x": 700, "y": 300)"}})
+            steps += "{\"frame\": " + std::to_string(frame + dt) + ", " + event + "},\n";
+        return steps;
+    };
+    const std::string file = m_dir.file("generated.json");
+    const GameRun run = edit("'" + file + "' --frames 24" + script("[" + generateAt(4) + R"(
+        {"frame": 18, "key": "S", "ctrl": true}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.values("editor-generate", "kind"), (std::vector<std::string>{"towers"}));
+    EXPECT_EQ(run.values("editor-generate", "error"), (std::vector<std::string>{"false"}));
+    const nlohmann::json saved = nlohmann::json::parse(readText(file));
+    const std::size_t bodies = saved["blocks"].size() + saved["pigs"].size();
+    EXPECT_GE(bodies, 8u);
+    EXPECT_LE(bodies, 20u);
+    EXPECT_GE(saved["pigs"].size(), 1u);
+    for (const auto& block : saved["blocks"])
+        EXPECT_GE(block["y"].get<double>() - 0.5 * block["h"].get<double>(), -1e-9) << "on the ground, not in it";
+
+    const std::string twice = m_dir.file("twice.json");
+    const GameRun undo = edit("'" + twice + "' --frames 44" + script("[" + generateAt(4) + generateAt(20) + R"(
+        {"frame": 36, "key": "Z", "ctrl": true},
+        {"frame": 38, "key": "S", "ctrl": true}])"));
+    ASSERT_EQ(undo.exitCode, 0) << undo.err;
+    EXPECT_EQ(undo.values("editor-generate", "seed"), (std::vector<std::string>{"1", "2"}));
+    EXPECT_EQ(nlohmann::json::parse(readText(twice))["blocks"], saved["blocks"]) << "one Ctrl+Z takes a structure";
+}
+
 TEST_F(EditorFlow, TypingFasterThanTheFramesLosesNoKey)
 {
     // The designer's finding: at about 12 frames a second, 20 Backspaces deleted one character and Ctrl+A then

@@ -3,6 +3,7 @@
 #include <abalike/design/Generator.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,10 +29,17 @@ private:
     std::uint64_t m_state;
 };
 
-/// Lays out a level of a kind the source draws: castle parts placed left to right from 20-30 m, on the ground or on
-/// terrain, at most GeneratorOptions::kMaxBodies blocks and pigs, at least one pig. Returns the kind.
+/// Lays out a level of a kind the source draws (or `only` that kind): castle parts placed left to right from 20-30 m,
+/// on the ground or on terrain, at most maxBodies blocks and pigs (at least 12 when the budget allows), at least one
+/// pig. Returns the kind.
 GeneratedKind layOut(LevelDef& level, const std::vector<GeneratorPart>& parts, GeneratorRng& rng,
-                     const Catalog& catalog);
+                     const Catalog& catalog, std::optional<GeneratedKind> only = {},
+                     int maxBodies = GeneratorOptions::kMaxBodies);
+
+/// A structure of one kind for the editor's "Generate here": laid out within maxBodies and verified to stand on its
+/// own (the rest test), trying the seed's next streams when one does not (at most 8). nullopt when none stands.
+std::optional<LevelDef> generateStructure(const std::vector<GeneratorPart>& parts, GeneratedKind kind, int maxBodies,
+                                          std::uint64_t seed, const Catalog& catalog);
 
 /// Sets the level's gravity, air and look to a world's (earth, moon, mars, titan, jupiter; GravityPresets), its band
 /// scaled with gravity so the arcs stay on screen (the campaign's Moon and Jupiter levels do the same) but never below

@@ -79,6 +79,35 @@ void EditorClipboard::insertPrefab(const std::filesystem::path& file)
     m_ctx.app.trace().write("editor-prefab", {{"file", file.string()}, {"error", m_ctx.messageIsError}});
 }
 
+void EditorClipboard::generateHere(GeneratedKind kind, int maxBodies)
+{
+    const std::string name = generatedKindName(kind);
+    try
+    {
+        if (m_parts.empty())
+            m_parts =
+                loadGeneratorParts((std::filesystem::path(levelsDirectory()) / "parts").string(), Catalog::builtin());
+        const std::optional<LevelDef> structure =
+            generateStructure(m_parts, kind, maxBodies, ++m_generated, Catalog::builtin());
+        std::string why = structure
+                              ? m_ctx.scene().insertBodies(*structure, m_tools.insertionPoint(), "Generate " + name)
+                              : "none of 8 layouts stood on its own";
+        const std::size_t bodies = structure ? structure->blocks.size() + structure->pigs.size() : 0;
+        m_ctx.message = why.empty() ? "Generated " + name + " " + std::to_string(m_generated) + ": " +
+                                          std::to_string(bodies) + " bodies, stands on its own"
+                                    : "Cannot generate " + name + ": " + why;
+        m_ctx.messageIsError = !why.empty();
+    }
+    catch (const std::exception& error) // a part that does not load, or no part with a pig in the budget
+    {
+        m_ctx.message = std::string("Cannot generate ") + name + ": " + error.what();
+        m_ctx.messageIsError = true;
+    }
+    m_ctx.app.trace().write(
+        "editor-generate",
+        {{"kind", name}, {"max_bodies", maxBodies}, {"seed", m_generated}, {"error", m_ctx.messageIsError}});
+}
+
 void EditorClipboard::saveSelectionAsPrefab()
 {
     const std::string text = m_ctx.scene().copySelection();

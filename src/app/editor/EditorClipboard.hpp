@@ -1,6 +1,11 @@
 #pragma once
 
+#include <abalike/design/Generator.hpp>
+#include <abalike/design/GeneratorLayouts.hpp>
+
+#include <cstdint>
 #include <filesystem>
+#include <vector>
 
 namespace abalike::app
 {
@@ -18,6 +23,9 @@ public:
     void copySelection(bool cut);
     void paste();
     void insertPrefab(const std::filesystem::path& file);
+    /// "Generate here": a structure of that kind within maxBodies (abalike generate's layouts), verified to stand on
+    /// its own, dropped at the insertion point onto the surface below as one undo step. Each call takes the next seed.
+    void generateHere(GeneratedKind kind, int maxBodies);
     void saveSelectionAsPrefab();
 
     /// The designer's own prefabs folder (empty when there is no data folder).
@@ -26,6 +34,8 @@ public:
 private:
     EditorContext& m_ctx;
     const SceneTools& m_tools;
+    std::vector<GeneratorPart> m_parts; ///< levels/parts/, read on the first "Generate here"
+    std::uint64_t m_generated = 0;      ///< structures generated so far: the next one's seed
 };
 
 } // namespace abalike::app

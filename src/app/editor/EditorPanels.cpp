@@ -187,6 +187,22 @@ void EditorPanels::prefabMenu()
     listFolder("Castle parts", std::filesystem::path(levelsDirectory()) / "parts");
     listFolder("Structures", std::filesystem::path(levelsDirectory()) / "structures");
     listFolder("My prefabs", EditorClipboard::userPrefabFolder());
+    ImGui::Separator();
+    // A new structure each time, of the generator's kinds, at the pointer.
+    if (ImGui::BeginMenu("Generate here"))
+    {
+        for (const GeneratedKind kind : generatedKinds())
+            if (ImGui::BeginMenu(generatedKindName(kind)))
+            {
+                for (const auto& [label, bodies] :
+                     {std::pair{"small (up to 12 bodies)", 12}, std::pair{"medium (up to 20)", 20},
+                      std::pair{"large (up to 30)", 30}})
+                    if (ImGui::MenuItem(label))
+                        m_clipboard.generateHere(kind, bodies);
+                ImGui::EndMenu();
+            }
+        ImGui::EndMenu();
+    }
     ImGui::EndMenu();
 }
 

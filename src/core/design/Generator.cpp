@@ -128,6 +128,21 @@ Measure measure(const LevelDef& level, const GeneratorOptions& options, const Ca
 
 } // namespace
 
+std::optional<LevelDef> generateStructure(const std::vector<GeneratorPart>& parts, GeneratedKind kind, int maxBodies,
+                                          std::uint64_t seed, const Catalog& catalog)
+{
+    for (std::uint64_t stream = 0; stream < 8; ++stream)
+    {
+        GeneratorRng rng(seed, stream);
+        LevelDef structure;
+        structure.sandbox = true;
+        layOut(structure, parts, rng, catalog, kind, maxBodies);
+        if (checkRest(structure, catalog).passed())
+            return structure;
+    }
+    return std::nullopt;
+}
+
 GeneratedLevel generateLevel(const std::vector<GeneratorPart>& parts, const GeneratorOptions& options,
                              const Catalog& catalog)
 {

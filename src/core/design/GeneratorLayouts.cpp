@@ -142,8 +142,9 @@ double tidy(double metres)
 class Builder
 {
 public:
-    Builder(LevelDef& level, const std::vector<GeneratorPart>& parts, const Catalog& catalog, double start)
-        : m_level(level), m_parts(parts), m_catalog(catalog), m_x(start)
+    Builder(LevelDef& level, const std::vector<GeneratorPart>& parts, const Catalog& catalog, double start,
+            int maxBodies)
+        : m_level(level), m_parts(parts), m_catalog(catalog), m_x(start), m_maxBodies(maxBodies)
     {
     }
 
@@ -161,7 +162,7 @@ public:
     bool place(const std::string& name, double gap, double base = 0.0)
     {
         const LevelDef* shape = part(name);
-        if (shape == nullptr || bodiesOf(m_level) + bodiesOf(*shape) > GeneratorOptions::kMaxBodies)
+        if (shape == nullptr || bodiesOf(m_level) + bodiesOf(*shape) > m_maxBodies)
             return false;
         const Extent e = extentOf(*shape, m_catalog);
         const double dx = m_x + gap - e.left;
@@ -200,19 +201,21 @@ private:
     const std::vector<GeneratorPart>& m_parts;
     const Catalog& m_catalog;
     double m_x;
+    int m_maxBodies;
 };
 
-const std::string& pick(GeneratorRng& rng, const std::vector<std::string>& names)
+std::string pick(GeneratorRng& rng, const std::vector<std::string>& names)
 {
     return names[rng.index(names.size())];
 }
 
 void towers(Builder& b, GeneratorRng& rng)
 {
-    // Closer than they are tall, so each can fall onto the next.
+    // Closer than they are tall, so each can fall onto the next; the first has pigs.
     const std::size_t count = 2 + rng.index(2);
-    for (std::size_t i = 0; i < count; ++i)
-        b.place(pick(rng, {"tower-3", "ice-tower-2", "keep-2", "column-4"}), i == 0 ? 0.0 : rng.metres(0.5, 1.4));
+    b.place(pick(rng, {"tower-3", "ice-tower-2", "keep-2"}), 0.0);
+    for (std::size_t i = 1; i < count; ++i)
+        b.place(pick(rng, {"tower-3", "ice-tower-2", "keep-2", "column-4"}), rng.metres(0.5, 1.4));
 }
 
 void castle(Builder& b, GeneratorRng& rng)
@@ -232,7 +235,9 @@ void cages(Builder& b, GeneratorRng& rng)
 void pyramid(Builder& b, GeneratorRng& rng)
 {
     b.place("pyramid-3", 0.0);
-    b.place(pick(rng, {"frame", "roofed-frame", "double-frame"}), rng.metres(0.8, 2.0));
+    const double gap = rng.metres(0.8, 2.0);
+    if (!b.place(pick(rng, {"frame", "roofed-frame", "double-frame"}), gap))
+        b.place("frame", gap); // the smallest frame, in a small budget
     if (rng.coin())
         b.place("pyramid-3", rng.metres(0.8, 2.0));
     b.place(pick(rng, {"frame", "roofed-frame", "cage"}), rng.metres(0.8, 2.0));
@@ -259,7 +264,7 @@ void bridge(Builder& b, GeneratorRng& rng)
 /// A structure on terrain: a hill from the ground, or an island floating above it.
 void raised(Builder& b, GeneratorRng& rng, bool island)
 {
-    const std::string& name = pick(rng, {"tower-3", "keep-2", "roofed-frame", "double-frame", "gate"});
+    const std::string name = pick(rng, {"tower-3", "keep-2", "roofed-frame", "double-frame", "gate"});
     const double margin = rng.metres(1.0, 2.0);
     const double width = b.widthOf(name) + 2.0 * margin;
     const double height = island ? rng.metres(2.5, 4.5) : rng.metres(1.5, 3.0);
@@ -358,10 +363,11 @@ double layoutDistance(const LevelDef& a, const LevelDef& b, const Catalog& catal
 }
 
 GeneratedKind layOut(LevelDef& level, const std::vector<GeneratorPart>& parts, GeneratorRng& rng,
-                     const Catalog& catalog)
+                     const Catalog& catalog, std::optional<GeneratedKind> only, int maxBodies)
 {
-    const GeneratedKind kind = generatedKinds()[rng.index(generatedKinds().size())];
-    Builder b(level, parts, catalog, rng.metres(20.0, 30.0));
+    const GeneratedKind drawn = generatedKinds()[rng.index(generatedKinds().size())];
+    const GeneratedKind kind = only.value_or(drawn);
+    Builder b(level, parts, catalog, rng.metres(20.0, 30.0), maxBodies);
     switch (kind)
     {
     case GeneratedKind::Towers:
@@ -390,11 +396,12 @@ GeneratedKind layOut(LevelDef& level, const std::vector<GeneratorPart>& parts, G
         break;
     }
     // Every level has a pig and enough to knock down: small layouts get neighbours on the ground beyond.
-    while (bodiesOf(level) < kMinBodies)
+    while (bodiesOf(level) < std::min(kMinBodies, maxBodies))
         if (!b.place(pick(rng, {"frame", "cage", "pyramid-3", "double-frame"}), rng.metres(1.0, 2.5)))
             break;
     if (level.pigs.empty() && !b.place("frame", rng.metres(1.0, 2.0)))
-        throw std::invalid_argument("the castle parts have no pig to place (levels/parts/frame.json is missing)");
+        throw std::invalid_argument("no castle part with a pig fits in " + std::to_string(maxBodies) +
+                                    " bodies (or levels/parts/frame.json is missing)");
     return kind;
 }
 
