@@ -1,3 +1,4 @@
+#include "../SanitizerBuild.hpp"
 #include "RunAbalike.hpp"
 
 #include <filesystem>
@@ -36,6 +37,11 @@ std::filesystem::path scratchDir(const std::string& name)
 // with that command when the change is meant.
 TEST(GenerateCli, FixedSeedsGiveTheirBytesAndTheLevelsStandAndAreWon)
 {
+    // The bytes are the Release build's: the sanitizer build compiles the core differently, its floating point takes
+    // other paths through the rest test, solver and model player, and a seed may settle on another layout (the issue
+    // promises the same bytes with the same build). It also takes minutes there.
+    if (test::kSanitizerBuild)
+        GTEST_SKIP() << "golden files of the Release build";
     const auto dir = scratchDir("seeds");
     for (const int seed : {6, 2})
     {
@@ -76,10 +82,12 @@ TEST(GenerateCli, FixedSeedsGiveTheirBytesAndTheLevelsStandAndAreWon)
 
 TEST(GenerateCli, APackIsACampaignThatLoads)
 {
+    if (test::kSanitizerBuild)
+        GTEST_SKIP() << "a verified generation takes minutes under the sanitizers; the Release stage runs it";
     const auto dir = scratchDir("pack");
     const RunResult run = runAbalike("generate --seed 6 --player-runs 12 --out " + dir.string());
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    EXPECT_NE(run.err.find("\"TNT store 6\""), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("generated-6 \""), std::string::npos) << run.err;
     const auto manifest = nlohmann::json::parse(std::ifstream(dir / "campaign.json"));
     EXPECT_EQ(manifest["episodes"][0]["levels"][0], "generated-6.json");
     const RunResult check = runAbalike("check " + (dir / "campaign.json").string());
