@@ -1,11 +1,12 @@
 #include <abalike/design/GeneratorLayouts.hpp>
 
+#include "edit/EditHelpers.hpp"
+
 #include <abalike/flight/GravityPresets.hpp>
 #include <abalike/level/WorldTheme.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <set>
 #include <stdexcept>
 
@@ -105,23 +106,25 @@ struct Extent
     double right = 0.0;
 };
 
+/// The bounds of every block and pig of a level, as the editor selects them (objectBounds).
+std::vector<std::array<Vec2, 2>> bodyBoxes(const LevelDef& level, const Catalog& catalog)
+{
+    std::vector<std::array<Vec2, 2>> boxes;
+    for (const BlockDef& b : level.blocks)
+        boxes.push_back(objectBounds(ObjectDef(b), catalog));
+    for (const PigDef& p : level.pigs)
+        boxes.push_back(objectBounds(ObjectDef(p), catalog));
+    return boxes;
+}
+
 /// The horizontal extent of a part's blocks and pigs.
 Extent extentOf(const LevelDef& part, const Catalog& catalog)
 {
     Extent e{1e9, -1e9};
-    for (const BlockDef& b : part.blocks)
+    for (const auto& [lo, hi] : bodyBoxes(part, catalog))
     {
-        const double a = b.angleDeg * std::numbers::pi / 180.0;
-        const double half = 0.5 * (std::abs(std::cos(a)) * b.widthM + std::abs(std::sin(a)) * b.heightM);
-        e.left = std::min(e.left, b.x - half);
-        e.right = std::max(e.right, b.x + half);
-    }
-    for (const PigDef& p : part.pigs)
-    {
-        const PigType* type = catalog.findPig(p.type);
-        const double r = type != nullptr ? type->radiusM : 0.5;
-        e.left = std::min(e.left, p.x - r);
-        e.right = std::max(e.right, p.x + r);
+        e.left = std::min(e.left, lo[0]);
+        e.right = std::max(e.right, hi[0]);
     }
     return e;
 }
@@ -318,33 +321,15 @@ namespace
 std::set<std::pair<int, int>> occupancy(const LevelDef& level, const Catalog& catalog)
 {
     constexpr double kCell = 0.5;
-    struct Box
-    {
-        double left, right, bottom, top;
-    };
-    std::vector<Box> boxes;
-    for (const BlockDef& b : level.blocks)
-    {
-        const double a = b.angleDeg * std::numbers::pi / 180.0;
-        const double hw = 0.5 * (std::abs(std::cos(a)) * b.widthM + std::abs(std::sin(a)) * b.heightM);
-        const double hh = 0.5 * (std::abs(std::sin(a)) * b.widthM + std::abs(std::cos(a)) * b.heightM);
-        boxes.push_back({b.x - hw, b.x + hw, b.y - hh, b.y + hh});
-    }
-    for (const PigDef& p : level.pigs)
-    {
-        const PigType* type = catalog.findPig(p.type);
-        const double r = type != nullptr ? type->radiusM : 0.5;
-        boxes.push_back({p.x - r, p.x + r, p.y - r, p.y + r});
-    }
+    const std::vector<std::array<Vec2, 2>> boxes = bodyBoxes(level, catalog);
     double origin = 1e9;
-    for (const Box& box : boxes)
-        origin = std::min(origin, box.left);
+    for (const auto& [lo, hi] : boxes)
+        origin = std::min(origin, lo[0]);
     std::set<std::pair<int, int>> cells;
-    for (const Box& box : boxes)
-        for (int c = static_cast<int>(std::floor((box.left - origin) / kCell)); (c + 0.5) * kCell + origin <= box.right;
-             ++c)
-            for (int r = static_cast<int>(std::floor(box.bottom / kCell)); (r + 0.5) * kCell <= box.top; ++r)
-                if ((c + 0.5) * kCell + origin >= box.left && (r + 0.5) * kCell >= box.bottom)
+    for (const auto& [lo, hi] : boxes)
+        for (int c = static_cast<int>(std::floor((lo[0] - origin) / kCell)); (c + 0.5) * kCell + origin <= hi[0]; ++c)
+            for (int r = static_cast<int>(std::floor(lo[1] / kCell)); (r + 0.5) * kCell <= hi[1]; ++r)
+                if ((c + 0.5) * kCell + origin >= lo[0] && (r + 0.5) * kCell >= lo[1])
                     cells.insert({c, r});
     return cells;
 }
