@@ -7,9 +7,12 @@
 #include <abalike/level/WorldTheme.hpp>
 #include <abalike/world/RestCheck.hpp>
 
+#include <atomic>
+#include <chrono>
 #include <gtest/gtest.h>
 #include <map>
 #include <set>
+#include <thread>
 
 namespace abalike
 {
@@ -91,6 +94,35 @@ TEST(Generator, ALevelIsVerifiedAndTheSameSeedGivesTheSameBytesWhateverTheThread
     EXPECT_EQ(one.level.referenceShot->angleDeg, one.solution.shots.front().angleDeg);
     // "Castle 6": the kind and the seed (which kind a seed gives is the build's: its floating point decides).
     EXPECT_EQ(one.level.title.substr(one.level.title.rfind(' ')), " 6");
+}
+
+TEST(Generator, TheStopFlagEndsAGenerationWithinASecondOrTwo)
+{
+    std::atomic<bool> stop{true};
+    GeneratorOptions options;
+    options.seed = 6;
+    options.threads = 1;
+    options.stop = &stop;
+    const GeneratedLevel stoppedBefore = generateLevel(bundledParts(), options);
+    EXPECT_TRUE(stoppedBefore.stopped);
+    EXPECT_FALSE(stoppedBefore.ok);
+    EXPECT_EQ(stoppedBefore.attempts, 0);
+
+    // Stopped while the solver and the model player work (a whole generation takes half a minute and more).
+    stop = false;
+    std::thread stopper(
+        [&stop]
+        {
+            std::this_thread::sleep_for(std::chrono::milliseconds(300));
+            stop = true;
+        });
+    const auto start = std::chrono::steady_clock::now();
+    const GeneratedLevel stoppedDuring = generateLevel(bundledParts(), options);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stopper.join();
+    EXPECT_TRUE(stoppedDuring.stopped);
+    EXPECT_FALSE(stoppedDuring.ok);
+    EXPECT_LT(seconds, test::kSanitizerBuild ? 60.0 : 15.0) << "one model-player run or solver shot at most";
 }
 
 TEST(Generator, GenerateHereGivesEveryKindWithinItsSizeStanding)

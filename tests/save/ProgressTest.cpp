@@ -91,6 +91,40 @@ TEST(Progress, WritesOnlyWhatItCanReadBack)
 TEST(Progress, MissingMembersAreEmpty)
 {
     EXPECT_EQ(parseProgress(R"({"format": 1})"), Progress{});
+    EXPECT_EQ(parseProgress(R"({"format": 2})"), Progress{});
+    EXPECT_EQ(parseProgress(R"({"format": 2, "endless": {}})"), Progress{});
+}
+
+TEST(Progress, AFormatOneFileKeepsItsStarsAndIsWrittenBackAsFormatTwo)
+{
+    // progress.json as the versions before the endless mode wrote it.
+    const Progress old = parseProgress(R"({
+  "format": 1,
+  "levels": {"1-1": {"best_score": 31250, "stars": 3}, "4-2": {"best_score": 9000, "stars": 1}},
+  "unlocked": ["1-1", "1-2", "4-2", "4-3"]
+})");
+    EXPECT_EQ(old.levels.at("1-1"), (LevelRecord{31250, 3}));
+    EXPECT_EQ(old.levels.at("4-2"), (LevelRecord{9000, 1}));
+    EXPECT_EQ(old.unlocked, (std::set<std::string>{"1-1", "1-2", "4-2", "4-3"}));
+    EXPECT_EQ(old.endless, EndlessRecord{});
+    const std::string written = progressToJson(old);
+    EXPECT_NE(written.find("\"format\": 2"), std::string::npos) << written;
+    EXPECT_NE(written.find("\"endless\""), std::string::npos) << written;
+    EXPECT_EQ(parseProgress(written), old);
+}
+
+TEST(Progress, EndlessRunsKeepTheBestScoreAndTheLongestRunSeparately)
+{
+    EndlessRecord record;
+    EXPECT_TRUE(record.offer(3, 20000));
+    EXPECT_TRUE(record.offer(5, 12000)) << "a longer run is a new best even with fewer points";
+    EXPECT_FALSE(record.offer(1, 500)) << "a shorter, poorer run changes no best";
+    EXPECT_FALSE(record.offer(-4, -100));
+    record.runs = 3;
+    EXPECT_EQ(record, (EndlessRecord{20000, 5, 3}));
+    Progress progress;
+    progress.endless = record;
+    EXPECT_EQ(parseProgress(progressToJson(progress)).endless, record);
 }
 
 struct BadProgress
@@ -123,7 +157,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadProgress{"InvalidUtf8", "{\"format\": 1, \"unlocked\": [\"\xff\xfe\"]}", "not valid JSON"},
         BadProgress{"NotAnObject", "[1, 2]", "expected a JSON object, got array"},
         BadProgress{"NoFormat", R"({"levels": {}})", "missing \"format\""},
-        BadProgress{"NewerFormat", R"({"format": 2})", "format 2 is not supported"},
+        BadProgress{"NewerFormat", R"({"format": 3})", "format 3 is not supported (this abalike reads format 1 to 2)"},
+        BadProgress{"FormatZero", R"({"format": 0})", "format 0 is not supported"},
+        BadProgress{"EndlessAsArray", R"({"format": 2, "endless": []})", "/endless: expected an object"},
+        BadProgress{"NegativeRun", R"({"format": 2, "endless": {"longest_run": -2}})",
+                    "/endless/longest_run: expected a whole number from 0"},
+        BadProgress{"RunsAsText", R"({"format": 2, "endless": {"runs": "7"}})",
+                    "/endless/runs: expected a whole number"},
         BadProgress{"FormatAsText", R"({"format": "1"})", "/format: expected a whole number"},
         BadProgress{"DeepNesting", std::string(100000, '[') + std::string(100000, ']'), "nests more than"},
         BadProgress{"NaN", R"({"format": 1, "levels": {"1-1": {"best_score": NaN}}})", "not valid JSON"},

@@ -5,6 +5,7 @@
 #include <abalike/level/LevelDef.hpp>
 #include <abalike/world/Catalog.hpp>
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -53,6 +54,9 @@ struct GeneratorOptions
     int maxAttempts = 24;           ///< layouts and bird counts tried before giving up
     std::size_t playerRuns = 40;    ///< the model player's tries per measure
     int threads = 0;                ///< 0: every hardware thread
+    /// Set and true: the generation stops at its next check (each rest test, solver shot and model-player run) and
+    /// returns with `stopped`; how the endless mode's worker leaves when the game quits. Never changes a result.
+    const std::atomic<bool>* stop = nullptr;
 
     static constexpr double kLossTolerance = 0.15;
     static constexpr int kMaxBodies = 30;
@@ -75,6 +79,7 @@ const char* rejectionName(Rejection rejection);
 struct GeneratedLevel
 {
     bool ok = false;
+    std::uint64_t seed = 0; ///< GeneratorOptions::seed: the title's number
     LevelDef level;
     GeneratedKind kind = GeneratedKind::Towers;
     int attempts = 0;
@@ -83,12 +88,13 @@ struct GeneratedLevel
     PlayerDifficulty player;         ///< the model player's measure
     double lossShare = 0.0;          ///< 1 - the model player's win share
     double seconds = 0.0;
+    bool stopped = false; ///< GeneratorOptions::stop was set before a level passed
 };
 
 /// Generates one level and verifies it before returning it: it stands (checkRest), the solver wins it, and the model
 /// player's loss share is within kLossTolerance of the asked one. Tries layouts (and, with automatic birds, bird
-/// counts) until one passes or maxAttempts is spent; ok is false then. Throws std::invalid_argument for an unknown
-/// world or bird, or an empty part list.
+/// counts) until one passes or maxAttempts is spent (or the stop flag is set); ok is false then. Throws
+/// std::invalid_argument for an unknown world or bird, or an empty part list.
 GeneratedLevel generateLevel(const std::vector<GeneratorPart>& parts, const GeneratorOptions& options,
                              const Catalog& catalog = Catalog::builtin());
 

@@ -39,6 +39,10 @@ private:
 /// Reads and parses a level file. Throws LevelLoadError.
 LevelDef loadLevel(const std::string& path, const Catalog& catalog);
 
+/// The .json files directly in a folder, sorted by name (levels/parts/, levels/endless/); none when it cannot be
+/// read.
+std::vector<std::string> levelFilesIn(const std::string& folder);
+
 /// Parses level JSON text; fileName is used in messages. Throws LevelLoadError.
 LevelDef parseLevel(std::string_view text, const std::string& fileName, const Catalog& catalog);
 

@@ -18,11 +18,26 @@ struct LevelRecord
     bool operator==(const LevelRecord&) const = default;
 };
 
+/// The best the player has done in the endless mode (runs of generated levels, EndlessRun).
+struct EndlessRecord
+{
+    int bestScore = 0;  ///< the highest score of one run
+    int longestRun = 0; ///< the most levels won in one run
+    int runs = 0;       ///< runs ended (the first level of a session rotates through the shipped set by it)
+
+    /// A run has now won `levelsWon` levels for `score` points (offered after every win, so that a run the player
+    /// leaves still counts): keeps the bests. Returns true when one improved.
+    bool offer(int levelsWon, int score);
+
+    bool operator==(const EndlessRecord&) const = default;
+};
+
 /// What a player has achieved: the best result per level and the levels they may play, keyed by level id.
 struct Progress
 {
     std::map<std::string, LevelRecord> levels;
     std::set<std::string> unlocked;
+    EndlessRecord endless;
 
     /// Keeps the better of the stored and the new score and stars; returns true when something improved.
     bool record(const std::string& levelId, int score, int stars);
@@ -38,10 +53,13 @@ struct Progress
 /// Returns true when a level was newly unlocked.
 bool unlockCampaign(Progress& progress, const std::vector<std::string>& levelIds);
 
-/// Parses the text of progress.json. Throws SaveFormatError saying what is wrong and where.
+/// Parses the text of progress.json, of this version (format 2) or an earlier one (format 1, before the endless
+/// mode: its levels and unlocked levels are kept, the endless record starts empty). Throws SaveFormatError saying
+/// what is wrong and where.
 Progress parseProgress(std::string_view text);
 
-/// The text of progress.json (stable key order, so saving unchanged progress writes the same bytes).
+/// The text of progress.json, always of this version (stable key order, so saving unchanged progress writes the same
+/// bytes).
 std::string progressToJson(const Progress& progress);
 
 } // namespace abalike

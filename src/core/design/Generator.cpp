@@ -18,15 +18,9 @@ namespace abalike
 
 std::vector<GeneratorPart> loadGeneratorParts(const std::string& folder, const Catalog& catalog)
 {
-    std::vector<std::filesystem::path> files;
-    std::error_code error;
-    for (const auto& entry : std::filesystem::directory_iterator(folder, error))
-        if (entry.path().extension() == ".json")
-            files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
     std::vector<GeneratorPart> parts;
-    for (const std::filesystem::path& file : files)
-        parts.push_back({file.stem().string(), loadLevel(file.string(), catalog)});
+    for (const std::string& file : levelFilesIn(folder))
+        parts.push_back({std::filesystem::path(file).stem().string(), loadLevel(file, catalog)});
     return parts;
 }
 
@@ -92,6 +86,17 @@ std::string titleOf(GeneratedKind kind, std::uint64_t seed)
     return name + " " + std::to_string(seed);
 }
 
+/// Thrown from the solver's and the model player's progress reports when GeneratorOptions::stop is set.
+struct GenerationStopped
+{
+};
+
+void throwIfStopped(const GeneratorOptions& options)
+{
+    if (options.stop != nullptr && options.stop->load(std::memory_order_relaxed))
+        throw GenerationStopped{};
+}
+
 /// The verdict of one measure of a laid-out level with its birds.
 struct Measure
 {
@@ -105,8 +110,13 @@ struct Measure
 Measure measure(const LevelDef& level, const GeneratorOptions& options, const Catalog& catalog)
 {
     Measure m;
+    const auto stopCheck = [&options](std::size_t, std::size_t)
+    {
+        throwIfStopped(options);
+    };
     SolverOptions solver;
     solver.threads = options.threads;
+    solver.progress = stopCheck;
     m.solution = solveLevel(level, catalog, solver);
     if (!m.solution.outcome.won)
     {
@@ -117,6 +127,7 @@ Measure measure(const LevelDef& level, const GeneratorOptions& options, const Ca
     player.runs = options.playerRuns;
     player.seed = options.seed;
     player.threads = options.threads;
+    player.progress = stopCheck;
     m.player = measurePlayerDifficulty(level, catalog, player);
     m.lossShare = 1.0 - m.player.winShare;
     if (m.lossShare > options.lossShare + GeneratorOptions::kLossTolerance)
@@ -126,40 +137,14 @@ Measure measure(const LevelDef& level, const GeneratorOptions& options, const Ca
     return m;
 }
 
-} // namespace
-
-std::optional<LevelDef> generateStructure(const std::vector<GeneratorPart>& parts, GeneratedKind kind, int maxBodies,
-                                          std::uint64_t seed, const Catalog& catalog)
+void generateInto(GeneratedLevel& result, const LevelDef& world, const std::vector<GeneratorPart>& parts,
+                  const GeneratorOptions& options, const Catalog& catalog)
 {
-    for (std::uint64_t stream = 0; stream < 8; ++stream)
-    {
-        GeneratorRng rng(seed, stream);
-        LevelDef structure;
-        structure.sandbox = true;
-        layOut(structure, parts, rng, catalog, kind, maxBodies);
-        if (checkRest(structure, catalog).passed())
-            return structure;
-    }
-    return std::nullopt;
-}
-
-GeneratedLevel generateLevel(const std::vector<GeneratorPart>& parts, const GeneratorOptions& options,
-                             const Catalog& catalog)
-{
-    if (parts.empty())
-        throw std::invalid_argument("no castle parts to build with (levels/parts/ is empty or missing)");
-    for (const std::string& bird : options.birds)
-        if (catalog.findBird(bird) == nullptr)
-            throw std::invalid_argument("unknown bird \"" + bird + "\" (expected red, blue, yellow, black or white)");
-    LevelDef world;
-    applyGeneratorWorld(world, options.world); // throws for an unknown world before any work
-
-    const auto start = std::chrono::steady_clock::now();
-    GeneratedLevel result;
     const bool autoBirds = options.birds.empty();
     int layoutIndex = 0;
     while (result.attempts < options.maxAttempts)
     {
+        throwIfStopped(options);
         GeneratorRng rng(options.seed, static_cast<std::uint64_t>(layoutIndex++));
         LevelDef level = world;
         level.format = 1;
@@ -193,8 +178,7 @@ GeneratedLevel generateLevel(const std::vector<GeneratorPart>& parts, const Gene
                 result.solution = std::move(m.solution);
                 result.player = std::move(m.player);
                 result.lossShare = m.lossShare;
-                result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                return result;
+                return;
             }
             result.rejected.push_back(*m.rejection);
             // With automatic birds a level too hard or unwinnable gets one more bird, one too easy one fewer, as long
@@ -209,6 +193,48 @@ GeneratedLevel generateLevel(const std::vector<GeneratorPart>& parts, const Gene
             birds = next;
         }
     }
+}
+
+} // namespace
+
+std::optional<LevelDef> generateStructure(const std::vector<GeneratorPart>& parts, GeneratedKind kind, int maxBodies,
+                                          std::uint64_t seed, const Catalog& catalog)
+{
+    for (std::uint64_t stream = 0; stream < 8; ++stream)
+    {
+        GeneratorRng rng(seed, stream);
+        LevelDef structure;
+        structure.sandbox = true;
+        layOut(structure, parts, rng, catalog, kind, maxBodies);
+        if (checkRest(structure, catalog).passed())
+            return structure;
+    }
+    return std::nullopt;
+}
+
+GeneratedLevel generateLevel(const std::vector<GeneratorPart>& parts, const GeneratorOptions& options,
+                             const Catalog& catalog)
+{
+    if (parts.empty())
+        throw std::invalid_argument("no castle parts to build with (levels/parts/ is empty or missing)");
+    for (const std::string& bird : options.birds)
+        if (catalog.findBird(bird) == nullptr)
+            throw std::invalid_argument("unknown bird \"" + bird + "\" (expected red, blue, yellow, black or white)");
+    LevelDef world;
+    applyGeneratorWorld(world, options.world); // throws for an unknown world before any work
+
+    const auto start = std::chrono::steady_clock::now();
+    GeneratedLevel result;
+    try
+    {
+        generateInto(result, world, parts, options, catalog);
+    }
+    catch (const GenerationStopped&)
+    {
+        result = GeneratedLevel{};
+        result.stopped = true;
+    }
+    result.seed = options.seed;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }

@@ -21,7 +21,7 @@ inline unsigned workerCount(int requested)
 
 /// Calls work(i) for every i in [0, count) on up to `threads` threads. Each call must write only its own result
 /// slot, so the outcome never depends on which thread ran what or when; done(i) is called after each item under
-/// a lock (progress reports). The first exception thrown by work is rethrown here.
+/// a lock (progress reports). The first exception thrown by work or done is rethrown here.
 template <typename Work, typename Done>
 void parallelFor(std::size_t count, unsigned threads, Work&& work, Done&& done)
 {
@@ -38,6 +38,8 @@ void parallelFor(std::size_t count, unsigned threads, Work&& work, Done&& done)
             try
             {
                 work(i);
+                const std::lock_guard guard(lock);
+                done(i); // may throw too (a progress report that stops the work): every thread is still joined
             }
             catch (...)
             {
@@ -47,8 +49,6 @@ void parallelFor(std::size_t count, unsigned threads, Work&& work, Done&& done)
                 next = count; // stop handing out work
                 return;
             }
-            const std::lock_guard guard(lock);
-            done(i);
         }
     };
     const unsigned n = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(count)));

@@ -14,7 +14,6 @@ namespace abalike
 namespace
 {
 constexpr JsonTextLimits kManifestText{1u << 20, 16, "a campaign manifest"};
-constexpr JsonTextLimits kLevelText{limits::kMaxLevelBytes, limits::kMaxNesting, "a level"};
 
 /// True if the file is a level that says "sandbox": true. Anything unreadable is left to the level loader.
 bool isSandboxScene(const std::string& path)

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "level/LevelLimits.hpp"
+
 #include <cstddef>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -15,6 +17,9 @@ struct JsonTextLimits
     int maxNesting = 64;
     const char* what = "a level"; ///< what the file should be, for messages
 };
+
+/// The limits of a level file (the level loader and the campaign's sandbox check read levels alike).
+inline constexpr JsonTextLimits kLevelText{limits::kMaxLevelBytes, limits::kMaxNesting, "a level"};
 
 /// Parses JSON text for the level loader: size, emptiness, UTF-8 and nesting are checked before the parser sees
 /// it, and syntax errors name the line and column of the offending token. Throws LevelLoadError with one issue.

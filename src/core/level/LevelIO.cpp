@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <sstream>
 
@@ -34,8 +35,6 @@ constexpr NumberRange kMovingSize{kMinBodySizeM, kMaxMovingSizeM, "m",
                                   "outside the sizes Box2D simulates well for a moving body"};
 constexpr NumberRange kStaticSize{kMinBodySizeM, kMaxStaticSizeM, "m",
                                   "outside the sizes Box2D simulates well for a static body"};
-
-constexpr JsonTextLimits kLevelText{kMaxLevelBytes, kMaxNesting, "a level"};
 
 std::vector<std::string> names(const auto& items)
 {
@@ -654,6 +653,17 @@ std::vector<LevelIssue> checkLevelGeometry(const LevelDef& level, const Catalog&
     for (LevelIssue& issue : issues)
         issue.line = issue.column = 0; // a level in memory has no place in a file
     return issues;
+}
+
+std::vector<std::string> levelFilesIn(const std::string& folder)
+{
+    std::vector<std::string> files;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error))
+        if (entry.path().extension() == ".json")
+            files.push_back(entry.path().string());
+    std::sort(files.begin(), files.end());
+    return files;
 }
 
 LevelDef loadLevel(const std::string& path, const Catalog& catalog)

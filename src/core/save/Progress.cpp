@@ -11,7 +11,9 @@ namespace abalike
 namespace
 {
 
-constexpr int kProgressFormat = 1;
+/// 2: the endless record. Format 1 files are read as they are, with an empty endless record.
+constexpr int kProgressFormat = 2;
+constexpr int kOldestProgressFormat = 1;
 constexpr int kMaxStars = 3;
 /// Level ids are short names like "2-3"; a longer one is not from a level file.
 constexpr std::size_t kMaxIdLength = 256;
@@ -48,6 +50,14 @@ bool Progress::record(const std::string& levelId, int score, int stars)
     return isNew || !(best == before);
 }
 
+bool EndlessRecord::offer(int levelsWon, int score)
+{
+    const EndlessRecord before = *this;
+    bestScore = std::max(bestScore, std::max(score, 0));
+    longestRun = std::max(longestRun, std::max(levelsWon, 0));
+    return !(*this == before);
+}
+
 bool Progress::unlock(const std::string& levelId)
 {
     return unlocked.insert(levelId).second;
@@ -79,7 +89,7 @@ bool unlockCampaign(Progress& progress, const std::vector<std::string>& levelIds
 
 Progress parseProgress(std::string_view text)
 {
-    const nlohmann::json root = parseSaveJson(text, kProgressFormat);
+    const nlohmann::json root = parseSaveJson(text, kProgressFormat, kOldestProgressFormat);
     Progress progress;
     if (const auto levels = root.find("levels"); levels != root.end())
     {
@@ -111,6 +121,19 @@ Progress parseProgress(std::string_view text)
             progress.unlocked.insert(id);
         }
     }
+    if (const auto endless = root.find("endless"); endless != root.end())
+    {
+        if (!endless->is_object())
+            throw SaveFormatError("/endless: expected an object with \"best_score\", \"longest_run\" and \"runs\"");
+        const auto member = [&endless](const char* key, int& into)
+        {
+            if (const auto value = endless->find(key); value != endless->end())
+                into = readInt(*value, std::string("/endless/") + key, 0, std::numeric_limits<int>::max());
+        };
+        member("best_score", progress.endless.bestScore);
+        member("longest_run", progress.endless.longestRun);
+        member("runs", progress.endless.runs);
+    }
     return progress;
 }
 
@@ -130,6 +153,9 @@ std::string progressToJson(const Progress& progress)
         if (validId(id))
             unlocked.push_back(id);
     root["unlocked"] = std::move(unlocked);
+    root["endless"] = {{"best_score", std::max(progress.endless.bestScore, 0)},
+                       {"longest_run", std::max(progress.endless.longestRun, 0)},
+                       {"runs", std::max(progress.endless.runs, 0)}};
     return dumpSaveJson(root);
 }
 

@@ -1,6 +1,7 @@
 #include "save/SaveJson.hpp"
 
 #include <abalike/save/SaveError.hpp>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -67,7 +68,7 @@ std::string withoutPrefix(const std::string& message)
 
 } // namespace
 
-nlohmann::json parseSaveJson(std::string_view text, int expectedFormat)
+nlohmann::json parseSaveJson(std::string_view text, int expectedFormat, int oldestFormat)
 {
     if (text.size() > kMaxSaveBytes)
         throw SaveFormatError("the file is " + std::to_string(text.size()) + " bytes; a save file is at most " +
@@ -91,9 +92,13 @@ nlohmann::json parseSaveJson(std::string_view text, int expectedFormat)
     if (format == root.end())
         throw SaveFormatError("missing \"format\"");
     const int version = readInt(*format, "/format", 0, std::numeric_limits<int>::max());
-    if (version != expectedFormat)
+    const int oldest = oldestFormat > 0 ? std::min(oldestFormat, expectedFormat) : expectedFormat;
+    if (version < oldest || version > expectedFormat)
         throw SaveFormatError("format " + std::to_string(version) + " is not supported (this abalike reads format " +
-                              std::to_string(expectedFormat) + ")");
+                              (oldest == expectedFormat
+                                   ? std::to_string(expectedFormat)
+                                   : std::to_string(oldest) + " to " + std::to_string(expectedFormat)) +
+                              ")");
     return root;
 }
 

@@ -7,9 +7,10 @@
 namespace abalike
 {
 
-/// Parses a save file's JSON: at most kMaxSaveBytes, shallow, an object whose "format" is the expected version.
+/// Parses a save file's JSON: at most kMaxSaveBytes, shallow, an object whose "format" is the expected version
+/// (or, with oldestFormat, any version from oldestFormat to expectedFormat: the caller migrates older ones).
 /// Throws SaveFormatError with a message a player can pass on to us.
-nlohmann::json parseSaveJson(std::string_view text, int expectedFormat);
+nlohmann::json parseSaveJson(std::string_view text, int expectedFormat, int oldestFormat = 0);
 
 /// Members of a save file's object; each throws SaveFormatError naming /key and what was expected.
 int readInt(const nlohmann::json& value, const std::string& pointer, int min, int max);
