@@ -2,8 +2,8 @@
 """Validates levels against levels/schema/level.schema.json with an independent JSON Schema validator
 (python3-jsonschema, draft 2020-12).
 
-  * every bundled level (levels/*.json except the manifest, levels/structures/*.json, levels/parts/*.json and
-    levels/lessons/*.json) must be valid;
+  * every bundled level (levels/*.json except the manifest, levels/structures/*.json, levels/parts/*.json,
+    levels/lessons/*.json and levels/endless/*.json) must be valid;
   * the schema's material, bird and pig names must be the catalog's (assets/catalog.json);
   * every file of the malformed suite must be rejected by the schema, except those listed in
     schema-valid.txt: their errors are geometric or semantic, which no schema can express, and the
@@ -99,6 +99,7 @@ def main():
     levels += sorted((root / "levels/structures").glob("*.json"))  # the stress scenes as level files
     levels += sorted((root / "levels/parts").glob("*.json"))  # the castle parts (tools/levelgen/parts.py)
     levels += sorted((root / "levels/lessons").glob("*.json"))  # the lessons of the title menu
+    levels += sorted((root / "levels/endless").glob("*.json"))  # the endless mode's shipped first levels
     for path in levels:
         for error in validator.iter_errors(strict_load(path)):
             failures.append(f"{path.relative_to(root)}: {error.json_path}: {error.message}")

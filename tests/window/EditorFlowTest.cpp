@@ -182,9 +182,9 @@ TEST_F(EditorFlow, WidthOnAHillScalesItsCorners)
 
 TEST_F(EditorFlow, TheTitleMenuOpensTheSandboxAndLevelSelectOpensTheEditor)
 {
-    // Title: Play, Level select, Learn, Sandbox and editor, ...
-    const GameRun sandbox = play("--frames 20" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"},
-        {"frame": 4, "key": "Down"}, {"frame": 6, "key": "Enter"}])"));
+    // Title: Play, Level select, Endless castles, Learn, Sandbox and editor, ...
+    const GameRun sandbox = play("--frames 21" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"},
+        {"frame": 4, "key": "Down"}, {"frame": 5, "key": "Down"}, {"frame": 7, "key": "Enter"}])"));
     ASSERT_EQ(sandbox.exitCode, 0) << sandbox.err;
     EXPECT_EQ(sandbox.finalScreens(), (std::vector<std::string>{"title", "editor"}));
     EXPECT_EQ(sandbox.values("editor", "level"), (std::vector<std::string>{"sandbox"}));

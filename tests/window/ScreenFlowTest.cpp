@@ -123,11 +123,11 @@ TEST_F(ScreenFlow, TheToolbarAndTheRightButtonGiveTheMouseEveryMenuKey)
 
 TEST_F(ScreenFlow, SettingsFromTheTitleApplyAtOnceAndAScriptedRunNeverWritesThem)
 {
-    // Title: Settings is the fifth entry. In settings (effects volume first: the game has no music): down to Text
+    // Title: Settings is the sixth entry. In settings (effects volume first: the game has no music): down to Text
     // size, Right; Colours, Enter; High contrast, Right; then Escape back to the title.
     const GameRun run = play("--frames 26" + script(R"([
         {"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"}, {"frame": 4, "key": "Down"},
-        {"frame": 5, "key": "Down"}, {"frame": 7, "key": "Enter"},
+        {"frame": 5, "key": "Down"}, {"frame": 6, "key": "Down"}, {"frame": 7, "key": "Enter"},
         {"frame": 9, "key": "Down"}, {"frame": 10, "key": "Down"}, {"frame": 11, "key": "Down"},
         {"frame": 12, "key": "Down"}, {"frame": 14, "key": "Right"},
         {"frame": 15, "key": "Down"}, {"frame": 16, "key": "Enter"}, {"frame": 17, "key": "Down"},

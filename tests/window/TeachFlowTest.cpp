@@ -42,19 +42,21 @@ protected:
 
 TEST_F(TeachFlow, TutorialAndLessonsOpenFromTheTitlesLearn)
 {
-    // Title: Play, Level select, Learn, ...; Learn: the campaign with its physics, Tutorial, Lessons, Back.
-    const GameRun tutorial = playGame("--frames 14" + script(R"([{"frame": 2, "key": "Down"},
-        {"frame": 3, "key": "Down"}, {"frame": 4, "key": "Enter"}, {"frame": 6, "key": "Down"},
-        {"frame": 7, "key": "Enter"}])"));
+    // Title: Play, Level select, Endless castles, Learn, ...; Learn: the campaign with its physics, Tutorial,
+    // Lessons, Back.
+    const GameRun tutorial = playGame("--frames 15" + script(R"([{"frame": 2, "key": "Down"},
+        {"frame": 3, "key": "Down"}, {"frame": 4, "key": "Down"}, {"frame": 5, "key": "Enter"},
+        {"frame": 7, "key": "Down"}, {"frame": 8, "key": "Enter"}])"));
     ASSERT_EQ(tutorial.exitCode, 0) << tutorial.err;
     EXPECT_EQ(tutorial.values("level", "id"), (std::vector<std::string>{"tutorial"}));
     EXPECT_EQ(tutorial.finalScreens(), (std::vector<std::string>{"title", "learn", "play"}));
 
     // Lessons, then the fourth lesson (wind).
-    const GameRun lessons = playGame("--frames 22" + script(R"([{"frame": 2, "key": "Down"},
-        {"frame": 3, "key": "Down"}, {"frame": 4, "key": "Enter"}, {"frame": 6, "key": "Down"},
-        {"frame": 7, "key": "Down"}, {"frame": 8, "key": "Enter"}, {"frame": 10, "key": "Down"},
-        {"frame": 11, "key": "Down"}, {"frame": 12, "key": "Down"}, {"frame": 13, "key": "Enter"}])"));
+    const GameRun lessons = playGame("--frames 23" + script(R"([{"frame": 2, "key": "Down"},
+        {"frame": 3, "key": "Down"}, {"frame": 4, "key": "Down"}, {"frame": 5, "key": "Enter"},
+        {"frame": 7, "key": "Down"}, {"frame": 8, "key": "Down"}, {"frame": 9, "key": "Enter"},
+        {"frame": 11, "key": "Down"}, {"frame": 12, "key": "Down"}, {"frame": 13, "key": "Down"},
+        {"frame": 14, "key": "Enter"}])"));
     ASSERT_EQ(lessons.exitCode, 0) << lessons.err;
     EXPECT_EQ(lessons.values("push", "screen"), (std::vector<std::string>{"title", "learn", "lessons", "play"}));
     EXPECT_EQ(lessons.values("level", "id"), (std::vector<std::string>{"lesson-wind"}));
@@ -284,14 +286,14 @@ TEST_F(TeachFlow, TheTutorialCompletesEvenWithTheOverlayHiddenAgain)
 {
     // A new player: aim, power, launch, the overlay on and off again, a tape with the right button, a second launch.
     // The measuring step used to wait for the overlay forever; and a single 0.5 degree key step must count as aiming.
-    // Title: Learn, then its Tutorial.
-    const GameRun run = play("--frames 384" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"},
-        {"frame": 4, "key": "Enter"}, {"frame": 6, "key": "Down"}, {"frame": 7, "key": "Enter"},
-        {"frame": 14, "key": "Up"}, {"frame": 16, "key": "Right"},
-        {"frame": 18, "key": "Space"}, {"frame": 24, "key": "T"}, {"frame": 34, "key": "T"},
-        {"frame": 44, "mouse": "press", "button": "right", "x": 300, "y": 500},
-        {"frame": 49, "mouse": "move", "x": 500, "y": 500},
-        {"frame": 54, "mouse": "release", "button": "right", "x": 500, "y": 500}, {"frame": 354, "key": "Space"}])"));
+    // Title: Learn (the fourth entry), then its Tutorial.
+    const GameRun run = play("--frames 385" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"},
+        {"frame": 4, "key": "Down"}, {"frame": 5, "key": "Enter"}, {"frame": 7, "key": "Down"},
+        {"frame": 8, "key": "Enter"}, {"frame": 15, "key": "Up"}, {"frame": 17, "key": "Right"},
+        {"frame": 19, "key": "Space"}, {"frame": 25, "key": "T"}, {"frame": 35, "key": "T"},
+        {"frame": 45, "mouse": "press", "button": "right", "x": 300, "y": 500},
+        {"frame": 50, "mouse": "move", "x": 500, "y": 500},
+        {"frame": 55, "mouse": "release", "button": "right", "x": 500, "y": 500}, {"frame": 355, "key": "Space"}])"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const std::string texts = shownTexts(run);
     EXPECT_NE(texts.find("Tutorial: the controls\ndone\nThat is every control."), std::string::npos) << texts;

@@ -44,8 +44,12 @@ GeneratedLevelName parseGeneratedLevelName(const std::string& text)
 
 std::filesystem::path generatedLevelFile(const GeneratedLevelName& name)
 {
-    const std::filesystem::path file = defaultCacheDirectory() / "generated" /
-                                       (std::to_string(name.seed) + "-" + shortestNumber(name.lossShare) + ".json");
+    const std::string fileName = std::to_string(name.seed) + "-" + shortestNumber(name.lossShare) + ".json";
+    const std::filesystem::path levels(levelsDirectory());
+    // The endless mode's shipped levels are generated levels too, by the same names.
+    if (const std::filesystem::path shipped = levels / "endless" / fileName; std::filesystem::exists(shipped))
+        return shipped;
+    const std::filesystem::path file = defaultCacheDirectory() / "generated" / fileName;
     if (std::filesystem::exists(file))
         return file;
     std::cerr << "abalike: generating level " << name.seed << " (loss share " << shortestNumber(name.lossShare)
@@ -53,7 +57,6 @@ std::filesystem::path generatedLevelFile(const GeneratedLevelName& name)
     GeneratorOptions options;
     options.seed = name.seed;
     options.lossShare = name.lossShare;
-    const std::filesystem::path levels(levelsDirectory());
     const GeneratedLevel level =
         generateLevel(loadGeneratorParts((levels / "parts").string(), Catalog::builtin()), options, Catalog::builtin());
     if (!level.ok)

@@ -16,9 +16,10 @@ struct GeneratedLevelName
 };
 GeneratedLevelName parseGeneratedLevelName(const std::string& text);
 
-/// The file of that level in the cache folder (generated/SEED-L.json), generated and verified first when it is not
-/// there yet (abalike generate's rules; about half a minute, said on stderr). The same name always gives the same
-/// level. Throws UsageError when no level passes for that seed.
+/// The file of that level: the endless mode's shipped one (levels/endless/SEED-L.json), else the one in the cache
+/// folder (generated/SEED-L.json, where the endless mode also keeps what it generates), generated and verified
+/// first when it is not there yet (abalike generate's rules; about half a minute, said on stderr). The same name always
+/// gives the same level. Throws UsageError when no level passes for that seed.
 std::filesystem::path generatedLevelFile(const GeneratedLevelName& name);
 
 } // namespace abalike::app

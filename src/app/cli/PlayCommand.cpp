@@ -33,12 +33,19 @@ struct PlayArgs
     std::string pack;
     std::string levelId;
     std::string generated;
+    bool endless = false;
+    std::optional<std::uint64_t> seed;
     std::vector<std::string> shots;
     WindowArgs window;
 };
 
 int runPlayCommand(PlayArgs a)
 {
+    if (a.endless && (!a.generated.empty() || !a.level.empty() || !a.pack.empty() || !a.levelId.empty()))
+        throw UsageError("--endless: the endless mode plays generated levels; give no level, number, pack or "
+                         "generated level with it");
+    if (a.seed && !a.endless)
+        throw UsageError("--seed: the first generated level's seed in the endless mode; give it with --endless");
     if (!a.generated.empty())
     {
         if (!a.level.empty() || !a.pack.empty() || !a.levelId.empty())
@@ -50,6 +57,8 @@ int runPlayCommand(PlayArgs a)
     options.levelPath = a.level;
     options.campaignPath = campaignManifest();
     applyWindowOptions(a.window, options);
+    options.endless = a.endless;
+    options.endlessSeed = a.seed;
     for (const std::string& text : a.shots)
         options.shots.push_back(parseShot(text));
 
@@ -171,6 +180,11 @@ CommandRunner addPlayCommand(CLI::App& app)
     cmd->add_option("--generated", args->generated,
                     "SEED[:LOSS_SHARE]: the level `abalike generate --seed SEED --loss-share L` makes (default 0.5), "
                     "generated once and kept in the cache folder");
+    cmd->add_flag("--endless", args->endless,
+                  "the endless mode: generated castles, harder after a win, easier after a loss (the title's "
+                  "\"Endless castles\")");
+    cmd->add_option("--seed", args->seed,
+                    "with --endless: the seed of the first level generated while playing (default: from the clock)");
     cmd->add_option("--shot", args->shots,
                     "ANGLE,SPEED[,ABILITY_AT_S] to fire when a bird is ready; repeat for more (with no level: the "
                     "campaign's first level)")

@@ -86,7 +86,7 @@ sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float
     // A long title drops the level's id first (a lesson's id is long), and only then is cut short rather than run
     // under the aim readout.
     const float titleRoom = 0.4f * static_cast<float>(size.x);
-    std::string titleText = "Level " + std::string(levelLabel) + ": " + level.title;
+    std::string titleText = levelLabel.empty() ? level.title : "Level " + std::string(levelLabel) + ": " + level.title;
     if (measureText(*m_font, utf8(titleText), titleSize).x > titleRoom)
         titleText = level.title;
     const sf::String title = utf8(fitToWidth(*m_font, titleText, titleSize, titleRoom, Cut::AtCharacter));

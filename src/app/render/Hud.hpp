@@ -25,7 +25,7 @@ public:
     /// toolbar; the aim readout stays clear of it and of the status panel, moving under them when the top is full.
     /// Game mode shows the aim as the genre does (a power bar and the angle) and the air only when the wind blows;
     /// learn mode the band's numbers with units, how they follow from each other, and gravity and the air.
-    /// levelLabel: what the status panel calls the level ("2-6", PlayView::levelLabel).
+    /// levelLabel: what the status panel calls the level ("2-6", PlayView::levelLabel; empty: the title alone).
     void draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session,
               const std::optional<AimReadout>& aim, PlayMode mode, std::string_view levelLabel, float textScale = 1.0f,
               float reservedRightPx = 0.0f) const;

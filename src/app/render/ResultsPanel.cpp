@@ -36,7 +36,7 @@ std::vector<ScoreLine> scoreLines(const ScoreBreakdown& score)
 } // namespace
 
 sf::FloatRect ResultsPanel::draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session, float scale,
-                                 float reserveBelow)
+                                 float reserveBelow, const std::vector<std::string>& notes)
 {
     const bool won = session.phase() == Phase::Won;
     const sf::Vector2f window(size);
@@ -50,6 +50,7 @@ sf::FloatRect ResultsPanel::draw(sf::RenderTarget& target, sf::Vector2u size, co
     const unsigned titleSize = static_cast<unsigned>(34.0f * scale);
     const unsigned lineSize = static_cast<unsigned>(19.0f * scale);
     const unsigned totalSize = static_cast<unsigned>(23.0f * scale);
+    const unsigned noteSize = static_cast<unsigned>(16.0f * scale);
     const float starRadius = 30.0f * scale;
     const float pad = 18.0f * scale;
     const auto spacing = [this](unsigned size)
@@ -58,9 +59,10 @@ sf::FloatRect ResultsPanel::draw(sf::RenderTarget& target, sf::Vector2u size, co
     };
     const ScoreBreakdown score = session.score();
     const std::vector<ScoreLine> lines = scoreLines(score);
-    const float contentHeight = spacing(titleSize) + 4.0f * scale + 2.6f * starRadius +
-                                static_cast<float>(lines.size()) * spacing(lineSize) + 10.0f * scale +
-                                spacing(totalSize);
+    const float contentHeight =
+        spacing(titleSize) + 4.0f * scale + 2.6f * starRadius + static_cast<float>(lines.size()) * spacing(lineSize) +
+        10.0f * scale + spacing(totalSize) +
+        (notes.empty() ? 0.0f : 8.0f * scale + static_cast<float>(notes.size()) * spacing(noteSize));
     const float width = std::min(window.x - 20.0f, 470.0f * scale);
     const float height = std::min(window.y - 20.0f - reserveBelow, contentHeight + 2.0f * pad);
     const sf::Vector2f topLeft(0.5f * (window.x - width), std::max(10.0f, 0.5f * (window.y - height - reserveBelow)));
@@ -119,6 +121,13 @@ sf::FloatRect ResultsPanel::draw(sf::RenderTarget& target, sf::Vector2u size, co
     y += 10.0f * scale;
     drawLabel(target, *m_font, utf8("Total"), {left, y}, totalSize, palette::kText);
     drawLabel(target, *m_font, utf8(formatPoints(score.total())), {right, y}, totalSize, palette::kStar, Align::Right);
+    y += spacing(totalSize) + 8.0f * scale;
+    for (const std::string& note : notes)
+    {
+        drawLabel(target, *m_font, utf8(fitToWidth(*m_font, note, noteSize, right - left, Cut::AtWord)), {left, y},
+                  noteSize, palette::kText);
+        y += spacing(noteSize);
+    }
     return cardRect;
 }
 

@@ -5,6 +5,8 @@
 #include <SFML/Graphics/Font.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <abalike/game/GameSession.hpp>
+#include <string>
+#include <vector>
 
 namespace abalike::app
 {
@@ -17,9 +19,9 @@ public:
     explicit ResultsPanel(const sf::Font* font) : m_font(font) {}
 
     /// Draws the card centred in the window with reserveBelow pixels left free under it (for the menu); returns
-    /// where the card is.
+    /// where the card is. notes: lines under the total (the endless run's).
     sf::FloatRect draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session, float scale,
-                       float reserveBelow);
+                       float reserveBelow, const std::vector<std::string>& notes = {});
 
 private:
     const sf::Font* m_font;

@@ -1,5 +1,7 @@
 #include "screens/GameScreens.hpp"
 
+#include "screens/EndlessNavigation.hpp"
+
 #include "screens/HelpScreen.hpp"
 #include "screens/PlayScreen.hpp"
 #include "screens/TitleScreen.hpp"
@@ -38,6 +40,8 @@ std::unique_ptr<Screen> openingScreen(App& app)
 {
     const AppOptions& options = app.options();
     const Campaign& campaign = app.campaign();
+    if (options.endless)
+        return nextEndlessScreen(app);
     if (options.level)
     {
         // A level given on the command line: straight into it. If it is a campaign level, "next" follows the

@@ -4,6 +4,7 @@
 #include "play/PlayToolbar.hpp"
 #include "render/CameraFocus.hpp"
 #include "render/TextFormat.hpp"
+#include "screens/EndlessNavigation.hpp"
 #include "screens/PauseScreen.hpp"
 #include "screens/ResultsScreen.hpp"
 #include "shell/App.hpp"
@@ -118,6 +119,9 @@ std::optional<std::size_t> PlayScreen::nextLevelIndex() const
 
 std::string PlayScreen::levelLabel() const
 {
+    // An endless level's title says it all: its kind and the seed that replays it ("Castle 4711").
+    if (m_source.endless)
+        return "";
     return m_source.campaignIndex ? m_app.campaign().levels[*m_source.campaignIndex].number : m_source.level.id;
 }
 
@@ -128,6 +132,12 @@ PlayMode PlayScreen::playMode() const
 
 void PlayScreen::goToNextLevel()
 {
+    if (m_source.endless)
+    {
+        if (m_session->finished())
+            playNextEndlessLevel(m_app);
+        return;
+    }
     const std::optional<std::size_t> next = nextLevelIndex();
     if (!next || m_session->phase() != Phase::Won)
         return;
@@ -389,6 +399,20 @@ void PlayScreen::finishIfDone()
     if (m_source.campaignIndex)
         m_app.recordResult(m_app.campaign().levels[*m_source.campaignIndex].key, session.score().total(),
                            session.stars());
+    if (m_source.endless)
+    {
+        EndlessGame& endless = m_app.endless();
+        if (session.phase() == Phase::Won)
+        {
+            endless.won(session.score().total());
+            m_app.recordEndless(endless.run().levelsWon(), endless.run().score(), false);
+        }
+        else
+        {
+            const EndlessRun::Result run = endless.lost();
+            m_app.recordEndless(run.levelsWon, run.score, true);
+        }
+    }
     m_app.screens().push(std::make_unique<ResultsScreen>(m_app, *this));
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "endless/EndlessGame.hpp"
 #include "input/AimController.hpp"
 #include "input/ShotScript.hpp"
 #include "play/FastForward.hpp"
@@ -37,6 +38,7 @@ struct PlaySource
     std::string path;                         ///< the file, watched for live reload; empty for a scene held in memory
     std::optional<std::size_t> campaignIndex; ///< its place in the campaign, so "next level" can follow
     std::optional<PlayMode> mode = std::nullopt; ///< Learn for the tutorial and the lessons; none: the app's mode
+    std::optional<EndlessLevel> endless = std::nullopt; ///< a level of the endless run: its result goes to the run
 };
 
 /// Playing one level: aim, launch, watch. Physics runs in the App's fixed steps; input becomes aim and launch
@@ -61,8 +63,9 @@ public:
     void restartLevel();
     /// The next campaign level after this one, if there is one.
     std::optional<std::size_t> nextLevelIndex() const;
-    /// Replaces this screen by the next campaign level (only after a win).
+    /// Replaces this screen by the next campaign level (only after a win); in the endless mode, by the run's next.
     void goToNextLevel();
+    bool endless() const { return m_source.endless.has_value(); }
     const PlaySource& source() const { return m_source; }
 
     // PlayView

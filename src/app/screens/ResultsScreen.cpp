@@ -1,5 +1,7 @@
 #include "screens/ResultsScreen.hpp"
 
+#include "endless/EndlessGame.hpp"
+#include "render/TextFormat.hpp"
 #include "screens/Navigation.hpp"
 #include "screens/PlayScreen.hpp"
 #include "shell/App.hpp"
@@ -7,15 +9,50 @@
 namespace abalike::app
 {
 
+namespace
+{
+std::string castles(int n)
+{
+    return std::to_string(n) + (n == 1 ? " castle" : " castles");
+}
+
+/// The endless run's lines on the card: where the run stands (or what it achieved), the bests, and how to play this
+/// level again.
+std::vector<std::string> endlessNotes(App& app, const PlayScreen& play, bool won)
+{
+    const EndlessGame& endless = app.endless();
+    const EndlessRecord& best = app.progress().endless;
+    std::vector<std::string> notes;
+    if (won)
+        notes.push_back("Run: " + castles(endless.run().levelsWon()) + " won, " + formatPoints(endless.run().score()) +
+                        " points. Next: harder");
+    else
+        notes.push_back("Run over: " + castles(endless.lastRunEnded().levelsWon) + " won, " +
+                        formatPoints(endless.lastRunEnded().score) + " points");
+    notes.push_back("Best run: " + castles(best.longestRun) + "; best score " + formatPoints(best.bestScore));
+    notes.push_back("Replay: abalike play --generated " + play.source().endless->generatedName());
+    return notes;
+}
+} // namespace
+
 ResultsScreen::ResultsScreen(App& app, PlayScreen& play) : m_app(app), m_play(play), m_panel(app.font())
 {
     const bool won = play.session().phase() == Phase::Won;
-    const bool hasNext = won && play.nextLevelIndex().has_value();
     std::vector<MenuItem> items;
-    if (hasNext)
-        items.push_back({"next", "Next level", true});
-    items.push_back({"retry", "Retry", true});
-    items.push_back({"levels", "Level select", !app.campaign().levels.empty()});
+    if (play.endless())
+    {
+        // The run goes on after a win and starts again after a loss; a level is never retried inside a run.
+        m_notes = endlessNotes(app, play, won);
+        items.push_back({"next", won ? "Next castle" : "New run", true});
+        items.push_back({"title", "Title", true});
+    }
+    else
+    {
+        if (won && play.nextLevelIndex().has_value())
+            items.push_back({"next", "Next level", true});
+        items.push_back({"retry", "Retry", true});
+        items.push_back({"levels", "Level select", !app.campaign().levels.empty()});
+    }
     m_menu.setItems(std::move(items));
     for (int key = 0; key < sf::Keyboard::KeyCount; ++key)
         m_heldAtOpen[static_cast<std::size_t>(key)] = app.input().keyDown(static_cast<sf::Keyboard::Key>(key));
@@ -61,6 +98,14 @@ void ResultsScreen::handleEvent(const sf::Event& event)
 
 void ResultsScreen::activate(const std::string& id)
 {
+    if (m_play.endless())
+    {
+        if (id == "next")
+            m_play.goToNextLevel();
+        else if (id == "title" || id == "levels")
+            openTitle(m_app);
+        return;
+    }
     if (id == "retry")
     {
         m_play.restartLevel();
@@ -81,7 +126,7 @@ void ResultsScreen::draw(sf::RenderTarget& target)
     const unsigned itemSize = m_app.textSize(20.0f);
     const float lineHeight = m_app.font() != nullptr ? m_app.font()->getLineSpacing(itemSize) : 20.0f;
     const float menuHeight = static_cast<float>(m_menu.items().size()) * (lineHeight + 22.0f * scale) + 12.0f * scale;
-    const sf::FloatRect card = m_panel.draw(target, target.getSize(), m_play.session(), scale, menuHeight);
+    const sf::FloatRect card = m_panel.draw(target, target.getSize(), m_play.session(), scale, menuHeight, m_notes);
     m_menu.draw(target, m_app.font(), card.left + 0.5f * card.width, card.top + card.height + 12.0f * scale,
                 std::min(card.width, 300.0f * scale), itemSize, scale);
 }

@@ -6,6 +6,8 @@
 
 #include <SFML/Window/Keyboard.hpp>
 #include <array>
+#include <string>
+#include <vector>
 
 namespace abalike::app
 {
@@ -38,6 +40,7 @@ private:
     PlayScreen& m_play;
     ResultsPanel m_panel;
     MenuList m_menu;
+    std::vector<std::string> m_notes; ///< the endless run's lines under the total
     double m_shownS = 0.0;
     std::array<bool, sf::Keyboard::KeyCount> m_heldAtOpen{}; ///< keys down when it opened: ignored until released
 };

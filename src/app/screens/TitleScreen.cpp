@@ -4,6 +4,7 @@
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
 #include "render/TitleArt.hpp"
+#include "screens/EndlessNavigation.hpp"
 #include "screens/HelpScreen.hpp"
 #include "screens/LearnScreen.hpp"
 #include "screens/LevelSelectScreen.hpp"
@@ -36,6 +37,7 @@ TitleScreen::TitleScreen(App& app)
     m_menu.setItems({
         {"play", started ? "Play: continue" : "Play", hasCampaign},
         {"levels", "Level select", hasCampaign},
+        {"endless", "Endless castles", true},
         {"learn", "Learn: lessons, tutorial, physics", true},
         {"sandbox", "Sandbox and editor", true},
         {"settings", "Settings", true},
@@ -56,6 +58,11 @@ void TitleScreen::activate(const std::string& id)
     {
         m_app.setMode(PlayMode::Game);
         playCampaignLevel(m_app, continueLevel(m_app));
+    }
+    else if (id == "endless")
+    {
+        m_app.setMode(PlayMode::Game);
+        m_app.screens().push(nextEndlessScreen(m_app));
     }
     else if (id == "levels")
         m_app.screens().push(std::make_unique<LevelSelectScreen>(m_app));

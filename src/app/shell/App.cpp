@@ -1,5 +1,8 @@
 #include "shell/App.hpp"
 
+#include "endless/EndlessGame.hpp"
+#include "shell/DataPaths.hpp"
+
 #include "render/Hud.hpp"
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
@@ -7,11 +10,13 @@
 #include "render/Screenshot.hpp"
 
 #include <abalike/level/SafeText.hpp>
+#include <abalike/save/DataDirectory.hpp>
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/OpenGL.hpp>
 #include <SFML/System/Clock.hpp>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -48,6 +53,8 @@ App::App(AppOptions options, Campaign campaign, SaveStore store, std::unique_ptr
             m_trace.write(std::string(change), {{"screen", std::string(screen)}});
         });
 }
+
+App::~App() = default;
 
 void App::openWindow()
 {
@@ -436,6 +443,38 @@ void App::recordResult(const std::string& levelId, int score, int stars)
     const bool unlocked = unlockCampaign(m_progress, m_campaign.levelIds());
     m_trace.write("result", {{"level", levelId}, {"score", score}, {"stars", stars}});
     if ((improved || unlocked) && !scripted() && m_store)
+        m_store->saveProgress(m_progress);
+    takeStoreMessages();
+}
+
+EndlessGame& App::endless()
+{
+    if (!m_endless)
+    {
+        // Seeds from the clock, so that every session generates castles of its own; --seed makes a run repeatable.
+        const auto clock = static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
+        const std::uint64_t seed = m_options.endlessSeed.value_or(1000 + clock % 90000);
+        m_endless = std::make_unique<EndlessGame>(std::filesystem::path(levelsDirectory()),
+                                                  defaultCacheDirectory() / "generated", seed, m_progress.endless.runs,
+                                                  scripted());
+    }
+    return *m_endless;
+}
+
+void App::recordEndless(int levelsWon, int score, bool ended)
+{
+    bool changed = m_progress.endless.offer(levelsWon, score);
+    if (ended)
+    {
+        ++m_progress.endless.runs;
+        changed = true;
+    }
+    m_trace.write("endless-record", {{"levels_won", levelsWon},
+                                     {"score", score},
+                                     {"ended", ended},
+                                     {"best_score", m_progress.endless.bestScore},
+                                     {"longest_run", m_progress.endless.longestRun}});
+    if (changed && !scripted() && m_store)
         m_store->saveProgress(m_progress);
     takeStoreMessages();
 }

@@ -21,6 +21,8 @@
 namespace abalike::app
 {
 
+class EndlessGame;
+
 /// The game application: the window, the fixed-step loop, the screen stack and what every screen shares (font,
 /// input, settings, saved progress, the campaign). Screens hold an App& and ask it for these.
 ///
@@ -33,6 +35,7 @@ class App
 public:
     /// store: the player's files, already loaded (its messages are shown once the game runs).
     App(AppOptions options, Campaign campaign, SaveStore store, std::unique_ptr<sf::Font> font);
+    ~App();
 
     /// Opens the first screen and plays until the window closes, quit() is called, or the frame budget is spent.
     /// Returns the exit code.
@@ -75,6 +78,11 @@ public:
     const Progress& progress() const { return m_progress; }
     /// Records a finished level (best score and stars, unlocks the next) and saves it (not in scripted runs).
     void recordResult(const std::string& levelId, int score, int stars);
+    /// The endless mode of this session, started (its worker with it) the first time it is asked for.
+    EndlessGame& endless();
+    /// The endless run has won `levelsWon` levels for `score` points (ended: the run is over, lost): keeps the
+    /// player's bests and saves them (not in scripted runs).
+    void recordEndless(int levelsWon, int score, bool ended);
     /// Whether the player may start this campaign level.
     bool isUnlocked(const std::string& levelId) const;
 
@@ -136,6 +144,7 @@ private:
     std::optional<SaveStore> m_store;
     Settings m_settings;
     Progress m_progress;
+    std::unique_ptr<EndlessGame> m_endless;
 
     struct Notice
     {

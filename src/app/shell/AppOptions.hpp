@@ -7,6 +7,7 @@
 
 #include "shell/FrameObserver.hpp"
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -38,8 +39,10 @@ struct AppOptions
     std::string tracePath;         ///< write what happens (screens, levels, shots) as JSON lines here
     std::optional<unsigned> width; ///< `--size` wins over the saved window size
     std::optional<unsigned> height;
-    std::optional<Wording> wording; ///< `--wording` wins over the saved setting for this run
-    std::optional<PlayMode> mode;   ///< `--mode` wins over the saved setting for this run
+    std::optional<Wording> wording;           ///< `--wording` wins over the saved setting for this run
+    std::optional<PlayMode> mode;             ///< `--mode` wins over the saved setting for this run
+    bool endless = false;                     ///< `play --endless`: straight into the endless mode
+    std::optional<std::uint64_t> endlessSeed; ///< `--seed`: the first generated level's; none: from the clock
 
     /// Watches the frame loop (`bench frames`, the layout walk); null for a plain run.
     FrameObserver* observer = nullptr;

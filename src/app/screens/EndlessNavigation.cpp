@@ -1,0 +1,36 @@
+#include "screens/EndlessNavigation.hpp"
+
+#include "endless/EndlessGame.hpp"
+#include "screens/EndlessWaitScreen.hpp"
+#include "screens/Navigation.hpp"
+#include "screens/PlayScreen.hpp"
+#include "shell/App.hpp"
+
+namespace abalike::app
+{
+
+std::unique_ptr<Screen> nextEndlessScreen(App& app)
+{
+    EndlessGame& endless = app.endless();
+    if (std::optional<EndlessLevel> level = endless.nextLevel())
+    {
+        app.trace().write("endless-level", {{"seed", level->seed},
+                                            {"loss_share", level->lossShareTenths / 10.0},
+                                            {"generated", level->generatedName()},
+                                            {"shipped", level->shipped},
+                                            {"run_levels_won", endless.run().levelsWon()},
+                                            {"run_score", endless.run().score()}});
+        PlaySource source{level->level, "", std::nullopt, PlayMode::Game};
+        source.endless = std::move(level);
+        return std::make_unique<PlayScreen>(app, std::move(source));
+    }
+    return std::make_unique<EndlessWaitScreen>(app);
+}
+
+void playNextEndlessLevel(App& app)
+{
+    openTitle(app);
+    app.screens().push(nextEndlessScreen(app));
+}
+
+} // namespace abalike::app

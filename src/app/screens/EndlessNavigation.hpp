@@ -1,0 +1,17 @@
+#pragma once
+
+#include <memory>
+
+namespace abalike::app
+{
+
+class App;
+class Screen;
+
+/// The endless run's next level as a screen: the level when one is ready, else the card that waits for it.
+std::unique_ptr<Screen> nextEndlessScreen(App& app);
+
+/// Plays the endless run's next level (or waits for it) over the title screen, leaving every other screen.
+void playNextEndlessLevel(App& app);
+
+} // namespace abalike::app
