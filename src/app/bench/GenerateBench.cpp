@@ -1,5 +1,7 @@
 // `abalike bench generate`: how long a verified level takes, what is rejected on the way, and how varied the levels
-// are (issue 40). Seeds 1..N, the loss share cycling through 0.1, 0.3, 0.5, 0.7 and 0.9.
+// are (issue 40). Seeds 1..N, the loss share cycling through 0.1, 0.3, 0.5, 0.7 and 0.9. Each seed's result is kept
+// in OUT/generate-seeds/ as it is made, and a run finds the seeds a stopped run already made there: the 200-level
+// variety run (hours) can be run in parts.
 
 #include "bench/BenchSuite.hpp"
 #include "bench/ReportTable.hpp"
@@ -8,6 +10,8 @@
 #include <abalike/design/Generator.hpp>
 #include <abalike/design/GeneratorLayouts.hpp>
 #include <abalike/game/GameSession.hpp>
+#include <abalike/level/LevelIO.hpp>
+#include <abalike/level/LevelWriter.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +20,8 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 namespace abalike::app
@@ -46,6 +52,100 @@ double percentile(std::vector<double> values, double p)
     return values[std::clamp<std::size_t>(rank, 1, values.size()) - 1];
 }
 
+/// One seed's outcome, as kept on disk between runs.
+struct SeedResult
+{
+    std::uint64_t seed = 0;
+    double asked = 0.0;
+    bool ok = false;
+    std::string kind;
+    LevelDef level;
+    std::vector<ScriptedShot> shots; ///< the solver's win
+    int attempts = 0;
+    std::map<std::string, int> reasons;
+    double lossShare = 0.0;
+    double seconds = 0.0;
+};
+
+std::filesystem::path seedFile(const std::filesystem::path& folder, std::uint64_t seed, const char* suffix)
+{
+    return folder / (std::to_string(seed) + suffix);
+}
+
+void saveSeed(const std::filesystem::path& folder, const SeedResult& r)
+{
+    std::filesystem::create_directories(folder);
+    nlohmann::json shots = nlohmann::json::array();
+    for (const ScriptedShot& shot : r.shots)
+        shots.push_back({{"angle_deg", shot.angleDeg},
+                         {"speed", shot.speedMps},
+                         {"ability_at_s", shot.abilityAtS ? nlohmann::json(*shot.abilityAtS) : nlohmann::json()}});
+    const nlohmann::json row{
+        {"seed", r.seed},      {"asked", r.asked},       {"ok", r.ok},           {"kind", r.kind},
+        {"shots", shots},      {"attempts", r.attempts}, {"reasons", r.reasons}, {"loss_share", r.lossShare},
+        {"seconds", r.seconds}};
+    if (r.ok)
+        std::ofstream(seedFile(folder, r.seed, ".level.json")) << writeLevelJson(r.level, "level.schema.json");
+    // The row last: a run stopped between the two files makes this seed again.
+    std::ofstream(seedFile(folder, r.seed, ".json")) << row.dump(1) << '\n';
+}
+
+/// A seed a stopped run made with the same loss share, if its files are whole.
+std::optional<SeedResult> loadSeed(const std::filesystem::path& folder, std::uint64_t seed, double asked)
+{
+    try
+    {
+        std::ifstream in(seedFile(folder, seed, ".json"));
+        if (!in)
+            return std::nullopt;
+        const nlohmann::json row = nlohmann::json::parse(in);
+        SeedResult r;
+        r.seed = seed;
+        r.asked = row.at("asked").get<double>();
+        if (r.asked != asked)
+            return std::nullopt;
+        r.ok = row.at("ok").get<bool>();
+        r.kind = row.at("kind").get<std::string>();
+        r.attempts = row.at("attempts").get<int>();
+        r.reasons = row.at("reasons").get<std::map<std::string, int>>();
+        r.lossShare = row.at("loss_share").get<double>();
+        r.seconds = row.at("seconds").get<double>();
+        for (const nlohmann::json& shot : row.at("shots"))
+            r.shots.emplace_back(shot.at("angle_deg").get<double>(), shot.at("speed").get<double>(),
+                                 shot.at("ability_at_s").is_null()
+                                     ? std::nullopt
+                                     : std::optional<double>(shot.at("ability_at_s").get<double>()));
+        if (r.ok)
+            r.level = loadLevel(seedFile(folder, seed, ".level.json").string(), Catalog::builtin());
+        return r;
+    }
+    catch (const std::exception&)
+    {
+        return std::nullopt; // unreadable: made again
+    }
+}
+
+SeedResult generateSeed(const std::vector<GeneratorPart>& parts, std::uint64_t seed, double asked)
+{
+    GeneratorOptions o;
+    o.seed = seed;
+    o.lossShare = asked;
+    const GeneratedLevel g = generateLevel(parts, o, Catalog::builtin());
+    SeedResult r;
+    r.seed = seed;
+    r.asked = asked;
+    r.ok = g.ok;
+    r.kind = g.ok ? generatedKindName(g.kind) : "";
+    r.level = g.level;
+    r.shots = g.solution.shots;
+    r.attempts = g.attempts;
+    for (const Rejection rejection : g.rejected)
+        ++r.reasons[rejectionName(rejection)];
+    r.lossShare = g.lossShare;
+    r.seconds = g.seconds;
+    return r;
+}
+
 } // namespace
 
 int runGenerateBench(const BenchOptions& options)
@@ -62,36 +162,44 @@ int runGenerateBench(const BenchOptions& options)
     int pigs = 0;
     int toppled = 0;
     int failed = 0;
+    const std::filesystem::path kept = std::filesystem::path(options.outDir) / "generate-seeds";
+    int reused = 0;
     for (std::size_t i = 0; i < seeds; ++i)
     {
-        GeneratorOptions o;
-        o.seed = i + 1;
-        o.lossShare = kLossShares[i % 5];
-        const GeneratedLevel g = generateLevel(parts, o, Catalog::builtin());
-        std::map<std::string, int> reasons;
-        for (const Rejection r : g.rejected)
+        const std::uint64_t seed = i + 1;
+        const double asked = kLossShares[i % 5];
+        std::optional<SeedResult> r = loadSeed(kept, seed, asked);
+        if (r)
+            ++reused;
+        else
         {
-            ++reasons[rejectionName(r)];
-            ++rejected[rejectionName(r)];
+            r = generateSeed(parts, seed, asked);
+            saveSeed(kept, *r);
         }
-        seconds.push_back(g.seconds);
-        rows.addRow({std::to_string(o.seed), fixedText(o.lossShare, 1), g.ok ? "1" : "0",
-                     g.ok ? generatedKindName(g.kind) : "", std::to_string(g.level.blocks.size() + g.level.pigs.size()),
-                     std::to_string(g.level.birds.size()), fixedText(g.lossShare, 3), std::to_string(g.attempts),
-                     std::to_string(reasons["fell"]), std::to_string(reasons["unwinnable"]),
-                     std::to_string(reasons["too easy"]), std::to_string(reasons["too hard"]),
-                     fixedText(g.seconds, 1)});
-        std::cerr << "seed " << o.seed << ": " << (g.ok ? generatedKindName(g.kind) : "none") << ", "
-                  << fixedText(g.seconds, 1) << " s\n";
-        if (!g.ok)
+        for (const auto& [reason, count] : r->reasons)
+            rejected[reason] += count;
+        seconds.push_back(r->seconds);
+        const auto count = [&r](const char* reason)
+        {
+            const auto found = r->reasons.find(reason);
+            return std::to_string(found == r->reasons.end() ? 0 : found->second);
+        };
+        rows.addRow({std::to_string(seed), fixedText(asked, 1), r->ok ? "1" : "0", r->kind,
+                     std::to_string(r->level.blocks.size() + r->level.pigs.size()),
+                     std::to_string(r->level.birds.size()), fixedText(r->lossShare, 3), std::to_string(r->attempts),
+                     count("fell"), count("unwinnable"), count("too easy"), count("too hard"),
+                     fixedText(r->seconds, 1)});
+        std::cerr << "seed " << seed << ": " << (r->ok ? r->kind : "none") << ", " << fixedText(r->seconds, 1)
+                  << " s\n";
+        if (!r->ok)
         {
             ++failed;
             continue;
         }
-        ++kinds[generatedKindName(g.kind)];
-        made.push_back(g.level);
+        ++kinds[r->kind];
+        made.push_back(r->level);
         // Toppling over the solver's winning shots: pigs defeated by a block, another pig or the ground.
-        const auto session = simulateShots(g.level, g.solution.shots);
+        const auto session = simulateShots(r->level, r->shots);
         for (const DestroyedEvent& defeat : session->defeats())
             if (defeat.kind == EntityKind::Pig)
             {
@@ -121,7 +229,8 @@ int runGenerateBench(const BenchOptions& options)
     std::ostringstream md;
     md << "# bench generate\n\n"
        << seeds << " seeds (1 to " << seeds << "), loss share 0.1, 0.3, 0.5, 0.7, 0.9 in turn, 40 model-player runs "
-       << "per measure, every core. " << loadAverageNote() << "\n\n"
+       << "per measure, every core; " << reused << " of them made by an earlier run into this folder (times are "
+       << "that run's). " << loadAverageNote() << "\n\n"
        << "| measure | value | target |\n|---|---:|---|\n"
        << "| levels generated | " << made.size() << " of " << seeds << " | all |\n"
        << "| time per verified level: median | " << fixedText(median, 1) << " s | <= " << kMedianTargetS << " s |\n"

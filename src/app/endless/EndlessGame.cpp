@@ -61,9 +61,8 @@ EndlessGame::EndlessGame(const std::filesystem::path& levels, std::filesystem::p
 {
     try
     {
+        // None shipped is no problem: the first level is then waited for.
         m_shipped = loadShippedEndlessLevels(levels / "endless");
-        if (m_shipped.empty())
-            m_problem = "no levels in " + (levels / "endless").string();
     }
     catch (const LevelLoadError& error)
     {

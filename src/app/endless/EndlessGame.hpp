@@ -58,7 +58,7 @@ public:
     const EndlessRun::Result& lastRunEnded() const { return m_lastEnded; }
     /// What the worker is doing, for the waiting card.
     GeneratedLevelQueue::Status generation() const;
-    /// Why the mode cannot run (no shipped levels, no castle parts), empty when it can.
+    /// Why the mode cannot run (a shipped level that does not load, no castle parts), empty when it can.
     const std::string& problem() const { return m_problem; }
 
 private:

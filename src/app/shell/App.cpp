@@ -15,6 +15,7 @@
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/OpenGL.hpp>
 #include <SFML/System/Clock.hpp>
+#include <SFML/System/Sleep.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -31,6 +32,10 @@ namespace
 {
 constexpr double kMaxFrameS = 0.25; // a slow frame cannot start a spiral of death
 constexpr double kNoticeS = 6.0;
+/// A live frame done this early was not paced by vsync (Xvfb, drivers without it): it waits out the rest of a 60 Hz
+/// frame instead of spinning, which leaves the CPU to the endless mode's worker. A frame vsync paces takes the whole
+/// period and never waits.
+constexpr double kUnpacedFrameS = 0.012;
 constexpr std::size_t kMaxNotices = 4;
 } // namespace
 
@@ -183,6 +188,8 @@ bool App::runFrame(sf::Clock& clock, int layoutEvery)
     m_frameTimes.totalS = static_cast<double>(frameClock.getElapsedTime().asMicroseconds()) * 1e-6;
     if (m_options.observer != nullptr && !lastFrame)
         m_options.observer->frameTimed(m_frameTimes);
+    if (!offline && m_frameTimes.totalS < kUnpacedFrameS)
+        sf::sleep(sf::seconds(static_cast<float>(kStepS - m_frameTimes.totalS)));
     return lastFrame;
 }
 
