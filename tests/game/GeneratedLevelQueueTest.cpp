@@ -89,6 +89,12 @@ TEST(GeneratedLevelQueue, GeneratesTheWantedSharesInOrderWithSuccessiveSeedsOnOn
     EXPECT_EQ(fake.asked[0].threads, 1) << "one worker thread: the game keeps the other cores";
     EXPECT_EQ(fake.asked[0].world, "moon") << "the base options are kept";
     EXPECT_NE(fake.asked[0].stop, nullptr);
+    ASSERT_NE(fake.asked[0].threadsNow, nullptr);
+    EXPECT_EQ(fake.asked[0].threadsNow->load(), 1);
+    queue.hurry(true);
+    EXPECT_EQ(fake.asked[0].threadsNow->load(), 0) << "a waiting player: every core from the next measure on";
+    queue.hurry(false);
+    EXPECT_EQ(fake.asked[0].threadsNow->load(), 1);
 }
 
 TEST(GeneratedLevelQueue, KeepsNoMoreThanAskedAndNothingUnasked)

@@ -26,7 +26,8 @@ namespace abalike
 class GeneratedLevelQueue
 {
 public:
-    /// Makes one level; the queue sets seed, lossShare, threads (1) and stop of the options it passes.
+    /// Makes one level; the queue sets seed, lossShare, threads (1, or every core while hurried) and stop of the
+    /// options it passes.
     using Generate = std::function<GeneratedLevel(const GeneratorOptions&)>;
 
     /// Loss shares are given in tenths (EndlessRun's steps), so that equal shares compare equal.
@@ -62,6 +63,9 @@ public:
     /// take(), waiting up to `timeout` for the worker to finish one.
     std::optional<GeneratedLevel> takeWaiting(int lossShareTenths, std::chrono::milliseconds timeout);
     Status status() const;
+    /// Someone waits for the level in progress: from the next measure on, it uses every core (still at the lowest
+    /// priority); false goes back to one.
+    void hurry(bool hurry) { m_threads = hurry ? 0 : 1; }
 
 private:
     void work();
@@ -80,7 +84,8 @@ private:
     std::vector<Ready> m_ready;
     Status m_status;
     std::atomic<bool> m_stop{false};
-    std::thread m_worker; ///< last: it starts once everything above is built
+    std::atomic<int> m_threads{1}; ///< GeneratorOptions::threadsNow of every job
+    std::thread m_worker;          ///< last: it starts once everything above is built
 };
 
 } // namespace abalike

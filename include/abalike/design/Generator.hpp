@@ -57,6 +57,9 @@ struct GeneratorOptions
     /// Set and true: the generation stops at its next check (each rest test, solver shot and model-player run) and
     /// returns with `stopped`; how the endless mode's worker leaves when the game quits. Never changes a result.
     const std::atomic<bool>* stop = nullptr;
+    /// Set: the thread count for each measure is read from it instead of `threads` (the endless mode gives a waiting
+    /// player every core). Never changes a result.
+    const std::atomic<int>* threadsNow = nullptr;
 
     static constexpr double kLossTolerance = 0.15;
     static constexpr int kMaxBodies = 30;

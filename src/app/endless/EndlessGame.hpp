@@ -58,6 +58,8 @@ public:
     const EndlessRun::Result& lastRunEnded() const { return m_lastEnded; }
     /// What the worker is doing, for the waiting card.
     GeneratedLevelQueue::Status generation() const;
+    /// The player waits for the level (the waiting card is up): the worker uses every core until it is false again.
+    void hurry(bool hurry) { m_queue->hurry(hurry); }
     /// Why the mode cannot run (a shipped level that does not load, no castle parts), empty when it can.
     const std::string& problem() const { return m_problem; }
 

@@ -9,7 +9,7 @@
 namespace abalike::app
 {
 
-std::unique_ptr<Screen> nextEndlessScreen(App& app)
+std::unique_ptr<Screen> endlessLevelScreen(App& app)
 {
     EndlessGame& endless = app.endless();
     if (std::optional<EndlessLevel> level = endless.nextLevel())
@@ -24,6 +24,13 @@ std::unique_ptr<Screen> nextEndlessScreen(App& app)
         source.endless = std::move(level);
         return std::make_unique<PlayScreen>(app, std::move(source));
     }
+    return nullptr;
+}
+
+std::unique_ptr<Screen> nextEndlessScreen(App& app)
+{
+    if (std::unique_ptr<Screen> level = endlessLevelScreen(app))
+        return level;
     return std::make_unique<EndlessWaitScreen>(app);
 }
 

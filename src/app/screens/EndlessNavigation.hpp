@@ -8,6 +8,9 @@ namespace abalike::app
 class App;
 class Screen;
 
+/// The endless run's next level as a play screen when one is ready; null when not.
+std::unique_ptr<Screen> endlessLevelScreen(App& app);
+
 /// The endless run's next level as a screen: the level when one is ready, else the card that waits for it.
 std::unique_ptr<Screen> nextEndlessScreen(App& app);
 

@@ -29,12 +29,23 @@ void EndlessWaitScreen::handleEvent(const sf::Event& event)
     }
 }
 
+EndlessWaitScreen::EndlessWaitScreen(App& app) : m_app(app)
+{
+    // Nothing else runs while the player waits: the level in progress gets every core.
+    m_app.endless().hurry(true);
+}
+
+EndlessWaitScreen::~EndlessWaitScreen()
+{
+    m_app.endless().hurry(false);
+}
+
 void EndlessWaitScreen::frameUpdate(double frameS)
 {
     m_waitedS += frameS;
     if (m_leaving || !m_app.endless().problem().empty())
         return;
-    if (std::unique_ptr<Screen> next = nextEndlessScreen(m_app); next->name() != kName)
+    if (std::unique_ptr<Screen> next = endlessLevelScreen(m_app))
     {
         m_leaving = true;
         m_app.screens().replace(std::move(next));

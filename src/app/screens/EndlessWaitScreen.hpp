@@ -14,7 +14,8 @@ class EndlessWaitScreen : public Screen
 public:
     static constexpr std::string_view kName = "endless-wait";
 
-    explicit EndlessWaitScreen(App& app) : m_app(app) {}
+    explicit EndlessWaitScreen(App& app);
+    ~EndlessWaitScreen() override;
 
     std::string_view name() const override { return kName; }
     void handleEvent(const sf::Event& event) override;

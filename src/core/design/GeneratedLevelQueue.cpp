@@ -109,6 +109,7 @@ void GeneratedLevelQueue::work()
         options.seed = m_nextSeed++;
         options.lossShare = tenths / 10.0;
         options.threads = 1;
+        options.threadsNow = &m_threads;
         options.stop = &m_stop;
         m_status.working = true;
         m_status.seed = options.seed;

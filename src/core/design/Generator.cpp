@@ -115,7 +115,8 @@ Measure measure(const LevelDef& level, const GeneratorOptions& options, const Ca
         throwIfStopped(options);
     };
     SolverOptions solver;
-    solver.threads = options.threads;
+    const int threads = options.threadsNow != nullptr ? options.threadsNow->load() : options.threads;
+    solver.threads = threads;
     solver.progress = stopCheck;
     m.solution = solveLevel(level, catalog, solver);
     if (!m.solution.outcome.won)
@@ -126,7 +127,7 @@ Measure measure(const LevelDef& level, const GeneratorOptions& options, const Ca
     ModelPlayerOptions player;
     player.runs = options.playerRuns;
     player.seed = options.seed;
-    player.threads = options.threads;
+    player.threads = threads;
     player.progress = stopCheck;
     m.player = measurePlayerDifficulty(level, catalog, player);
     m.lossShare = 1.0 - m.player.winShare;
