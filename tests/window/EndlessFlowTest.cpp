@@ -76,6 +76,22 @@ TEST_F(EndlessFlow, ALossEndsTheRunAndTheNewOneIsEasierWithNoRetry)
     EXPECT_EQ(run.values("endless-level", "run_levels_won").back(), "0");
 }
 
+TEST_F(EndlessFlow, LeavingACastleUnfinishedEndsTheRunAsALossDoes)
+{
+    // The pause menu's Level select (fifth), back to the title, and Endless castles (third) again.
+    const GameRun run = play("--endless --frames 40" + script(R"([{"frame": 5, "key": "Escape"},
+        {"frame": 7, "key": "Down"}, {"frame": 8, "key": "Down"}, {"frame": 9, "key": "Down"},
+        {"frame": 10, "key": "Down"}, {"frame": 11, "key": "Enter"}, {"frame": 14, "key": "Escape"},
+        {"frame": 17, "key": "Down"}, {"frame": 18, "key": "Down"}, {"frame": 19, "key": "Enter"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.values("endless-left", "levels_won"), (std::vector<std::string>{"0"}));
+    EXPECT_EQ(run.values("endless-record", "ended"), (std::vector<std::string>{"true"}));
+    const std::vector<std::string> shares = run.values("endless-level", "loss_share");
+    ASSERT_EQ(shares.size(), 2u);
+    EXPECT_EQ(shares[1], "0.2") << "one step easier, as after a loss";
+    EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"title", "play"}));
+}
+
 TEST_F(EndlessFlow, EndlessTakesNoLevelAndSeedNeedsEndless)
 {
     const GameRun withLevel = play("--endless --level 1-1 --frames 2");

@@ -124,6 +124,7 @@ std::optional<EndlessLevel> EndlessGame::nextLevel()
         else
             next = shippedLevel(tenths);
     }
+    m_playing = next.has_value();
     if (next)
         m_queue->want({m_run.tenthsAfterWin(), m_run.tenthsAfterLoss()});
     else

@@ -51,9 +51,20 @@ public:
     std::optional<EndlessLevel> nextLevel();
     const EndlessRun& run() const { return m_run; }
     /// The level was won: the run goes on, harder.
-    void won(int score) { m_run.won(score); }
+    void won(int score)
+    {
+        m_playing = false;
+        m_run.won(score);
+    }
     /// The level was lost: the run ends (returned), the next starts easier.
-    EndlessRun::Result lost() { return m_lastEnded = m_run.lost(); }
+    EndlessRun::Result lost()
+    {
+        m_playing = false;
+        return m_lastEnded = m_run.lost();
+    }
+    /// A level was handed out and neither won nor lost yet: asking for the next one leaves it, which counts as a
+    /// loss (the caller records it), so that leaving a castle that is going badly cannot save a run.
+    bool playing() const { return m_playing; }
     /// What the last run to end achieved.
     const EndlessRun::Result& lastRunEnded() const { return m_lastEnded; }
     /// What the worker is doing, for the waiting card.
@@ -73,6 +84,7 @@ private:
     bool m_scripted = false;
     EndlessRun m_run;
     EndlessRun::Result m_lastEnded;
+    bool m_playing = false;
     std::string m_problem;
     std::unique_ptr<GeneratedLevelQueue> m_queue;
 };

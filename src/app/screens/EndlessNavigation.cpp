@@ -12,6 +12,13 @@ namespace abalike::app
 std::unique_ptr<Screen> endlessLevelScreen(App& app)
 {
     EndlessGame& endless = app.endless();
+    if (endless.playing())
+    {
+        // The player left the last castle unfinished (to the title, level select): the run ends as with a loss.
+        const EndlessRun::Result run = endless.lost();
+        app.trace().write("endless-left", {{"levels_won", run.levelsWon}, {"score", run.score}});
+        app.recordEndless(run.levelsWon, run.score, true);
+    }
     if (std::optional<EndlessLevel> level = endless.nextLevel())
     {
         app.trace().write("endless-level", {{"seed", level->seed},

@@ -119,8 +119,8 @@ std::optional<std::size_t> PlayScreen::nextLevelIndex() const
 
 std::string PlayScreen::levelLabel() const
 {
-    // An endless level's title says it all: its kind and the seed that replays it ("Castle 4711").
-    if (m_source.endless)
+    // A generated level's title says it all: its kind and the seed that replays it ("Castle 4711").
+    if (m_source.endless || (!m_source.campaignIndex && m_source.level.id.starts_with("generated-")))
         return "";
     return m_source.campaignIndex ? m_app.campaign().levels[*m_source.campaignIndex].number : m_source.level.id;
 }
