@@ -48,8 +48,8 @@ std::optional<LevelDef> generateStructure(const std::vector<GeneratorPart>& part
 void applyGeneratorWorld(LevelDef& level, const std::string& world);
 
 /// How different two layouts are: 1 minus the Jaccard index of their occupancy grids, the 0.5 m cells whose centres
-/// lie inside (not on the edge of) a block's bounding box or a pig's, counted from each level's leftmost body (a layout
-/// moved sideways is the same layout). 0: the same cells; 1: no cell in common.
+/// lie inside a block's bounding box or a pig's (on an edge, within a micrometre, counts), counted from each level's
+/// leftmost body (a layout moved sideways is the same layout). 0: the same cells; 1: no cell in common.
 double layoutDistance(const LevelDef& a, const LevelDef& b, const Catalog& catalog);
 
 /// A hint for a level of this kind: what its structure invites, with no number to go stale.

@@ -97,6 +97,10 @@ std::string kindHint(GeneratedKind kind)
 namespace
 {
 
+/// Heights and edges closer than this are the same: the parts' coordinates carry float noise, and a last-bit difference
+/// must not decide a storey line or an occupied cell.
+constexpr double kTouch = 1e-6;
+
 /// Fewer bodies than this and a layout gets neighbours (the campaign asks 15 of its levels; parts come in threes).
 constexpr int kMinBodies = 12;
 
@@ -145,7 +149,6 @@ double tidy(double metres)
 /// where it can be cut and still end in a floor, not in bare posts.
 std::vector<double> storeyLines(const LevelDef& part, const Catalog& catalog)
 {
-    constexpr double kTouch = 1e-6;
     std::vector<std::array<Vec2, 2>> blocks;
     double top = 0.0;
     for (const BlockDef& b : part.blocks)
@@ -170,7 +173,6 @@ std::vector<double> storeyLines(const LevelDef& part, const Catalog& catalog)
 /// The part without the blocks and pigs at or above height.
 LevelDef cutAt(const LevelDef& part, double height, const Catalog& catalog)
 {
-    constexpr double kTouch = 1e-6;
     LevelDef cut = part;
     cut.blocks.clear();
     cut.pigs.clear();
@@ -357,7 +359,8 @@ void bridge(Builder& b, GeneratorRng& rng)
     const std::size_t spans = 1 + rng.index(2);
     if (!column || !b.placeShape(*column, outwork ? rng.metres(1.0, 2.5) : 0.0))
         return;
-    const double columnWidth = extentOf(*column, b.catalog()).right - extentOf(*column, b.catalog()).left;
+    const Extent columnExtent = extentOf(*column, b.catalog());
+    const double columnWidth = columnExtent.right - columnExtent.left;
     std::vector<double> rights{b.x()}; // each column's right edge
     for (std::size_t i = 0; i < spans && b.placeShape(*column, rng.metres(2.6, 4.0)); ++i)
         rights.push_back(b.x());
@@ -447,7 +450,6 @@ namespace
 std::set<std::pair<int, int>> occupancy(const LevelDef& level, const Catalog& catalog)
 {
     constexpr double kCell = 0.5;
-    constexpr double kTouch = 1e-6;
     const std::vector<std::array<Vec2, 2>> boxes = bodyBoxes(level, catalog);
     double origin = 1e9;
     for (const auto& [lo, hi] : boxes)
