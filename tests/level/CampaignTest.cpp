@@ -23,7 +23,7 @@ TEST(Campaign, LoadsEveryLevelInPlayOrder)
     EXPECT_EQ(campaign.levels[7].episode, 0u);
     EXPECT_EQ(campaign.levels[8].episode, 1u);
     EXPECT_EQ(campaign.levelIds()[16], "3-1");
-    EXPECT_EQ(campaign.indexOf("4-2"), 29u); // episode 4 begins at 24: 4-1, 4-4, 4-7, 4-5, 4-6, 4-2
+    EXPECT_EQ(campaign.indexOf("4-2"), 30u); // episode 4 begins at 24: 4-1, 4-4, 4-7, 4-5, 4-6, 4-8, 4-2
     EXPECT_FALSE(campaign.indexOf("9-9").has_value());
 }
 

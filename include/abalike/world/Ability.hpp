@@ -5,6 +5,7 @@
 #include <functional>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -46,6 +47,13 @@ enum class AbilityWindow
 {
     FreeFlight, ///< before the bird's first contact
     InWorld,    ///< as long as the bird is in the world
+};
+
+/// What an ability drops: it leaves below the bird speedMps faster downwards than the bird.
+struct DroppedPayload
+{
+    double speedMps = 0.0;
+    double radiusM = 0.0;
 };
 
 /// A body an ability adds to the world: a split bird, an egg. Box2D flies it with its flight model's drag.
@@ -104,6 +112,9 @@ public:
     virtual std::string parameters() const = 0;
     /// What it does, one sentence for the catalog's table.
     virtual std::string_view description() const = 0;
+    /// An ability that drops a payload (the egg) describes it, so the solver can time the drop over a target; none
+    /// for every other ability.
+    virtual std::optional<DroppedPayload> dropped() const { return std::nullopt; }
 };
 
 /// Makes an ability from its block in the catalog's "abilities" (an empty object when the catalog has none: the

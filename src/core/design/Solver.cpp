@@ -1,3 +1,4 @@
+#include "design/DropAims.hpp"
 #include "design/ParallelFor.hpp"
 
 #include <abalike/design/AimRange.hpp>
@@ -22,6 +23,8 @@ namespace
 constexpr double kAbilityFractions[] = {0.3, 0.5, 0.7, 0.9};
 /// Best candidates of a bird that are refined and tried with abilities.
 constexpr std::size_t kRefineCount = 3;
+/// Shots tried per standing pig and prefix with a payload dropped on it: those whose payload would fall fastest.
+constexpr std::size_t kDropTries = 3;
 
 /// Shots written with few digits survive any round trip through text (JSON, --shot A,S) bit for bit: dividing by
 /// a whole number of steps per unit gives the double nearest to the decimal, which prints as that decimal.
@@ -46,6 +49,7 @@ struct Evaluated
     std::vector<ScriptedShot> shots;
     ShotOutcome outcome;
     std::optional<double> lastContactS; ///< when the last shot first touched something, after its launch
+    std::vector<DropAim> drops;         ///< a bird that drops a payload: moments its shot flew over a standing pig
     bool valid = false;
 };
 
@@ -116,6 +120,7 @@ private:
     {
         m_seen.clear(); // prefix indices name different sequences from one bird to the next
         const BirdType* bird = m_catalog.findBird(m_level.birds[birdIndex]);
+        m_payload = bird->ability ? bird->ability->dropped() : std::nullopt;
         const double top = floorTo(maxLaunchSpeed(m_level.slingshot, *bird, m_catalog), 100);
         std::vector<Candidate> candidates;
         for (std::size_t p = 0; p < prefixes.size(); ++p)
@@ -171,7 +176,52 @@ private:
             }
             evaluate(prefixes, next, ranked);
         }
+        // A payload (the egg) dropped over each pig still standing, from the shots that flew over it.
+        if (m_options.tryAbilities && m_payload)
+            evaluate(prefixes, dropCandidates(ranked, prefixes), ranked);
+        m_payload.reset();
         return ranked;
+    }
+
+    /// For each prefix and standing pig, the kDropTries shots (without the ability) whose payload would reach the
+    /// pig fastest, each with its drop at the moment the estimate gives.
+    static std::vector<Candidate> dropCandidates(const std::vector<Evaluated>& ranked,
+                                                 const std::vector<std::vector<ScriptedShot>>& prefixes)
+    {
+        struct Try
+        {
+            std::size_t prefix;
+            int pig;
+            double blowMps;
+            Candidate candidate;
+        };
+        std::vector<Try> tries;
+        for (const Evaluated& e : ranked)
+        {
+            if (!e.valid || e.shots.back().abilityAtS)
+                continue;
+            const Candidate base = candidateOf(e, prefixes);
+            for (const DropAim& aim : e.drops)
+            {
+                Candidate c = base;
+                c.shot.abilityAtS = std::max(0.05, roundTo(aim.atS, 100));
+                tries.push_back({base.prefix, aim.pig, aim.blowMps, c});
+            }
+        }
+        // Fastest first; equal ones keep the ranking's order.
+        std::stable_sort(tries.begin(), tries.end(),
+                         [](const Try& a, const Try& b)
+                         { return std::tie(a.prefix, a.pig, b.blowMps) < std::tie(b.prefix, b.pig, a.blowMps); });
+        std::vector<Candidate> chosen;
+        std::size_t taken = 0;
+        for (std::size_t i = 0; i < tries.size(); ++i)
+        {
+            const bool samePig = i > 0 && tries[i - 1].prefix == tries[i].prefix && tries[i - 1].pig == tries[i].pig;
+            taken = samePig ? taken + 1 : 0;
+            if (taken < kDropTries)
+                chosen.push_back(tries[i].candidate);
+        }
+        return chosen;
     }
 
     /// The candidate an evaluated sequence came from: its prefix and its last shot.
@@ -216,6 +266,8 @@ private:
                     e.outcome = outcomeOf(*session);
                     if (!session->shots().empty() && session->shots().back().actualContact)
                         e.lastContactS = session->shots().back().actualContact->t;
+                    if (m_payload && !e.shots.back().abilityAtS)
+                        e.drops = dropAims(*session, *m_payload);
                     e.valid = true;
                 }
                 catch (const LaunchError&)
@@ -245,6 +297,7 @@ private:
     std::size_t m_done = 0;
     std::size_t m_simulations = 0;
     std::set<ShotKey> m_seen;
+    std::optional<DroppedPayload> m_payload; ///< what the bird being searched drops, if anything
 };
 
 } // namespace

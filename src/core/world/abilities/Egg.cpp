@@ -66,6 +66,7 @@ public:
         return fixedDecimals(m_massKg, 1) + " kg, r = " + fixedDecimals(m_radiusM, 2) + " m, " +
                fixedDecimals(m_pushSpeedMps, 1) + " m/s";
     }
+    std::optional<DroppedPayload> dropped() const override { return DroppedPayload{m_pushSpeedMps, m_radiusM}; }
     std::string_view description() const override
     {
         return "the egg leaves downwards that much faster than the bird; the bird gets the equal and opposite "

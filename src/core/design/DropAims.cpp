@@ -1,0 +1,89 @@
+#include "design/DropAims.hpp"
+
+#include <box2d/box2d.h>
+
+#include <cmath>
+
+namespace abalike
+{
+
+namespace
+{
+
+struct Target
+{
+    int pig = -1;
+    double x = 0.0;
+    double topY = 0.0;
+};
+
+/// Where a payload let go at (x, y) with velocity (vx, vy) comes down to height targetY, and how fast it falls
+/// there; false when it starts below that height.
+bool landing(double x, double y, double vx, double vy, double targetY, double g, double& landX, double& fallMps)
+{
+    const double drop = y - targetY;
+    if (drop <= 0.0 || g <= 0.0)
+        return false;
+    const double tau = (vy + std::sqrt(vy * vy + 2.0 * g * drop)) / g;
+    landX = x + vx * tau;
+    fallMps = g * tau - vy;
+    return true;
+}
+
+} // namespace
+
+std::vector<DropAim> dropAims(const GameSession& session, const DroppedPayload& payload)
+{
+    std::vector<DropAim> aims;
+    if (session.shots().empty())
+        return aims;
+    const ShotRecord& shot = session.shots().back();
+    const std::vector<std::array<double, 3>>& path = shot.actualPath;
+    const double endS = shot.actualContact ? shot.actualContact->t : (path.empty() ? 0.0 : path.back()[0]);
+    std::vector<Target> targets;
+    double birdRadius = 0.0;
+    for (const Entity& e : session.world().entities())
+    {
+        if (e.kind == EntityKind::Bird && e.defIndex == static_cast<int>(session.shots().size()) - 1)
+            birdRadius = 0.5 * e.widthM;
+        if (e.kind != EntityKind::Pig || !e.alive || e.body == nullptr)
+            continue;
+        const b2Vec2 at = e.body->GetPosition();
+        targets.push_back({e.defIndex, at.x, at.y + 0.5 * e.widthM + payload.radiusM});
+    }
+    const double g = session.level().environment.gravity;
+    // The payload leaves below the bird, payload.speedMps faster downwards; the bird's velocity is the path's slope.
+    for (const Target& target : targets)
+    {
+        double previousMiss = 0.0;
+        double previousS = -1.0;
+        for (std::size_t i = 1; i < path.size() && path[i][0] <= endS; ++i)
+        {
+            const double dt = path[i][0] - path[i - 1][0];
+            if (dt <= 0.0)
+                continue;
+            const double vx = (path[i][1] - path[i - 1][1]) / dt;
+            const double vy = (path[i][2] - path[i - 1][2]) / dt;
+            double landX = 0.0;
+            double fall = 0.0;
+            if (!landing(path[i][1], path[i][2] - birdRadius - payload.radiusM, vx, vy - payload.speedMps, target.topY,
+                         g, landX, fall))
+            {
+                previousS = -1.0;
+                continue;
+            }
+            const double miss = landX - target.x;
+            if (previousS >= 0.0 && (previousMiss < 0.0) != (miss < 0.0))
+            {
+                // Between two samples the landing point passed over the pig: interpolate the moment.
+                const double share = previousMiss / (previousMiss - miss);
+                aims.push_back({target.pig, previousS + share * (path[i][0] - previousS), fall});
+            }
+            previousMiss = miss;
+            previousS = path[i][0];
+        }
+    }
+    return aims;
+}
+
+} // namespace abalike
