@@ -15,6 +15,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -151,13 +152,21 @@ std::map<std::string, std::array<int, 3>> breakThroughCounts(const std::vector<G
     return counts;
 }
 
-/// The same over every wood or ice block the bird broke, at any contact of its shot.
-std::array<int, 3> allBreakCounts(const std::vector<GridShot>& grid)
+/// Below this sideways speed a bird has no direction to keep that a player could see (a roll, a bird pinned in a
+/// collapse): the any-contact table also shows the breaks on either side of it.
+constexpr double kSidewaysMps = 1.0;
+
+/// The same over every wood or ice block the bird broke, at any contact of its shot, of the breaks where the bird
+/// moved sideways at least minMps and below maxMps before it.
+std::array<int, 3> allBreakCounts(const std::vector<GridShot>& grid, double minMps = 0.0,
+                                  double maxMps = std::numeric_limits<double>::infinity())
 {
     std::array<int, 3> counts{};
     for (const GridShot& g : grid)
         for (const BirdBreak& b : g.breaks)
         {
+            if (std::abs(b.vxBefore) < minMps || std::abs(b.vxBefore) >= maxMps)
+                continue;
             ++counts[0];
             counts[1] += b.vxBefore * b.vxAfter > 0.0 ? 1 : 0;
             counts[2] += b.vxBefore * b.vxAfter < 0.0 ? 1 : 0;
@@ -351,12 +360,18 @@ int runFeelBench(const BenchOptions& options)
     // Every wood or ice block the bird broke, at any contact of the shot, not only the first.
     const std::array<int, 3> allBefore = allBreakCounts(before);
     const std::array<int, 3> all = allBreakCounts(grid);
+    const std::array<int, 3> fast = allBreakCounts(grid, kSidewaysMps);
+    const std::array<int, 3> slow = allBreakCounts(grid, 0.0, kSidewaysMps);
     const double allKeepShare = all[0] > 0 ? static_cast<double>(all[1]) / all[0] : 0.0;
     md << "Every wood or ice block the bird broke at any contact of its shot:\n\n"
        << "| rules | breaks | bird keeps moving forward | bird bounces back |\n|---|---:|---:|---:|\n"
        << "| before | " << allBefore[0] << " | " << share(allBefore[1], allBefore[0]) << " | "
        << share(allBefore[2], allBefore[0]) << " |\n"
-       << "| now | " << all[0] << " | " << share(all[1], all[0]) << " | " << share(all[2], all[0]) << " |\n\n"
+       << "| now | " << all[0] << " | " << share(all[1], all[0]) << " | " << share(all[2], all[0]) << " |\n"
+       << "| now, the bird moving sideways at >= " << fixed(kSidewaysMps, 0) << " m/s before | " << fast[0] << " | "
+       << share(fast[1], fast[0]) << " | " << share(fast[2], fast[0]) << " |\n"
+       << "| now, the bird slower sideways (rolling, pinned) | " << slow[0] << " | " << share(slow[1], slow[0]) << " | "
+       << share(slow[2], slow[0]) << " |\n\n"
        << "Targets: on first contact keeps its sign >= " << fixed(100 * kKeepSignTarget, 0) << " %: **"
        << verdict(keepShare >= kKeepSignTarget) << "**; reverses <= " << fixed(100 * kReverseTarget, 0) << " %: **"
        << verdict(reverseShare <= kReverseTarget)
