@@ -2,6 +2,7 @@
 
 #include <box2d/box2d.h>
 
+#include <array>
 #include <cmath>
 
 namespace abalike
@@ -30,6 +31,31 @@ bool landing(double x, double y, double vx, double vy, double targetY, double g,
     return true;
 }
 
+/// A sample of the flown path with the bird's velocity there (the path's slope over the step before it).
+struct FlightSample
+{
+    double t = 0.0;
+    double x = 0.0;
+    double y = 0.0;
+    double vx = 0.0;
+    double vy = 0.0;
+};
+
+std::vector<FlightSample> freeFlight(const ShotRecord& shot)
+{
+    const std::vector<std::array<double, 3>>& path = shot.actualPath;
+    const double endS = shot.actualContact ? shot.actualContact->t : (path.empty() ? 0.0 : path.back()[0]);
+    std::vector<FlightSample> samples;
+    for (std::size_t i = 1; i < path.size() && path[i][0] <= endS; ++i)
+    {
+        const double dt = path[i][0] - path[i - 1][0];
+        if (dt > 0.0)
+            samples.push_back({path[i][0], path[i][1], path[i][2], (path[i][1] - path[i - 1][1]) / dt,
+                               (path[i][2] - path[i - 1][2]) / dt});
+    }
+    return samples;
+}
+
 } // namespace
 
 std::vector<DropAim> dropAims(const GameSession& session, const DroppedPayload& payload)
@@ -38,36 +64,30 @@ std::vector<DropAim> dropAims(const GameSession& session, const DroppedPayload& 
     if (session.shots().empty())
         return aims;
     const ShotRecord& shot = session.shots().back();
-    const std::vector<std::array<double, 3>>& path = shot.actualPath;
-    const double endS = shot.actualContact ? shot.actualContact->t : (path.empty() ? 0.0 : path.back()[0]);
+    // The catalog, not the world: by the time the solver asks, the bird may have been retired from the world.
+    const BirdType* bird = session.catalog().findBird(shot.bird);
+    const double birdRadius = bird != nullptr ? bird->radiusM : 0.0;
     std::vector<Target> targets;
-    double birdRadius = 0.0;
     for (const Entity& e : session.world().entities())
     {
-        if (e.kind == EntityKind::Bird && e.defIndex == static_cast<int>(session.shots().size()) - 1)
-            birdRadius = 0.5 * e.widthM;
         if (e.kind != EntityKind::Pig || !e.alive || e.body == nullptr)
             continue;
         const b2Vec2 at = e.body->GetPosition();
         targets.push_back({e.defIndex, at.x, at.y + 0.5 * e.widthM + payload.radiusM});
     }
+    const std::vector<FlightSample> samples = freeFlight(shot);
     const double g = session.level().environment.gravity;
-    // The payload leaves below the bird, payload.speedMps faster downwards; the bird's velocity is the path's slope.
+    // The payload leaves below the bird, payload.speedMps faster downwards.
     for (const Target& target : targets)
     {
         double previousMiss = 0.0;
         double previousS = -1.0;
-        for (std::size_t i = 1; i < path.size() && path[i][0] <= endS; ++i)
+        for (const FlightSample& s : samples)
         {
-            const double dt = path[i][0] - path[i - 1][0];
-            if (dt <= 0.0)
-                continue;
-            const double vx = (path[i][1] - path[i - 1][1]) / dt;
-            const double vy = (path[i][2] - path[i - 1][2]) / dt;
             double landX = 0.0;
             double fall = 0.0;
-            if (!landing(path[i][1], path[i][2] - birdRadius - payload.radiusM, vx, vy - payload.speedMps, target.topY,
-                         g, landX, fall))
+            if (!landing(s.x, s.y - birdRadius - payload.radiusM, s.vx, s.vy - payload.speedMps, target.topY, g, landX,
+                         fall))
             {
                 previousS = -1.0;
                 continue;
@@ -77,10 +97,10 @@ std::vector<DropAim> dropAims(const GameSession& session, const DroppedPayload& 
             {
                 // Between two samples the landing point passed over the pig: interpolate the moment.
                 const double share = previousMiss / (previousMiss - miss);
-                aims.push_back({target.pig, previousS + share * (path[i][0] - previousS), fall});
+                aims.push_back({target.pig, previousS + share * (s.t - previousS), fall});
             }
             previousMiss = miss;
-            previousS = path[i][0];
+            previousS = s.t;
         }
     }
     return aims;

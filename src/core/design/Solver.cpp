@@ -25,6 +25,9 @@ constexpr double kAbilityFractions[] = {0.3, 0.5, 0.7, 0.9};
 constexpr std::size_t kRefineCount = 3;
 /// Shots tried per standing pig and prefix with a payload dropped on it: those whose payload would fall fastest.
 constexpr std::size_t kDropTries = 3;
+/// Offsets, in seconds, tried around each estimated drop moment: the estimate ignores drag and what the payload
+/// strikes on its way down (a hatch's edge, a rim), and a bird flying 8 m/s sideways moves 0.4 m in 0.05 s.
+constexpr double kDropSpreadS[] = {0.0, -0.05, 0.05};
 
 /// Shots written with few digits survive any round trip through text (JSON, --shot A,S) bit for bit: dividing by
 /// a whole number of steps per unit gives the double nearest to the decimal, which prints as that decimal.
@@ -218,8 +221,14 @@ private:
         {
             const bool samePig = i > 0 && tries[i - 1].prefix == tries[i].prefix && tries[i - 1].pig == tries[i].pig;
             taken = samePig ? taken + 1 : 0;
-            if (taken < kDropTries)
-                chosen.push_back(tries[i].candidate);
+            if (taken >= kDropTries)
+                continue;
+            for (const double offsetS : kDropSpreadS)
+            {
+                Candidate c = tries[i].candidate;
+                c.shot.abilityAtS = std::max(0.05, roundTo(*c.shot.abilityAtS + offsetS, 100));
+                chosen.push_back(c);
+            }
         }
         return chosen;
     }
