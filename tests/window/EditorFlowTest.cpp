@@ -2,7 +2,10 @@
 // files it writes and the run's trace.
 #include "RunGame.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -86,8 +89,8 @@ TEST_F(EditorFlow, AScriptedRunPlacesTwoBlocksAndAPigAndSaves)
 TEST_F(EditorFlow, GenerateHereDropsAStandingStructureAsOneUndoStep)
 {
     // Insert > Generate here > towers > medium (up to 20): a structure of the generator's layouts, verified to stand,
-    // dropped at the view's centre (the pointer is on the menu) onto the ground; Ctrl+S saves it. The second run
-    // generates two and takes the second back with one Ctrl+Z: what it saves is the first run's structure.
+    // in hand until a click on the scene drops it there, onto the ground; Ctrl+S saves it. The second run generates
+    // two and takes the second back with one Ctrl+Z: what it saves is the first run's structure.
     const auto generateAt = [](int frame)
     {
         std::string steps;
@@ -100,13 +103,15 @@ TEST_F(EditorFlow, GenerateHereDropsAStandingStructureAsOneUndoStep)
                  {7, R"("mouse": "move", "x": 460, "y": 146)"},
                  {8, R"("mouse": "press", "button": "left", "x": 460, "y": 146)"},
                  {8, R"("mouse": "release", "button": "left", "x": 460, "y": 146)"},
-                 {12, R"("mouse": "move", "x": 700, "y": 300)"}})
+                 {12, R"("mouse": "move", "x": 700, "y": 300)"},
+                 {13, R"("mouse": "press", "button": "left", "x": 700, "y": 300)"},
+                 {13, R"("mouse": "release", "button": "left", "x": 700, "y": 300)"}})
             steps += "{\"frame\": " + std::to_string(frame + dt) + ", " + event + "},\n";
         return steps;
     };
     const std::string file = m_dir.file("generated.json");
     const GameRun run = edit("'" + file + "' --frames 24" + script("[" + generateAt(4) + R"(
-        {"frame": 18, "key": "S", "ctrl": true}])"));
+        {"frame": 19, "key": "S", "ctrl": true}])"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.values("editor-generate", "kind"), (std::vector<std::string>{"towers"}));
     EXPECT_EQ(run.values("editor-generate", "error"), (std::vector<std::string>{"false"}));
@@ -115,8 +120,18 @@ TEST_F(EditorFlow, GenerateHereDropsAStandingStructureAsOneUndoStep)
     EXPECT_GE(bodies, 8u);
     EXPECT_LE(bodies, 20u);
     EXPECT_GE(saved["pigs"].size(), 1u);
+    double left = 1e9, right = -1e9;
     for (const auto& block : saved["blocks"])
+    {
         EXPECT_GE(block["y"].get<double>() - 0.5 * block["h"].get<double>(), -1e-9) << "on the ground, not in it";
+        left = std::min(left, block["x"].get<double>() - 0.5 * block["w"].get<double>());
+        right = std::max(right, block["x"].get<double>() + 0.5 * block["w"].get<double>());
+    }
+    // Where the click was (right of the view's centre, where it went when the menu dropped it at once): the
+    // structure's middle within a grid step (0.25 m) of it.
+    const std::vector<std::string> droppedAt = run.values("editor-drop", "x");
+    ASSERT_EQ(droppedAt.size(), 1u);
+    EXPECT_NEAR(0.5 * (left + right), std::stod(droppedAt[0]), 0.25 + 1e-9);
 
     const std::string twice = m_dir.file("twice.json");
     const GameRun undo = edit("'" + twice + "' --frames 44" + script("[" + generateAt(4) + generateAt(20) + R"(
@@ -249,7 +264,8 @@ TEST_F(EditorFlow, ALevelWithGeometryProblemsOpensWithThemListed)
 
 TEST_F(EditorFlow, PrefabsMirrorAndPolygonCornersWorkWithTheMouseAndFindingsFollowEveryEdit)
 {
-    // Insert > My prefabs > lean-to (from the data folder's prefabs/; a submenu), Ctrl+M mirrors it, the wheel zooms, a
+    // Insert > My prefabs > lean-to (from the data folder's prefabs/; a submenu) in hand, a click drops it on the
+    // ground in the scene's middle, Ctrl+M mirrors it, the wheel zooms, a
     // right drag pans, a click selects the hill, its top-left corner is dragged up; Ctrl+S saves. The level opened with
     // an overlap, which the re-check after each edit keeps finding. (tools/gallery takes docs/img/editor-tools.png from
     // the same steps.)
@@ -266,7 +282,10 @@ TEST_F(EditorFlow, PrefabsMirrorAndPolygonCornersWorkWithTheMouseAndFindingsFoll
         {"frame": 12, "mouse": "move", "x": 340, "y": 102},
         {"frame": 13, "mouse": "press", "button": "left", "x": 340, "y": 102},
         {"frame": 13, "mouse": "release", "button": "left", "x": 340, "y": 102},
-        {"frame": 16, "key": "M", "ctrl": true},
+        {"frame": 15, "mouse": "move", "x": 575, "y": 560},
+        {"frame": 16, "mouse": "press", "button": "left", "x": 575, "y": 560},
+        {"frame": 16, "mouse": "release", "button": "left", "x": 575, "y": 560},
+        {"frame": 17, "key": "M", "ctrl": true},
         {"frame": 18, "mouse": "move", "x": 560, "y": 600},
         {"frame": 19, "wheel": 2, "x": 560, "y": 600},
         {"frame": 20, "wheel": 2, "x": 560, "y": 600},

@@ -65,11 +65,18 @@ void EditorClipboard::insertPrefab(const std::filesystem::path& file)
     try
     {
         const EditableLevel prefab = loadLevelForEditing(file.string(), Catalog::builtin());
-        const std::string why =
-            m_ctx.scene().insertBodies(prefab.level, m_tools.insertionPoint(), "Insert " + file.stem().string());
-        m_ctx.message =
-            why.empty() ? "Inserted " + file.stem().string() : "Cannot insert " + file.stem().string() + ": " + why;
-        m_ctx.messageIsError = !why.empty();
+        if (prefab.level.blocks.empty() && prefab.level.pigs.empty() && prefab.level.terrain.empty())
+        {
+            m_ctx.message = "Cannot insert " + file.stem().string() + ": it holds no blocks, pigs or terrain";
+            m_ctx.messageIsError = true;
+        }
+        else
+        {
+            m_tools.hold(prefab.level, "Insert " + file.stem().string());
+            m_ctx.message = file.stem().string() + " in hand: click on the scene to drop it (Shift+click: again; Esc: "
+                                                   "cancel)";
+            m_ctx.messageIsError = false;
+        }
     }
     catch (const LevelLoadError& error)
     {
@@ -89,14 +96,14 @@ void EditorClipboard::generateHere(GeneratedKind kind, int maxBodies)
                 loadGeneratorParts((std::filesystem::path(levelsDirectory()) / "parts").string(), Catalog::builtin());
         const std::optional<LevelDef> structure =
             generateStructure(m_parts, kind, maxBodies, ++m_generated, Catalog::builtin());
-        std::string why = structure
-                              ? m_ctx.scene().insertBodies(*structure, m_tools.insertionPoint(), "Generate " + name)
-                              : "none of 8 layouts stood on its own";
         const std::size_t bodies = structure ? structure->blocks.size() + structure->pigs.size() : 0;
-        m_ctx.message = why.empty() ? "Generated " + name + " " + std::to_string(m_generated) + ": " +
-                                          std::to_string(bodies) + " bodies, stands on its own"
-                                    : "Cannot generate " + name + ": " + why;
-        m_ctx.messageIsError = !why.empty();
+        if (structure)
+            m_tools.hold(*structure, "Generate " + name);
+        m_ctx.message = structure
+                            ? "Generated " + name + " " + std::to_string(m_generated) + ": " + std::to_string(bodies) +
+                                  " bodies, stands on its own; click on the scene to drop it (Esc: cancel)"
+                            : "Cannot generate " + name + ": none of 8 layouts stood on its own";
+        m_ctx.messageIsError = !structure;
     }
     catch (const std::exception& error) // a part that does not load, or no part with a pig in the budget
     {

@@ -18,13 +18,15 @@ class SceneTools;
 class EditorClipboard
 {
 public:
-    EditorClipboard(EditorContext& context, const SceneTools& tools) : m_ctx(context), m_tools(tools) {}
+    EditorClipboard(EditorContext& context, SceneTools& tools) : m_ctx(context), m_tools(tools) {}
 
     void copySelection(bool cut);
     void paste();
+    /// Puts the prefab's bodies in hand (SceneTools::hold): the next click on the scene drops them.
     void insertPrefab(const std::filesystem::path& file);
     /// "Generate here": a structure of that kind within maxBodies (abalike generate's layouts), verified to stand on
-    /// its own, dropped at the insertion point onto the surface below as one undo step. Each call takes the next seed.
+    /// its own, put in hand: the next click on the scene drops it there onto the surface below as one undo step.
+    /// Each call takes the next seed.
     void generateHere(GeneratedKind kind, int maxBodies);
     void saveSelectionAsPrefab();
 
@@ -33,7 +35,7 @@ public:
 
 private:
     EditorContext& m_ctx;
-    const SceneTools& m_tools;
+    SceneTools& m_tools;
     std::vector<GeneratorPart> m_parts; ///< levels/parts/, read on the first "Generate here"
     std::uint64_t m_generated = 0;      ///< structures generated so far: the next one's seed
 };

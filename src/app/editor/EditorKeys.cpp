@@ -42,7 +42,7 @@ void EditorScreen::handleKey(const sf::Event::KeyEvent& key)
     {
     case K::Escape:
         if (m_tools.tool != SceneTools::Tool::Select)
-            m_tools.tool = SceneTools::Tool::Select;
+            m_tools.reset(); // and drops what the drop tool held
         else if (!m_ctx.scene().selection().empty())
             m_ctx.scene().clearSelection();
         else

@@ -6,8 +6,10 @@
 #include "shell/App.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
+#include <algorithm>
 #include <cmath>
 #include <imgui.h>
+#include <limits>
 
 namespace abalike::app
 {
@@ -37,6 +39,34 @@ void SceneDrawing::addOutline(const Camera& camera, const ObjectRef& ref, float 
 {
     const std::vector<sf::Vector2f> points = closed(m_ctx.scene().outline(ref));
     m_mesh.addPolyline(points, widthPx * camera.metresPerPixel(), colour);
+}
+
+void SceneDrawing::addHeldOutline(const Camera& camera, sf::Vector2f pointer, float widthPx)
+{
+    const LevelDef& held = m_tools.held->bodies;
+    std::vector<std::vector<sf::Vector2f>> outlines;
+    for (const TerrainDef& terrain : held.terrain)
+        outlines.push_back(closed(m_ctx.scene().outlineOf(terrain)));
+    for (const BlockDef& block : held.blocks)
+        outlines.push_back(closed(m_ctx.scene().outlineOf(block)));
+    for (const PigDef& pig : held.pigs)
+        outlines.push_back(closed(m_ctx.scene().outlineOf(pig)));
+    float left = std::numeric_limits<float>::infinity(), right = -left, bottom = left;
+    for (const std::vector<sf::Vector2f>& outline : outlines)
+        for (const sf::Vector2f& p : outline)
+        {
+            left = std::min(left, p.x);
+            right = std::max(right, p.x);
+            bottom = std::min(bottom, p.y);
+        }
+    const float groundY = static_cast<float>(m_ctx.scene().level().groundY);
+    const sf::Vector2f shift(pointer.x - 0.5f * (left + right), std::max(pointer.y, groundY) - bottom);
+    for (std::vector<sf::Vector2f>& outline : outlines)
+    {
+        for (sf::Vector2f& p : outline)
+            p += shift;
+        m_mesh.addPolyline(outline, widthPx * camera.metresPerPixel(), kGhost);
+    }
 }
 
 void SceneDrawing::drawGrid(const Camera& camera)
@@ -126,7 +156,9 @@ void SceneDrawing::drawOverlay(sf::RenderTarget& target)
     }
 
     // Where the current tool would put its object, snapped as it will be.
-    if (m_tools.tool != SceneTools::Tool::Select && m_tools.pointerOnScene)
+    if (m_tools.tool == SceneTools::Tool::Drop && m_tools.held && m_tools.pointerOnScene)
+        addHeldOutline(camera, m_ctx.view.toWorld(m_tools.pointer), 2.0f * scale);
+    else if (m_tools.tool != SceneTools::Tool::Select && m_tools.pointerOnScene)
     {
         const sf::Vector2f world = m_ctx.view.toWorld(m_tools.pointer);
         const ObjectDef object = m_tools.toolObject(world);

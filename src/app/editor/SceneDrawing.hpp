@@ -37,6 +37,8 @@ private:
     void drawOverlay(sf::RenderTarget& target);
     void drawGrid(const Camera& camera);
     void addOutline(const Camera& camera, const ObjectRef& ref, float widthPx, sf::Color colour);
+    /// The drop tool's bodies as outlines, their bottom centre at the pointer (never below the ground).
+    void addHeldOutline(const Camera& camera, sf::Vector2f pointer, float widthPx);
 
     EditorContext& m_ctx;
     const SceneTools& m_tools;

@@ -8,6 +8,7 @@
 #include <abalike/util/Angles.hpp>
 #include <cmath>
 #include <imgui.h>
+#include <utility>
 
 namespace abalike::app
 {
@@ -158,6 +159,7 @@ ObjectDef SceneTools::toolObject(sf::Vector2f world) const
         return sling;
     }
     case Tool::Select:
+    case Tool::Drop:
         break;
     }
     return blockTemplate;
@@ -230,6 +232,11 @@ void SceneTools::handleMouse(const sf::Event& event, PlayTest& play)
 void SceneTools::pressOnScene(sf::Vector2f pixel, bool shift, bool ctrl)
 {
     const sf::Vector2f world = m_ctx.view.toWorld(pixel);
+    if (tool == Tool::Drop)
+    {
+        dropHeld(world, shift);
+        return;
+    }
     if (tool != Tool::Select)
     {
         try
@@ -374,6 +381,36 @@ void SceneTools::chooseHill()
     terrainTemplate.points = {{-3.0, -0.75}, {3.0, -0.75}, {2.0, 0.25}, {0.5, 0.75}, {-0.5, 0.75}, {-2.0, 0.25}};
     terrainTemplate.widthM = 6.0;
     terrainTemplate.heightM = 1.5;
+}
+
+void SceneTools::hold(LevelDef bodies, std::string label)
+{
+    held = HeldBodies{std::move(bodies), std::move(label)};
+    tool = Tool::Drop;
+}
+
+void SceneTools::dropHeld(sf::Vector2f world, bool shift)
+{
+    if (!held)
+    {
+        tool = Tool::Select;
+        return;
+    }
+    const std::string why =
+        m_ctx.scene().insertBodies(held->bodies, std::array<double, 2>{world.x, world.y}, held->label);
+    const std::size_t count = m_ctx.scene().selection().size();
+    m_ctx.message = why.empty() ? held->label + ": " + std::to_string(count) + " bodies dropped"
+                                : "Cannot drop " + held->label + ": " + why;
+    m_ctx.messageIsError = !why.empty();
+    m_ctx.app.trace().write(
+        "editor-drop",
+        {{"label", held->label}, {"x", world.x}, {"y", world.y}, {"bodies", why.empty() ? count : 0}, {"why", why}});
+    // Shift drops another copy; otherwise back to selecting, with the dropped group selected to adjust.
+    if (!shift)
+    {
+        held.reset();
+        tool = Tool::Select;
+    }
 }
 
 void SceneTools::chooseTerrainBox()

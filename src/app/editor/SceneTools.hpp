@@ -5,6 +5,7 @@
 #include <abalike/edit/SceneEditor.hpp>
 #include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace abalike::app
@@ -26,6 +27,15 @@ public:
         Pig,
         Terrain,
         Slingshot,
+        Drop, ///< the held bodies (Insert > a prefab, Generate here) drop where the click is
+    };
+
+    /// Bodies waiting for a click on the scene: they follow the pointer as an outline, and a click drops them there
+    /// onto the surface below as one undo step (the menu that made them is where the pointer was).
+    struct HeldBodies
+    {
+        LevelDef bodies;
+        std::string label; ///< the undo step's name ("Insert pyramid", "Generate towers")
     };
 
     /// A corner of the one selected terrain polygon (or the middle of an edge, which adds a corner) under a pixel.
@@ -41,11 +51,17 @@ public:
     /// A mouse event the panels did not take; while the scene plays it goes to the play test.
     void handleMouse(const sf::Event& event, PlayTest& play);
     /// Back to selecting, as after opening a scene.
-    void reset() { tool = Tool::Select; }
+    void reset()
+    {
+        tool = Tool::Select;
+        held.reset();
+    }
     /// The terrain tool with a polygon hill (six corners; its corners then edited on the scene).
     void chooseHill();
     /// The terrain tool with a 4 x 1 m box.
     void chooseTerrainBox();
+    /// The drop tool with these bodies in hand.
+    void hold(LevelDef bodies, std::string label);
 
     /// The object the current tool would place with its centre at a world point.
     ObjectDef toolObject(sf::Vector2f world) const;
@@ -62,12 +78,14 @@ public:
     BlockDef blockTemplate{BlockShape::Box, "wood", 0.0, 0.0, 1.0, 1.0, 0.0, 0.1};
     PigDef pigTemplate{"small", 0.0, 0.0};
     TerrainDef terrainTemplate{0.0, 0.0, 4.0, 1.0, 0.0, {}};
-    sf::Vector2f pointer; ///< the pointer's last pixel
+    std::optional<HeldBodies> held; ///< what the drop tool holds
+    sf::Vector2f pointer;           ///< the pointer's last pixel
     bool pointerOnScene = false;
     std::optional<sf::Vector2f> bandFrom; ///< a selection rectangle's first corner (world)
 
 private:
     void pressOnScene(sf::Vector2f pixel, bool shift, bool ctrl);
+    void dropHeld(sf::Vector2f world, bool shift);
     void moveOnScene(sf::Vector2f pixel);
     void releaseOnScene(sf::Vector2f pixel);
     std::optional<ObjectRef> resizeHandleAt(sf::Vector2f pixel) const;
