@@ -1,4 +1,5 @@
 #include <abalike/design/GeneratorLayouts.hpp>
+#include <abalike/design/LayoutTwins.hpp>
 
 #include "../SanitizerBuild.hpp"
 
@@ -162,6 +163,37 @@ TEST(Generator, LayoutDistanceIsZeroForTheSameLayoutMovedAndGrowsWithDifference)
     LevelDef apart;
     apart.blocks.push_back({BlockShape::Box, "stone", 20.0, 5.0, 0.25, 2.0, 0.0, 0.1}); // in the air: no cell shared
     EXPECT_DOUBLE_EQ(layoutDistance(a, apart, Catalog::builtin()), 1.0);
+}
+
+TEST(Generator, LayoutTwinsAreTheSamePartsAFewTenthsApartWhateverTheirMaterials)
+{
+    // A frame (two posts and a plank, a pig inside) and a box beside it.
+    LevelDef a;
+    a.blocks = {{BlockShape::Box, "wood", 20.0, 1.0, 0.25, 2.0, 0.0, 0.1},
+                {BlockShape::Box, "wood", 22.0, 1.0, 0.25, 2.0, 0.0, 0.1},
+                {BlockShape::Box, "wood", 21.0, 2.125, 2.6, 0.25, 0.0, 0.1},
+                {BlockShape::Box, "ice", 24.2, 0.6, 1.2, 1.2, 0.0, 0.1}};
+    a.pigs = {{"small", 21.0, 0.25}};
+    // The box 0.3 m nearer and the plank of stone: the grid sees a difference, a player does not.
+    LevelDef nearer = a;
+    nearer.blocks[3].x -= 0.3;
+    nearer.blocks[2].material = "stone";
+    EXPECT_GT(layoutDistance(a, nearer, Catalog::builtin()), 0.0);
+    EXPECT_DOUBLE_EQ(layoutTwinShare(a, nearer), 1.0);
+    // The box 2 m further: one body of five has no partner, so they are not twins.
+    LevelDef apart = a;
+    apart.blocks[3].x += 2.0;
+    EXPECT_DOUBLE_EQ(layoutTwinShare(a, apart), 0.8);
+    EXPECT_LT(layoutTwinShare(a, apart), kTwinShare);
+    // A larger pig is another body; a level with nothing is twin to none.
+    LevelDef largerPig = a;
+    largerPig.pigs[0].type = "large";
+    EXPECT_DOUBLE_EQ(layoutTwinShare(a, largerPig), 0.8);
+    EXPECT_DOUBLE_EQ(layoutTwinShare(a, LevelDef{}), 0.0);
+    // Counted both ways: an extra block makes the larger level's share the smaller one.
+    LevelDef extra = a;
+    extra.blocks.push_back({BlockShape::Box, "stone", 26.0, 0.5, 1.0, 1.0, 0.0, 0.1});
+    EXPECT_DOUBLE_EQ(layoutTwinShare(a, extra), 5.0 / 6.0);
 }
 
 TEST(Generator, FortyLayoutsOfEachKindAreAllDifferentAndMostStand)

@@ -9,6 +9,7 @@
 
 #include <abalike/design/Generator.hpp>
 #include <abalike/design/GeneratorLayouts.hpp>
+#include <abalike/design/LayoutTwins.hpp>
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/level/LevelWriter.hpp>
@@ -212,6 +213,9 @@ int runGenerateBench(const BenchOptions& options)
     }
     double closest = 1.0;
     std::string closestPair = "-";
+    std::size_t twins = 0;
+    double mostAlike = 0.0;
+    std::string mostAlikePair = "-";
     for (std::size_t a = 0; a < made.size(); ++a)
         for (std::size_t b = a + 1; b < made.size(); ++b)
         {
@@ -220,6 +224,13 @@ int runGenerateBench(const BenchOptions& options)
             {
                 closest = d;
                 closestPair = made[a].id + " and " + made[b].id;
+            }
+            const double share = layoutTwinShare(made[a], made[b]);
+            twins += share >= kTwinShare ? 1 : 0;
+            if (share > mostAlike)
+            {
+                mostAlike = share;
+                mostAlikePair = made[a].id + " and " + made[b].id;
             }
         }
 
@@ -241,7 +252,11 @@ int runGenerateBench(const BenchOptions& options)
         md << "| attempts rejected: " << reason << " | " << rejected[reason] << " | |\n";
     md << "| kinds | " << kinds.size() << " of " << generatedKinds().size() << " | every kind (over 200 levels) |\n"
        << "| closest two layouts (occupancy-grid distance) | " << fixedText(closest, 3) << " (" << closestPair
-       << ") | > 0: no two alike |\n"
+       << ") | |\n"
+       << "| layout twins (>= " << fixedText(100 * kTwinShare, 0) << " % of the bodies of each paired within "
+       << fixedText(kTwinSidewaysM, 1) << " m sideways, " << fixedText(kTwinVerticalM, 1) << " m up or down) | "
+       << twins << " (most alike: " << mostAlikePair << ", " << fixedText(100 * mostAlike, 0)
+       << " %) | 0: no two alike |\n"
        << "| pigs defeated by toppling over the solver's wins | " << toppled << " of " << pigs << " ("
        << fixedText(100.0 * toppleShare, 0) << " %) | >= " << fixedText(100 * kToppleTarget, 0) << " % |\n\n"
        << "Kinds: ";
