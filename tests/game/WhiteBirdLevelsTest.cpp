@@ -1,3 +1,5 @@
+#include "../SanitizerBuild.hpp"
+
 #include <abalike/design/Solver.hpp>
 #include <abalike/level/LevelIO.hpp>
 
@@ -23,6 +25,8 @@ protected:
 // pig) and wins; without abilities it cannot.
 TEST_P(WhiteBirdLevels, TheEggIsTheSolversToolAndNothingElseWins)
 {
+    if (test::kSanitizerBuild)
+        GTEST_SKIP() << "two full solves take 40 s a level under the sanitizers; the Release stage runs them";
     const LevelDef cellar = level();
     const Solution withEgg = solveLevel(cellar, Catalog::builtin(), {});
     ASSERT_TRUE(withEgg.outcome.won) << GetParam();
