@@ -26,7 +26,7 @@ protected:
 };
 
 /// The solver's win of the first shipped castle (levels/endless/101-0.3.json, `abalike solve`).
-const std::string kWinCages101 = " --shot 8.8,28.5 --shot -7.5,31.17";
+const std::string kWinBridge101 = " --shot 70.0,24.0 --shot 17.5,21.21";
 
 TEST_F(EndlessFlow, TheTitlesEntryOpensAShippedCastleShownByItsSeed)
 {
@@ -35,16 +35,16 @@ TEST_F(EndlessFlow, TheTitlesEntryOpensAShippedCastleShownByItsSeed)
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.values("endless-level", "generated"), (std::vector<std::string>{"101:0.3"}));
     EXPECT_EQ(run.values("endless-level", "shipped"), (std::vector<std::string>{"true"}));
-    EXPECT_EQ(run.values("level", "title"), (std::vector<std::string>{"Cages 101"}));
+    EXPECT_EQ(run.values("level", "title"), (std::vector<std::string>{"Bridge 101"}));
     EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"title", "play"}));
     const std::vector<std::string> shown = run.values("texts", "shown");
     ASSERT_FALSE(shown.empty());
-    EXPECT_NE(shown.back().find("\"Cages 101\""), std::string::npos) << "the HUD names the castle by its seed alone";
+    EXPECT_NE(shown.back().find("\"Bridge 101\""), std::string::npos) << "the HUD names the castle by its seed alone";
 }
 
 TEST_F(EndlessFlow, AWinMakesTheNextCastleHarderAndTheCardCountsTheRun)
 {
-    const GameRun run = play("--endless --frames 560" + kWinCages101 + script(R"([{"frame": 520, "key": "N"}])"));
+    const GameRun run = play("--endless --frames 960" + kWinBridge101 + script(R"([{"frame": 920, "key": "N"}])"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.values("finished", "won"), (std::vector<std::string>{"true"}));
     EXPECT_EQ(run.values("endless-record", "levels_won"), (std::vector<std::string>{"1"}));

@@ -2,6 +2,7 @@
 
 #include "edit/EditHelpers.hpp"
 
+#include <abalike/design/PartVariation.hpp>
 #include <abalike/flight/GravityPresets.hpp>
 #include <abalike/level/WorldTheme.hpp>
 
@@ -185,13 +186,13 @@ LevelDef cutAt(const LevelDef& part, double height, const Catalog& catalog)
     return cut;
 }
 
-/// Builds a level from left to right out of named parts.
+/// Builds a level from left to right out of named parts, each varied (stretched, mirrored, iced) as it is placed.
 class Builder
 {
 public:
-    Builder(LevelDef& level, const std::vector<GeneratorPart>& parts, const Catalog& catalog, double start,
-            int maxBodies)
-        : m_level(level), m_parts(parts), m_catalog(catalog), m_x(start), m_maxBodies(maxBodies)
+    Builder(LevelDef& level, const std::vector<GeneratorPart>& parts, const Catalog& catalog, GeneratorRng& rng,
+            double start, int maxBodies)
+        : m_level(level), m_parts(parts), m_catalog(catalog), m_rng(rng), m_x(start), m_maxBodies(maxBodies)
     {
     }
 
@@ -204,24 +205,50 @@ public:
         return nullptr;
     }
 
-    /// Places the part with its left edge at the builder's x plus gap, on a surface at base; false (and nothing
-    /// placed) when the part is missing or would take the level over the body budget.
+    /// Places the part, varied, with its left edge at the builder's x plus gap, on a surface at base; false (and
+    /// nothing placed) when the part is missing or would take the level over the body budget.
     bool place(const std::string& name, double gap, double base = 0.0)
     {
         const LevelDef* shape = part(name);
-        return shape != nullptr && placeShape(*shape, gap, base);
+        return shape != nullptr && placeShape(varied(*shape), gap, base);
     }
 
     /// As place(), the part cut to a height drawn from its storey lines, or whole: one part gives towers of several
     /// heights. What is cut rested on the rest, so the rest stands.
-    bool placeCut(const std::string& name, double gap, GeneratorRng& rng, double base = 0.0)
+    bool placeCut(const std::string& name, double gap, double base = 0.0, int leave = 0)
+    {
+        const std::optional<LevelDef> shape = cutVaried(name, leave);
+        return shape && placeShape(*shape, gap, base);
+    }
+
+    /// The part of that name cut as placeCut() cuts it and varied, or nullopt when the folder has none. The heights
+    /// drawn from are those that leave `leave` bodies of the budget for what comes after; when none does, nullopt
+    /// (leave > 0) or any height (leave 0: placeShape decides).
+    std::optional<LevelDef> cutVaried(const std::string& name, int leave = 0) const
     {
         const LevelDef* shape = part(name);
         if (shape == nullptr)
-            return false;
-        const std::vector<double> lines = storeyLines(*shape, m_catalog);
-        const std::size_t choice = rng.index(lines.size() + 1);
-        return placeShape(choice == lines.size() ? *shape : cutAt(*shape, lines[choice], m_catalog), gap, base);
+            return std::nullopt;
+        std::vector<LevelDef> cuts;
+        for (const double line : storeyLines(*shape, m_catalog))
+            cuts.push_back(cutAt(*shape, line, m_catalog));
+        cuts.push_back(*shape);
+        std::vector<const LevelDef*> fitting;
+        for (const LevelDef& cut : cuts)
+            if (fits(bodiesOf(cut) + leave))
+                fitting.push_back(&cut);
+        if (fitting.empty() && leave > 0)
+            return std::nullopt;
+        if (fitting.empty())
+            for (const LevelDef& cut : cuts)
+                fitting.push_back(&cut);
+        return varied(*fitting[m_rng.index(fitting.size())]);
+    }
+
+    /// The shape with a variation drawn for it.
+    LevelDef varied(const LevelDef& shape) const
+    {
+        return varyPart(shape, drawPartVariation(shape, m_rng, m_catalog), m_catalog);
     }
 
     /// The part of that name with only what lies below height, or null when the folder has none.
@@ -255,16 +282,6 @@ public:
         return true;
     }
 
-    /// Width of the part of that name (0 when missing).
-    double widthOf(const std::string& name) const
-    {
-        const LevelDef* shape = part(name);
-        if (shape == nullptr)
-            return 0.0;
-        const Extent e = extentOf(*shape, m_catalog);
-        return e.right - e.left;
-    }
-
     /// Whether `more` bodies still fit in the budget.
     bool fits(int more) const { return bodiesOf(m_level) + more <= m_maxBodies; }
 
@@ -277,6 +294,7 @@ private:
     LevelDef& m_level;
     const std::vector<GeneratorPart>& m_parts;
     const Catalog& m_catalog;
+    GeneratorRng& m_rng;
     double m_x;
     int m_maxBodies;
 };
@@ -298,7 +316,7 @@ bool placeAny(Builder& b, GeneratorRng& rng, const std::vector<std::string>& nam
 bool placeAnyCut(Builder& b, GeneratorRng& rng, const std::vector<std::string>& names, double lo, double hi)
 {
     const double gap = rng.metres(lo, hi);
-    return b.placeCut(pick(rng, names), gap, rng);
+    return b.placeCut(pick(rng, names), gap);
 }
 
 void towers(Builder& b, GeneratorRng& rng)
@@ -306,29 +324,36 @@ void towers(Builder& b, GeneratorRng& rng)
     // Closer than they are tall, so each can fall onto the next; the first has pigs. Each is cut to a height of its
     // own (whole towers of three parts came out alike across seeds).
     const std::size_t count = 3 + rng.index(2); // those over the body budget are left out
-    b.placeCut(pick(rng, {"tower-3", "ice-tower-2", "keep-2"}), 0.0, rng);
+    b.placeCut(pick(rng, {"tower-3", "ice-tower-2", "keep-2"}), 0.0);
     for (std::size_t i = 1; i < count; ++i)
         placeAnyCut(b, rng, {"tower-3", "ice-tower-2", "keep-2", "column-4"}, 0.4, 1.9);
 }
 
 void castle(Builder& b, GeneratorRng& rng)
 {
-    // An outwork, the keep, and one or two towers behind it, keep and towers each cut to a height of its own: an
-    // outwork and a whole keep alone came out alike across seeds (ten of 34 castles in a 200-level run).
-    b.place(pick(rng, {"gate", "cage", "frame", "tnt-on-frame"}), 0.0);
-    if (!placeAnyCut(b, rng, {"fortress", "castle", "keep-2"}, 1.0, 3.0))
-        b.placeCut("keep-2", rng.metres(1.0, 3.0), rng);
-    const std::size_t towers = 1 + rng.index(2);
+    // One or two outworks, the keep, and one to three towers behind it, keep and towers each cut to a height of its
+    // own: an outwork and a whole keep alone came out alike across seeds (ten of 34 castles in a 200-level run).
+    const std::vector<std::string> outworks{"gate",      "cage",         "frame",       "tnt-on-frame",
+                                            "pyramid-3", "double-frame", "roofed-frame"};
+    b.place(pick(rng, outworks), 0.0);
+    if (rng.coin())
+        placeAny(b, rng, outworks, 0.6, 2.0);
+    // The keep leaves room for a tower (a whole fortress and a cage filled the budget: a few castles, many alike).
+    constexpr int kTowerRoom = 4;
+    const double keepGap = rng.metres(1.0, 3.0);
+    if (!b.placeCut(pick(rng, {"fortress", "castle", "keep-2"}), keepGap, 0.0, kTowerRoom))
+        b.placeCut("keep-2", rng.metres(1.0, 3.0), 0.0, kTowerRoom);
+    const std::size_t towers = 1 + rng.index(3); // those over the body budget are left out
     for (std::size_t i = 0; i < towers; ++i)
-        placeAnyCut(b, rng, {"tower-3", "ice-tower-2", "column-4", "keep-2"}, 0.4, 2.0);
+        placeAnyCut(b, rng, {"tower-3", "ice-tower-2", "column-4", "keep-2", "roofed-frame"}, 0.4, 2.0);
 }
 
 void cages(Builder& b, GeneratorRng& rng)
 {
-    const std::size_t count = 3 + rng.index(2);
+    const std::size_t count = 3 + rng.index(3);
     for (std::size_t i = 0; i < count; ++i)
     {
-        const std::vector<std::string> names{"cage", "frame", "double-frame", "roofed-frame"};
+        const std::vector<std::string> names{"cage", "frame", "double-frame", "roofed-frame", "gate"};
         if (i == 0)
             b.place(pick(rng, names), 0.0);
         else
@@ -338,34 +363,47 @@ void cages(Builder& b, GeneratorRng& rng)
 
 void pyramid(Builder& b, GeneratorRng& rng)
 {
-    b.placeCut("pyramid-3", 0.0, rng);
+    b.placeCut("pyramid-3", 0.0);
     const double gap = rng.metres(0.8, 2.0);
-    if (!b.placeCut(pick(rng, {"frame", "roofed-frame", "double-frame"}), gap, rng))
+    if (!b.placeCut(pick(rng, {"frame", "roofed-frame", "double-frame", "cage", "gate"}), gap))
         b.place("frame", gap); // the smallest frame, in a small budget
     if (rng.coin())
-        b.placeCut("pyramid-3", rng.metres(0.8, 2.0), rng);
-    placeAnyCut(b, rng, {"frame", "roofed-frame", "cage", "tower-3"}, 0.8, 2.0);
+        b.placeCut("pyramid-3", rng.metres(0.8, 2.0));
+    placeAnyCut(b, rng, {"frame", "roofed-frame", "cage", "tower-3", "ice-tower-2", "double-frame"}, 0.8, 2.0);
+    if (rng.coin())
+        b.placeCut("pyramid-3", rng.metres(0.8, 2.0));
+}
+
+/// A pig of a size drawn from types, resting on a surface at height.
+PigDef pigOn(GeneratorRng& rng, const Catalog& catalog, const std::vector<std::string>& types, double x, double height)
+{
+    const std::string type = pick(rng, types);
+    const PigType* pig = catalog.findPig(type);
+    return {type, x, tidy(height + (pig != nullptr ? pig->radiusM : 0.25))};
 }
 
 void bridge(Builder& b, GeneratorRng& rng)
 {
-    // Stone columns of two to four blocks and a wood plank across each span, a pig on it and a pig beneath; one or
-    // two spans, sometimes an outwork before and a frame after (a single span alone repeated across seeds).
+    // Stone columns of two to four blocks and a wood plank across each span, a pig (or a caged pig) on it and a pig
+    // beneath; one to three spans, sometimes an outwork before and a frame after (a single span alone repeated across
+    // seeds).
     const bool outwork = rng.coin();
     if (outwork)
-        b.place(pick(rng, {"frame", "cage", "pyramid-3"}), 0.0);
+        b.place(pick(rng, {"frame", "cage", "pyramid-3", "roofed-frame", "gate"}), 0.0);
     const double top = 0.8 * static_cast<double>(2 + rng.index(3)); // column-4's blocks are 0.8 m
-    const std::optional<LevelDef> column = b.partBelow("column-4", top);
-    const std::size_t spans = 1 + rng.index(2);
+    std::optional<LevelDef> column = b.partBelow("column-4", top);
+    if (column)
+        column = b.varied(*column); // every column alike: the planks span between them
+    const std::size_t spans = 1 + rng.index(3);
     if (!column || !b.placeShape(*column, outwork ? rng.metres(1.0, 2.5) : 0.0))
         return;
     const Extent columnExtent = extentOf(*column, b.catalog());
     const double columnWidth = columnExtent.right - columnExtent.left;
     std::vector<double> rights{b.x()}; // each column's right edge
-    for (std::size_t i = 0; i < spans && b.placeShape(*column, rng.metres(2.6, 4.0)); ++i)
+    for (std::size_t i = 0; i < spans && b.placeShape(*column, rng.metres(2.6, 4.6)); ++i)
         rights.push_back(b.x());
     LevelDef& level = b.level();
-    for (std::size_t j = 0; j + 1 < rights.size() && b.fits(3); ++j)
+    for (std::size_t j = 0; j + 1 < rights.size() && b.fits(4); ++j)
     {
         // Planks meet over a shared column's middle; the outer ends reach the outer edges.
         const double left = rights[j] - (j == 0 ? columnWidth : 0.5 * columnWidth);
@@ -373,11 +411,18 @@ void bridge(Builder& b, GeneratorRng& rng)
         const double middle = tidy(0.5 * (rights[j] + rights[j + 1] - columnWidth));
         level.blocks.push_back(
             {BlockShape::Box, "wood", tidy(0.5 * (left + right)), top + 0.125, tidy(right - left), 0.25, 0.0, 0.1});
-        level.pigs.push_back({"small", middle, top + 0.25 + 0.25});
-        level.pigs.push_back({"medium", middle, 0.35});
+        if (rng.coin())
+            level.pigs.push_back(pigOn(rng, b.catalog(), {"small", "medium"}, middle, top + 0.25));
+        else
+        {
+            // A cage on the deck, its pig inside on the cage's floor.
+            level.blocks.push_back({BlockShape::HollowBox, "wood", middle, tidy(top + 0.25 + 0.6), 1.2, 1.2, 0.0, 0.1});
+            level.pigs.push_back({"small", middle, tidy(top + 0.25 + 0.1 + 0.25)});
+        }
+        level.pigs.push_back(pigOn(rng, b.catalog(), {"small", "medium", "large"}, middle, 0.0));
     }
     if (rng.coin())
-        placeAny(b, rng, {"frame", "cage"}, 1.0, 2.5);
+        placeAnyCut(b, rng, {"frame", "cage", "roofed-frame", "tower-3", "ice-tower-2"}, 1.0, 2.5);
 }
 
 /// A structure on terrain: a hill from the ground, or an island floating above it; one structure or two side by side.
@@ -389,10 +434,20 @@ void raised(Builder& b, GeneratorRng& rng, bool island)
         on.push_back(pick(rng, names));
     const double margin = rng.metres(1.0, 2.0);
     const double between = rng.metres(0.6, 1.6);
-    double width = 2.0 * margin + between * static_cast<double>(on.size() - 1);
-    for (const std::string& name : on)
-        width += b.widthOf(name);
     const double height = island ? rng.metres(2.0, 5.0) : rng.metres(1.5, 3.0);
+    // Cut and varied before the ground is sized: a stretched structure must not hang over its edge.
+    std::vector<LevelDef> shapes;
+    for (const std::string& name : on)
+        if (std::optional<LevelDef> shape = b.cutVaried(name))
+            shapes.push_back(std::move(*shape));
+    if (shapes.empty())
+        return;
+    double width = 2.0 * margin + between * static_cast<double>(shapes.size() - 1);
+    for (const LevelDef& shape : shapes)
+    {
+        const Extent e = extentOf(shape, b.catalog());
+        width += e.right - e.left;
+    }
     const double thickness = island ? 1.0 : height;
     TerrainDef ground;
     ground.x = tidy(b.x() + 0.5 * width);
@@ -401,9 +456,12 @@ void raised(Builder& b, GeneratorRng& rng, bool island)
     ground.heightM = thickness;
     b.level().terrain.push_back(ground);
     const double right = b.x() + width;
-    for (std::size_t i = 0; i < on.size(); ++i)
-        if (!b.placeCut(on[i], i == 0 ? margin : between, rng, height))
-            b.advance(b.widthOf(on[i]) + (i == 0 ? margin : between)); // over budget: its place stays empty
+    for (std::size_t i = 0; i < shapes.size(); ++i)
+        if (!b.placeShape(shapes[i], i == 0 ? margin : between, height))
+        {
+            const Extent e = extentOf(shapes[i], b.catalog());
+            b.advance(e.right - e.left + (i == 0 ? margin : between)); // over budget: its place stays empty
+        }
     b.advance(right - b.x());
     if (rng.coin())
         placeAny(b, rng, {"frame", "cage"}, 1.0, 2.0); // below an island, beside a hill
@@ -411,12 +469,19 @@ void raised(Builder& b, GeneratorRng& rng, bool island)
 
 void tntStore(Builder& b, GeneratorRng& rng)
 {
-    // Neighbours within the crate's blast.
-    b.placeCut(pick(rng, {"frame", "tower-3", "double-frame", "keep-2"}), 0.0, rng);
-    b.place("tnt-on-frame", rng.metres(0.5, 1.5));
-    placeAnyCut(b, rng, {"frame", "cage", "roofed-frame", "ice-tower-2"}, 0.5, 1.5);
-    if (rng.coin())
-        placeAnyCut(b, rng, {"tower-3", "column-4", "cage", "keep-2"}, 0.5, 2.0);
+    // Neighbours within the crate's blast: the crate second or third of three or four structures.
+    const std::size_t count = 3 + rng.index(2);
+    const std::size_t crate = 1 + rng.index(2);
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        if (i == crate)
+            b.place("tnt-on-frame", rng.metres(0.5, 2.0));
+        else if (i == 0)
+            b.placeCut(pick(rng, {"frame", "tower-3", "double-frame", "keep-2", "roofed-frame", "ice-tower-2"}), 0.0);
+        else
+            placeAnyCut(b, rng, {"frame", "cage", "roofed-frame", "ice-tower-2", "double-frame", "gate", "tower-3"},
+                        0.5, 2.0);
+    }
 }
 
 } // namespace
@@ -486,7 +551,8 @@ GeneratedKind layOut(LevelDef& level, const std::vector<GeneratorPart>& parts, G
 {
     const GeneratedKind drawn = generatedKinds()[rng.index(generatedKinds().size())];
     const GeneratedKind kind = only.value_or(drawn);
-    Builder b(level, parts, catalog, rng.metres(20.0, 30.0), maxBodies);
+    const double start = rng.metres(20.0, 30.0);
+    Builder b(level, parts, catalog, rng, start, maxBodies);
     switch (kind)
     {
     case GeneratedKind::Towers:

@@ -12,6 +12,11 @@ namespace abalike
 namespace
 {
 
+bool sameSize(double a, double b)
+{
+    return std::abs(a - b) <= kTwinSizeShare * std::max(a, b) + 1e-9;
+}
+
 /// A body as the measure sees it: what it is (kind, shape or pig type, size, angle) and where.
 struct TwinBody
 {
@@ -25,10 +30,8 @@ struct TwinBody
 
     bool sameAs(const TwinBody& o) const
     {
-        // Sizes as the files give them: two decimals for blocks, one for terrain (tools/layout-twins rounds so).
-        const double sizeTolerance = kind == 2 ? 0.05 : 0.005;
-        return kind == o.kind && what == o.what && std::abs(widthM - o.widthM) < sizeTolerance &&
-               std::abs(heightM - o.heightM) < sizeTolerance && std::abs(angleDeg - o.angleDeg) < 0.5;
+        return kind == o.kind && what == o.what && sameSize(widthM, o.widthM) && sameSize(heightM, o.heightM) &&
+               std::abs(angleDeg - o.angleDeg) < 0.5;
     }
 };
 
