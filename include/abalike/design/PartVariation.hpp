@@ -24,6 +24,21 @@ struct PartVariation
     std::vector<std::string> pigTypes;
 };
 
+/// The horizontal extent of a part's blocks and pigs (their bounds, as the editor selects them).
+struct PartSpan
+{
+    double left = 1e9;
+    double right = -1e9;
+    double middle() const { return 0.5 * (left + right); }
+    double width() const { return right - left; }
+};
+
+PartSpan partSpan(const LevelDef& part, const Catalog& catalog);
+
+/// Rounded to 0.1 mm: a quarter-metre part stretched by 1.25 keeps its exact edges (0.8125), and a shifted
+/// coordinate its own decimals, while float noise (1.8800000000000001) goes.
+double tidyMetres(double metres);
+
 /// The stretches the generator draws from: a quarter apart, so that two of them look different.
 inline constexpr double kPartStretches[] = {1.0, 1.25, 1.5};
 /// A part is never stretched wider than this (a wide castle stays as it is).

@@ -24,11 +24,7 @@ constexpr double kTouch = 1e-6;
 /// Fewer bodies than this and a layout gets neighbours (the campaign asks 15 of its levels; parts come in threes).
 constexpr int kMinBodies = 12;
 
-struct Extent
-{
-    double left = 0.0;
-    double right = 0.0;
-};
+using Extent = PartSpan;
 
 /// The bounds of every block and pig of a level, as the editor selects them (objectBounds).
 std::vector<std::array<Vec2, 2>> bodyBoxes(const LevelDef& level, const Catalog& catalog)
@@ -41,16 +37,9 @@ std::vector<std::array<Vec2, 2>> bodyBoxes(const LevelDef& level, const Catalog&
     return boxes;
 }
 
-/// The horizontal extent of a part's blocks and pigs.
 Extent extentOf(const LevelDef& part, const Catalog& catalog)
 {
-    Extent e{1e9, -1e9};
-    for (const auto& [lo, hi] : bodyBoxes(part, catalog))
-    {
-        e.left = std::min(e.left, lo[0]);
-        e.right = std::max(e.right, hi[0]);
-    }
-    return e;
+    return partSpan(part, catalog);
 }
 
 int bodiesOf(const LevelDef& level)
@@ -58,11 +47,9 @@ int bodiesOf(const LevelDef& level)
     return static_cast<int>(level.blocks.size() + level.pigs.size());
 }
 
-/// Shifted coordinates keep the parts' own decimals (0.125, 2.6): rounding to 0.1 mm drops the float noise of the
-/// sum (1.8800000000000001) and nothing else.
 double tidy(double metres)
 {
-    return std::round(metres * 1e4) / 1e4;
+    return tidyMetres(metres);
 }
 
 /// Heights in a part's upper two thirds that no block crosses and a plank or a block as wide as it is tall ends at:

@@ -13,12 +13,6 @@ namespace
 
 constexpr double kTouch = 1e-6;
 
-/// Rounded to 0.1 mm: a quarter-metre part stretched by 1.25 keeps its exact edges (0.8125) and loses float noise.
-double tidy(double metres)
-{
-    return std::round(metres * 1e4) / 1e4;
-}
-
 /// Whether a block's angle is a whole number of quarter turns, and whether that turn lays it on its side.
 bool quarterTurn(double angleDeg, bool& onSide)
 {
@@ -27,32 +21,6 @@ bool quarterTurn(double angleDeg, bool& onSide)
         return false;
     onSide = (static_cast<long>(std::round(turns)) % 2) != 0;
     return true;
-}
-
-struct Span
-{
-    double left = 1e9;
-    double right = -1e9;
-    double middle() const { return 0.5 * (left + right); }
-    double width() const { return right - left; }
-};
-
-Span spanOf(const LevelDef& part, const Catalog& catalog)
-{
-    Span s;
-    for (const BlockDef& b : part.blocks)
-    {
-        const auto box = objectBounds(ObjectDef(b), catalog);
-        s.left = std::min(s.left, box[0][0]);
-        s.right = std::max(s.right, box[1][0]);
-    }
-    for (const PigDef& p : part.pigs)
-    {
-        const auto box = objectBounds(ObjectDef(p), catalog);
-        s.left = std::min(s.left, box[0][0]);
-        s.right = std::max(s.right, box[1][0]);
-    }
-    return s;
 }
 
 /// Mirroring turns a right triangle into its mirror image only when its legs are equal (then it is the same triangle
@@ -109,9 +77,32 @@ std::string pigTypeFor(const std::string& type, bool heads)
 
 } // namespace
 
+PartSpan partSpan(const LevelDef& part, const Catalog& catalog)
+{
+    PartSpan s;
+    for (const BlockDef& b : part.blocks)
+    {
+        const auto box = objectBounds(ObjectDef(b), catalog);
+        s.left = std::min(s.left, box[0][0]);
+        s.right = std::max(s.right, box[1][0]);
+    }
+    for (const PigDef& p : part.pigs)
+    {
+        const auto box = objectBounds(ObjectDef(p), catalog);
+        s.left = std::min(s.left, box[0][0]);
+        s.right = std::max(s.right, box[1][0]);
+    }
+    return s;
+}
+
+double tidyMetres(double metres)
+{
+    return std::round(metres * 1e4) / 1e4;
+}
+
 PartVariation drawPartVariation(const LevelDef& part, GeneratorRng& rng, const Catalog& catalog)
 {
-    const double width = spanOf(part, catalog).width();
+    const double width = partSpan(part, catalog).width();
     std::vector<double> stretches;
     for (const double s : kPartStretches)
         if (s == 1.0 || width * s <= kMaxStretchedWidthM + kTouch)
@@ -134,12 +125,12 @@ PartVariation drawPartVariation(const LevelDef& part, GeneratorRng& rng, const C
 
 LevelDef varyPart(const LevelDef& part, const PartVariation& variation, const Catalog& catalog)
 {
-    const double middle = spanOf(part, catalog).middle();
+    const double middle = partSpan(part, catalog).middle();
     const double s = variation.stretch;
     const auto place = [&](double x)
     {
         const double offset = (variation.mirror ? middle - x : x - middle) * s;
-        return tidy(middle + offset);
+        return tidyMetres(middle + offset);
     };
     LevelDef varied = part;
     for (BlockDef& b : varied.blocks)
@@ -156,7 +147,7 @@ LevelDef varyPart(const LevelDef& part, const PartVariation& variation, const Ca
             double& across = onSide ? b.heightM : b.widthM;
             const double along = onSide ? b.widthM : b.heightM;
             if (across >= along - kTouch)
-                across = tidy(across * s);
+                across = tidyMetres(across * s);
         }
         if (variation.ice && b.material == "wood")
             b.material = "ice";
@@ -167,7 +158,7 @@ LevelDef varyPart(const LevelDef& part, const PartVariation& variation, const Ca
         p.x = place(p.x);
         if (i < variation.pigTypes.size() && variation.pigTypes[i] != p.type)
         {
-            p.y = tidy(restingY(p, variation.pigTypes[i], catalog));
+            p.y = tidyMetres(restingY(p, variation.pigTypes[i], catalog));
             p.type = variation.pigTypes[i];
         }
     }
