@@ -180,6 +180,32 @@ TEST(SceneEditorClipboard, APasteLandsOnTheGridAndFallsOntoTheSurfaceFromAnyHeig
     EXPECT_NEAR(editor.level().blocks.back().y, 4.0 + 0.1, 1e-9);
 }
 
+TEST(SceneEditorClipboard, TheOutlineBeforeADropIsWhereTheDropLands)
+{
+    // The Drop tool outlines placedBodies under the pointer; it once moved the group without the grid or the
+    // settling, a grid step (and a fall onto the plinth) away from where the click put it.
+    LevelDef scene = emptyScene();
+    scene.blocks = {box(15.0, 0.5, 4.0, 1.0, "stone")}; // top at y = 1
+    SceneEditor editor(scene);
+    LevelDef frame = emptyScene();
+    frame.blocks = {box(0.0, 1.0, 0.5, 2.0), box(1.5, 1.0, 0.5, 2.0), box(0.75, 2.1, 2.0, 0.2)};
+    frame.pigs = {PigDef{"small", 0.75, 0.25}};
+    const std::array<double, 2> at{14.771127701, 2.63};
+    const std::vector<ObjectDef> outline = editor.placedBodies(frame, at);
+    ASSERT_EQ(outline.size(), 4u);
+    EXPECT_EQ(editor.level().blocks.size(), 1u) << "outlining adds nothing";
+    ASSERT_EQ(editor.insertBodies(frame, at, "Drop"), "");
+    const LevelDef& dropped = editor.level();
+    ASSERT_EQ(dropped.blocks.size(), 4u);
+    for (std::size_t i = 0; i < 3; ++i)
+        EXPECT_EQ(std::get<BlockDef>(outline[i]), dropped.blocks[1 + i]) << i;
+    EXPECT_EQ(std::get<PigDef>(outline[3]), dropped.pigs.back());
+    // On the 0.25 m grid across and standing on the plinth (its posts' bottoms at y = 1).
+    EXPECT_NEAR(dropped.blocks[1].x, 14.0, 1e-9);
+    EXPECT_NEAR(dropped.blocks[1].y, 2.0, 1e-9);
+    EXPECT_TRUE(editor.placedBodies(emptyScene(), at).empty());
+}
+
 TEST(SceneEditorVertices, MovesAddsAndRemovesCornersAndRefusesACrossing)
 {
     LevelDef level = emptyScene();

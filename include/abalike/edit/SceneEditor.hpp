@@ -121,6 +121,9 @@ public:
     /// within snap reach. Returns why not, or an empty string.
     std::string insertBodies(const LevelDef& source, const std::optional<std::array<double, 2>>& at,
                              const std::string& label);
+    /// Where insertBodies would put the blocks, pigs and terrain of `source` (moved to `at`, on the grid, settled),
+    /// without adding them: what the editor outlines under the pointer before a drop.
+    std::vector<ObjectDef> placedBodies(const LevelDef& source, const std::optional<std::array<double, 2>>& at) const;
     /// Pastes clipboard text (a copied selection, or any level file's JSON) as insertBodies does. Returns why not:
     /// text that is not a level, or one without bodies.
     std::string paste(std::string_view text, const std::optional<std::array<double, 2>>& at);

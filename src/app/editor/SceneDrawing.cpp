@@ -43,30 +43,10 @@ void SceneDrawing::addOutline(const Camera& camera, const ObjectRef& ref, float 
 
 void SceneDrawing::addHeldOutline(const Camera& camera, sf::Vector2f pointer, float widthPx)
 {
-    const LevelDef& held = m_tools.held->bodies;
-    std::vector<std::vector<sf::Vector2f>> outlines;
-    for (const TerrainDef& terrain : held.terrain)
-        outlines.push_back(closed(m_ctx.scene().outlineOf(terrain)));
-    for (const BlockDef& block : held.blocks)
-        outlines.push_back(closed(m_ctx.scene().outlineOf(block)));
-    for (const PigDef& pig : held.pigs)
-        outlines.push_back(closed(m_ctx.scene().outlineOf(pig)));
-    float left = std::numeric_limits<float>::infinity(), right = -left, bottom = left;
-    for (const std::vector<sf::Vector2f>& outline : outlines)
-        for (const sf::Vector2f& p : outline)
-        {
-            left = std::min(left, p.x);
-            right = std::max(right, p.x);
-            bottom = std::min(bottom, p.y);
-        }
-    const float groundY = static_cast<float>(m_ctx.scene().level().groundY);
-    const sf::Vector2f shift(pointer.x - 0.5f * (left + right), std::max(pointer.y, groundY) - bottom);
-    for (std::vector<sf::Vector2f>& outline : outlines)
-    {
-        for (sf::Vector2f& p : outline)
-            p += shift;
-        m_mesh.addPolyline(outline, widthPx * camera.metresPerPixel(), kGhost);
-    }
+    // Exactly where a click would drop them: the same placement (grid, settling onto what is below) as the drop.
+    const std::array<double, 2> at{pointer.x, pointer.y};
+    for (const ObjectDef& def : m_ctx.scene().placedBodies(m_tools.held->bodies, at))
+        m_mesh.addPolyline(closed(m_ctx.scene().outlineOf(def)), widthPx * camera.metresPerPixel(), kGhost);
 }
 
 void SceneDrawing::drawGrid(const Camera& camera)

@@ -178,8 +178,8 @@ std::string SceneEditor::copySelection() const
     return writeLevelJson(scene, "");
 }
 
-std::string SceneEditor::insertBodies(const LevelDef& source, const std::optional<std::array<double, 2>>& at,
-                                      const std::string& label)
+std::vector<ObjectDef> SceneEditor::placedBodies(const LevelDef& source,
+                                                 const std::optional<std::array<double, 2>>& at) const
 {
     std::vector<ObjectDef> bodies;
     for (const TerrainDef& terrain : source.terrain)
@@ -188,50 +188,56 @@ std::string SceneEditor::insertBodies(const LevelDef& source, const std::optiona
         bodies.emplace_back(block);
     for (const PigDef& pig : source.pigs)
         bodies.emplace_back(pig);
-    if (bodies.empty())
-        return "it holds no blocks, pigs or terrain";
+    if (bodies.empty() || !at)
+        return bodies;
     const Catalog catalog = levelCatalog(m_level, m_catalog);
-    if (at)
+    double left = std::numeric_limits<double>::infinity(), bottom = left, right = -left;
+    for (const ObjectDef& def : bodies)
     {
-        double left = std::numeric_limits<double>::infinity(), bottom = left, right = -left;
+        const auto [lo, hi] = objectBounds(def, catalog);
+        left = std::min(left, lo[0]);
+        right = std::max(right, hi[0]);
+        bottom = std::min(bottom, lo[1]);
+    }
+    double dx = (*at)[0] - 0.5 * (left + right);
+    double dy = std::max((*at)[1], m_level.groundY) - bottom;
+    // On the grid: the group moves by whole grid steps, so bodies that were on it stay on it.
+    if (m_snap.grid && m_snap.gridM > 0.0)
+    {
+        dx = std::round(dx / m_snap.gridM) * m_snap.gridM;
+        dy = std::max(m_level.groundY - bottom, std::round(dy / m_snap.gridM) * m_snap.gridM);
+    }
+    for (ObjectDef& def : bodies)
+        def = shifted(def, dx, dy);
+    // The group's lowest bodies settle onto what is under them, from any height (a paste above a tower lands on it);
+    // the rest keep formation.
+    if (m_snap.surfaces)
+    {
+        SnapSettings settle = m_snap;
+        settle.grid = false;
+        settle.surfaceReachM = 2.0 * limits::kWorldExtentM;
+        double lift = -std::numeric_limits<double>::infinity();
         for (const ObjectDef& def : bodies)
         {
-            const auto [lo, hi] = objectBounds(def, catalog);
-            left = std::min(left, lo[0]);
-            right = std::max(right, hi[0]);
-            bottom = std::min(bottom, lo[1]);
+            if (kindOf(def) == ObjectKind::Terrain || objectBounds(def, catalog)[0][1] > bottom + dy + 1e-6)
+                continue;
+            const SnapResult snapped = snapObject(m_level, catalog, def, {}, settle);
+            if (snapped.onGround || snapped.restsOn)
+                lift = std::max(lift, snapped.y - centreOf(def)[1]);
         }
-        double dx = (*at)[0] - 0.5 * (left + right);
-        double dy = std::max((*at)[1], m_level.groundY) - bottom;
-        // On the grid: the group moves by whole grid steps, so bodies that were on it stay on it.
-        if (m_snap.grid && m_snap.gridM > 0.0)
-        {
-            dx = std::round(dx / m_snap.gridM) * m_snap.gridM;
-            dy = std::max(m_level.groundY - bottom, std::round(dy / m_snap.gridM) * m_snap.gridM);
-        }
-        for (ObjectDef& def : bodies)
-            def = shifted(def, dx, dy);
-        // The group's lowest bodies settle onto what is under them, from any height (a paste above a tower lands on
-        // it); the rest keep formation.
-        if (m_snap.surfaces)
-        {
-            SnapSettings settle = m_snap;
-            settle.grid = false;
-            settle.surfaceReachM = 2.0 * limits::kWorldExtentM;
-            double lift = -std::numeric_limits<double>::infinity();
-            for (const ObjectDef& def : bodies)
-            {
-                if (kindOf(def) == ObjectKind::Terrain || objectBounds(def, catalog)[0][1] > bottom + dy + 1e-6)
-                    continue;
-                const SnapResult snapped = snapObject(m_level, catalog, def, {}, settle);
-                if (snapped.onGround || snapped.restsOn)
-                    lift = std::max(lift, snapped.y - centreOf(def)[1]);
-            }
-            if (std::isfinite(lift))
-                for (ObjectDef& def : bodies)
-                    def = shifted(def, 0.0, lift);
-        }
+        if (std::isfinite(lift))
+            for (ObjectDef& def : bodies)
+                def = shifted(def, 0.0, lift);
     }
+    return bodies;
+}
+
+std::string SceneEditor::insertBodies(const LevelDef& source, const std::optional<std::array<double, 2>>& at,
+                                      const std::string& label)
+{
+    std::vector<ObjectDef> bodies = placedBodies(source, at);
+    if (bodies.empty())
+        return "it holds no blocks, pigs or terrain";
     LevelDef combined = m_level;
     for (const ObjectDef& def : bodies)
     {
