@@ -24,8 +24,6 @@ constexpr double kTouch = 1e-6;
 /// Fewer bodies than this and a layout gets neighbours (the campaign asks 15 of its levels; parts come in threes).
 constexpr int kMinBodies = 12;
 
-using Extent = PartSpan;
-
 /// The bounds of every block and pig of a level, as the editor selects them (objectBounds).
 std::vector<std::array<Vec2, 2>> bodyBoxes(const LevelDef& level, const Catalog& catalog)
 {
@@ -37,19 +35,9 @@ std::vector<std::array<Vec2, 2>> bodyBoxes(const LevelDef& level, const Catalog&
     return boxes;
 }
 
-Extent extentOf(const LevelDef& part, const Catalog& catalog)
-{
-    return partSpan(part, catalog);
-}
-
 int bodiesOf(const LevelDef& level)
 {
     return static_cast<int>(level.blocks.size() + level.pigs.size());
-}
-
-double tidy(double metres)
-{
-    return tidyMetres(metres);
 }
 
 /// Heights in a part's upper two thirds that no block crosses and a plank or a block as wide as it is tall ends at:
@@ -170,21 +158,21 @@ public:
     {
         if (bodiesOf(m_level) + bodiesOf(shape) > m_maxBodies || bodiesOf(shape) == 0)
             return false;
-        const Extent e = extentOf(shape, m_catalog);
+        const PartSpan e = partSpan(shape, m_catalog);
         const double dx = m_x + gap - e.left;
         for (BlockDef b : shape.blocks)
         {
-            b.x = tidy(b.x + dx);
-            b.y = tidy(b.y + base);
+            b.x = tidyMetres(b.x + dx);
+            b.y = tidyMetres(b.y + base);
             m_level.blocks.push_back(b);
         }
         for (PigDef p : shape.pigs)
         {
-            p.x = tidy(p.x + dx);
-            p.y = tidy(p.y + base);
+            p.x = tidyMetres(p.x + dx);
+            p.y = tidyMetres(p.y + base);
             m_level.pigs.push_back(p);
         }
-        m_x = tidy(e.right + dx);
+        m_x = tidyMetres(e.right + dx);
         return true;
     }
 
@@ -285,7 +273,7 @@ PigDef pigOn(GeneratorRng& rng, const Catalog& catalog, const std::vector<std::s
 {
     const std::string type = pick(rng, types);
     const PigType* pig = catalog.findPig(type);
-    return {type, x, tidy(height + (pig != nullptr ? pig->radiusM : 0.25))};
+    return {type, x, tidyMetres(height + (pig != nullptr ? pig->radiusM : 0.25))};
 }
 
 void bridge(Builder& b, GeneratorRng& rng)
@@ -303,7 +291,7 @@ void bridge(Builder& b, GeneratorRng& rng)
     const std::size_t spans = 1 + rng.index(3);
     if (!column || !b.placeShape(*column, outwork ? rng.metres(1.0, 2.5) : 0.0))
         return;
-    const Extent columnExtent = extentOf(*column, b.catalog());
+    const PartSpan columnExtent = partSpan(*column, b.catalog());
     const double columnWidth = columnExtent.right - columnExtent.left;
     std::vector<double> rights{b.x()}; // each column's right edge
     for (std::size_t i = 0; i < spans && b.placeShape(*column, rng.metres(2.6, 4.6)); ++i)
@@ -314,16 +302,17 @@ void bridge(Builder& b, GeneratorRng& rng)
         // Planks meet over a shared column's middle; the outer ends reach the outer edges.
         const double left = rights[j] - (j == 0 ? columnWidth : 0.5 * columnWidth);
         const double right = rights[j + 1] - (j + 2 == rights.size() ? 0.0 : 0.5 * columnWidth);
-        const double middle = tidy(0.5 * (rights[j] + rights[j + 1] - columnWidth));
-        level.blocks.push_back(
-            {BlockShape::Box, "wood", tidy(0.5 * (left + right)), top + 0.125, tidy(right - left), 0.25, 0.0, 0.1});
+        const double middle = tidyMetres(0.5 * (rights[j] + rights[j + 1] - columnWidth));
+        level.blocks.push_back({BlockShape::Box, "wood", tidyMetres(0.5 * (left + right)), top + 0.125,
+                                tidyMetres(right - left), 0.25, 0.0, 0.1});
         if (rng.coin())
             level.pigs.push_back(pigOn(rng, b.catalog(), {"small", "medium"}, middle, top + 0.25));
         else
         {
             // A cage on the deck, its pig inside on the cage's floor.
-            level.blocks.push_back({BlockShape::HollowBox, "wood", middle, tidy(top + 0.25 + 0.6), 1.2, 1.2, 0.0, 0.1});
-            level.pigs.push_back({"small", middle, tidy(top + 0.25 + 0.1 + 0.25)});
+            level.blocks.push_back(
+                {BlockShape::HollowBox, "wood", middle, tidyMetres(top + 0.25 + 0.6), 1.2, 1.2, 0.0, 0.1});
+            level.pigs.push_back({"small", middle, tidyMetres(top + 0.25 + 0.1 + 0.25)});
         }
         level.pigs.push_back(pigOn(rng, b.catalog(), {"small", "medium", "large"}, middle, 0.0));
     }
@@ -351,21 +340,21 @@ void raised(Builder& b, GeneratorRng& rng, bool island)
     double width = 2.0 * margin + between * static_cast<double>(shapes.size() - 1);
     for (const LevelDef& shape : shapes)
     {
-        const Extent e = extentOf(shape, b.catalog());
+        const PartSpan e = partSpan(shape, b.catalog());
         width += e.right - e.left;
     }
     const double thickness = island ? 1.0 : height;
     TerrainDef ground;
-    ground.x = tidy(b.x() + 0.5 * width);
-    ground.y = tidy(height - 0.5 * thickness);
-    ground.widthM = tidy(width);
+    ground.x = tidyMetres(b.x() + 0.5 * width);
+    ground.y = tidyMetres(height - 0.5 * thickness);
+    ground.widthM = tidyMetres(width);
     ground.heightM = thickness;
     b.level().terrain.push_back(ground);
     const double right = b.x() + width;
     for (std::size_t i = 0; i < shapes.size(); ++i)
         if (!b.placeShape(shapes[i], i == 0 ? margin : between, height))
         {
-            const Extent e = extentOf(shapes[i], b.catalog());
+            const PartSpan e = partSpan(shapes[i], b.catalog());
             b.advance(e.right - e.left + (i == 0 ? margin : between)); // over budget: its place stays empty
         }
     b.advance(right - b.x());
