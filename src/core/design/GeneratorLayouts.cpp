@@ -291,8 +291,8 @@ void bridge(Builder& b, GeneratorRng& rng)
     const std::size_t spans = 1 + rng.index(3);
     if (!column || !b.placeShape(*column, outwork ? rng.metres(1.0, 2.5) : 0.0))
         return;
-    const PartSpan columnExtent = partSpan(*column, b.catalog());
-    const double columnWidth = columnExtent.right - columnExtent.left;
+    const PartSpan columnSpan = partSpan(*column, b.catalog());
+    const double columnWidth = columnSpan.right - columnSpan.left;
     std::vector<double> rights{b.x()}; // each column's right edge
     for (std::size_t i = 0; i < spans && b.placeShape(*column, rng.metres(2.6, 4.6)); ++i)
         rights.push_back(b.x());
