@@ -76,10 +76,10 @@ TEST(BreakThrough, AWoodTowerHitNearItsTopFallsOnTheSmallPigBesideIt)
 {
     // Aims 13.5-15.5 deg meet the top storey 4.0-4.7 m up (of 5.25 m). The bird breaks the near post (60 N s of its
     // 120) and, with the momentum the post had taken handed on to what it pushed, the top of the tower tips over onto
-    // the pig 2.4 m away within 2 s at every one of these aims (4 of 5 under a tower block, once under the bird
-    // itself). Before (no break-through, the broken post's momentum deleted with it) the pig survived every aim.
-    // Which block lands on the pig is chaotic (a millimetre early in the fall moves it by decimetres), so the test
-    // asks for a tower block, not a given one.
+    // the pig 2.4 m away within 2 s at every one of these aims, under a block of its upper storeys each time (4 of 5
+    // before the breaking post yielded to the bird, once under the bird itself). Before (no break-through, the broken
+    // post's momentum deleted with it) the pig survived every aim. Which block lands on the pig is chaotic (a
+    // millimetre early in the fall moves it by decimetres), so the test asks for a tower block, not a given one.
     const LevelDef tower = woodTower();
     int crushedByTheTower = 0;
     for (double angle = 13.5; angle <= 15.5 + 1e-9; angle += 0.5)

@@ -82,8 +82,8 @@ protected:
 TEST_F(SettleCacheTest, ASecondWorldStartsFromTheStoredStateAndPlaysTheSameToTheBit)
 {
     const LevelDef level = castle();
-    const Played first = play(level, 30.0, 21.0);
-    const Played second = play(level, 30.0, 21.0);
+    const Played first = play(level, 36.0, 21.0);
+    const Played second = play(level, 36.0, 21.0);
     EXPECT_FALSE(first.reused);
     EXPECT_TRUE(second.reused);
     EXPECT_EQ(SettleCache::shared().size(), 1u);

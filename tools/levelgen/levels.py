@@ -269,7 +269,7 @@ def l5_6():
                  "On the Moon g = {g} m/s^2: a bird at {v_max:red} m/s flies {earth_g / g|1} times as far and as long "
                  "as on Earth, and a falling block lands slowly, so a tower topples in slow motion.",
                  ["Gentle pulls go a long way here."],
-                 ["red", "red", "red", "black", "red"], s, (30.0, 8.0), slingshot=MOON_SLINGSHOT,
+                 ["red", "red", "red", "black", "red"], s, (15.0, 15.75), slingshot=MOON_SLINGSHOT,
                  environment={"gravity": 1.62}, theme="moon")
 
 
@@ -390,7 +390,7 @@ def l6_5():
                  "A citadel of stone keeps and wooden walls. Stone will not break ({strength:stone} N s), but a keep "
                  "that topples crushes what is under it: look for the weak floor.",
                  ["The TNT sits in the keep's first floor."],
-                 ["black", "red", "red", "yellow", "black"], s, (30.0, 21.0))
+                 ["black", "red", "red", "yellow", "black"], s, (40.0, 21.21))
 
 
 def l6_6():
@@ -448,7 +448,7 @@ def l6_9():
                  "A citadel on the Moon (g = {g} m/s^2): the bird flies {earth_g / g|1} times as far as on Earth at "
                  "the same speed, and the keep falls slowly.",
                  ["A light pull is enough."],
-                 ["red", "red", "black", "red", "red"], s, (17.5, 11.31), slingshot=MOON_SLINGSHOT,
+                 ["red", "red", "black", "red", "red"], s, (12.5, 14.0), slingshot=MOON_SLINGSHOT,
                  environment={"gravity": 1.62}, theme="moon")
 
 
@@ -459,13 +459,15 @@ def l6_10():
     fortress(s, 44, 1.5, "stone", "wood", (None, "helmet", "medium", "large"), ("small", "small"))
     cage(s, 37, 1.5, 1.0, "wood", "small")
     tnt(s, 37, 2.5)
+    tnt(s, 46.8, 2.3)  # on the right castle's far cage: its stone tower beyond has no other weak point
     gate(s, 15, 0, 2.4, 3, 0.6, "stone", "wood", "helmet")
     top = pyramid(s, 57, 0, 4, 0.8, "wood")
     s.pig("small", 57, top)
     return level("6-10", "The Last Fortress",
                  "Two stone castles with helmeted pigs: every idea of the campaign at once. Stone does not break, it "
                  "topples; heavy birds carry momentum; TNT between the castles reaches both.",
-                 ["The TNT between the castles is within reach of both."],
+                 ["The TNT between the castles is within reach of both.",
+                  "The crate beside the right castle's far tower opens it."],
                  ["black", "red", "black", "red", "red"], s, (35.0, 21.21))
 
 

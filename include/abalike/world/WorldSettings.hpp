@@ -41,6 +41,13 @@ struct WorldSettings
     /// whatever struck it keeps the rest of its momentum. false keeps Box2D's impulse as solved, as if the broken
     /// body had been unbreakable for that step (the rule before; tests and `bench feel` compare the two).
     bool breakThrough = true;
+    /// A body that breaks yields instead of holding for the rest of its step (Damage::refundBreakingContacts): what
+    /// struck it keeps at most the part of the contact impulse that stopped its approach (a block that fails at its
+    /// peak load has nothing left to spring back with: no restitution), and friction in the same share as the normal
+    /// impulse (Coulomb's bound: friction cannot exceed mu times the normal impulse the body actually held). false
+    /// keeps the restitution and the whole friction impulse as Box2D solved them (the rule before issue 37; `bench
+    /// feel` compares the two). Only with breakThrough.
+    bool breakingBodyYields = true;
     /// A block that breaks hands the momentum it took in its last step to the bodies it was pushing (by their
     /// contact impulses, at the contact points) instead of taking it away as debris: momentum is conserved through a
     /// break, and a tower hit high tips over (Damage::handOnMomentum). false deletes it with the block (the rule

@@ -63,8 +63,9 @@ struct GridShot
     std::vector<BirdBreak> breaks;            ///< every wood or ice block the bird broke, at any contact
 };
 
-/// The rules of the game: this round's, or the rules before it (the black bird's blast at 250 N s, and a breaking
-/// block's momentum leaving with it).
+/// The rules of the game: this round's, or the rules before it (the black bird's blast at 250 N s, a breaking block's
+/// momentum leaving with it, and a breaking block springing back at what struck it with Box2D's restitution and whole
+/// friction).
 struct Rules
 {
     WorldSettings settings;
@@ -75,6 +76,7 @@ Rules rulesBefore()
 {
     Rules rules;
     rules.settings.handOnMomentum = false;
+    rules.settings.breakingBodyYields = false;
     nlohmann::json text = nlohmann::json::parse(Catalog::builtinJson());
     text["abilities"]["explode"]["impulse_ns"] = 250.0;
     rules.catalog = Catalog::fromJson(text.dump());
@@ -312,7 +314,7 @@ int runFeelBench(const BenchOptions& options)
        << "Campaign levels: " << levels.size() << "; grid: the first bird at 0-60 deg in 6 deg steps at 60, 80 and "
        << "100 % of its fastest launch, " << grid.size() << " shots, " << blockFirst
        << " of them first touched a block. Before: the rules before issue 37 (the black bird's blast 250 N s, a "
-          "breaking block's momentum leaving with it), in the same run. "
+          "breaking block's momentum leaving with it, and springing back at what struck it), in the same run. "
        << loadAverageNote() << "\n\n";
 
     // The birds' roles: each bird against each material at full pull, over a fan of aims that hit a lone block.

@@ -60,16 +60,16 @@ void ContactRecorder::PreSolve(b2Contact* contact, const b2Manifold* /*oldManifo
     }
     // Resting contacts (nearly all of them) are not stored: PostSolve ignores what it does not find.
     if (closing >= m_threshold)
-        m_closingSpeed[contact] = closing;
-    else if (!m_closingSpeed.empty())
-        m_closingSpeed.erase(contact);
+        m_approaches[contact] = {closing, {a->GetLinearVelocity(), b->GetLinearVelocity()}};
+    else if (!m_approaches.empty())
+        m_approaches.erase(contact);
 }
 
 void ContactRecorder::PostSolve(b2Contact* contact, const b2ContactImpulse* impulse)
 {
     m_ledger.postSolve(contact, impulse, m_bird);
-    const auto it = m_closingSpeed.find(contact);
-    if (it == m_closingSpeed.end() || it->second < m_threshold)
+    const auto it = m_approaches.find(contact);
+    if (it == m_approaches.end() || it->second.closing < m_threshold)
         return; // resting contact never hurts
     double total = 0.0;
     for (int i = 0; i < impulse->count; ++i)
@@ -80,6 +80,10 @@ void ContactRecorder::PostSolve(b2Contact* contact, const b2ContactImpulse* impu
     hit.a = entityIndexOf(contact->GetFixtureA()->GetBody());
     hit.b = entityIndexOf(contact->GetFixtureB()->GetBody());
     hit.impulseNs = total;
+    for (int i = 0; i < impulse->count; ++i)
+        hit.tangentImpulseNs += impulse->tangentImpulses[i];
+    hit.restitution = it->second.closing > contact->GetRestitutionThreshold() ? contact->GetRestitution() : 0.0;
+    hit.velocityBefore = it->second.velocity;
     b2WorldManifold manifold;
     contact->GetWorldManifold(&manifold);
     hit.normal = manifold.normal;

@@ -2,6 +2,7 @@
 
 #include "world/ImpulseLedger.hpp"
 
+#include <array>
 #include <box2d/box2d.h>
 #include <optional>
 #include <unordered_map>
@@ -48,8 +49,15 @@ public:
         int a = -1; ///< entity index (-1: not an entity)
         int b = -1;
         double impulseNs = 0.0;
+        /// The restitution Box2D applied to the contact (0 when it closed slower than the restitution threshold):
+        /// impulseNs / (1 + restitution) of the impulse stopped the approach, the rest was the rebound.
+        double restitution = 0.0;
+        /// Friction impulse along Box2D's tangent, b2Cross(normal, 1): b was pushed along it too, a against it.
+        double tangentImpulseNs = 0.0;
         b2Vec2 normal{0.0f, 0.0f};
         b2Vec2 point{0.0f, 0.0f};
+        /// The bodies' linear velocities before the solver acted on the contact (a's, b's).
+        std::array<b2Vec2, 2> velocityBefore{};
     };
 
     /// Touches that began during the last step between a bird (any bullet body: the launched bird, split birds,
@@ -63,7 +71,7 @@ public:
     void clearStep()
     {
         m_impulses.clear();
-        m_closingSpeed.clear();
+        m_approaches.clear();
         m_hits.clear();
         m_birdTouches.clear();
     }
@@ -83,7 +91,13 @@ private:
     std::optional<b2Vec2> m_birdTouch;
     int m_birdTouchOther = -1;
     b2Vec2 m_birdTouchNormal{0.0f, 0.0f};
-    std::unordered_map<const b2Contact*, float> m_closingSpeed; ///< only contacts closing above the threshold
+    /// An impact about to be solved: how fast it closes and the bodies' velocities before the solver.
+    struct Approach
+    {
+        float closing = 0.0f;
+        std::array<b2Vec2, 2> velocity{};
+    };
+    std::unordered_map<const b2Contact*, Approach> m_approaches; ///< only contacts closing above the threshold
     std::unordered_map<int, double> m_impulses;
     std::vector<Hit> m_hits;
     std::vector<std::pair<int, int>> m_birdTouches;

@@ -48,11 +48,38 @@ void Damage::applyStep(int watched)
     explodeCrates();
 }
 
+namespace
+{
+/// What a body that broke under hit gives back to its surviving partner (the striker, or what it was pressing on):
+/// the part of the contact impulse beyond the broken body's kept share, at most what the partner lost that way since
+/// before the contact (a body pinned between the broken one and the ground lost nothing: the ground took the blow).
+b2Vec2 refundFor(const ContactRecorder::Hit& hit, bool brokenIsA, double keptShare, bool yields, const b2Body& partner)
+{
+    // The striker keeps the broken body's share H / J of the contact impulse; a yielding body gives back its rebound
+    // too, and friction in the same share (WorldSettings::breakingBodyYields).
+    const double kept = yields ? std::min(keptShare, 1.0 / (1.0 + hit.restitution)) : keptShare;
+    const double friction = yields ? hit.tangentImpulseNs : 0.0;
+    const b2Vec2 pushed =
+        static_cast<float>(hit.impulseNs) * hit.normal + static_cast<float>(friction) * b2Cross(hit.normal, 1.0f);
+    // b was pushed along the impulse and a against it.
+    const float sign = brokenIsA ? -1.0f : 1.0f;
+    const b2Vec2 full = (sign * static_cast<float>(1.0 - kept)) * pushed;
+    const float length = full.Length();
+    if (!(length > 0.0f))
+        return {0.0f, 0.0f};
+    const b2Vec2 back = (1.0f / length) * full;
+    const b2Vec2 before = hit.velocityBefore[brokenIsA ? 1 : 0];
+    const float lost = partner.GetMass() * b2Dot(before - partner.GetLinearVelocity(), back);
+    return std::clamp(lost, 0.0f, length) * back;
+}
+} // namespace
+
 void Damage::refundBreakingContacts(const std::vector<double>& keptShare, int watched, std::vector<b2Vec2>& givenBack)
 {
     // The solver stopped the striker as if the struck body were unbreakable. A brittle body cannot push back more
-    // than its strength: give each surviving partner the rest of the impulse back along the normal, at the contact
-    // point. In bookkeeping terms the broken body carried that impulse away with it (the first impact's record).
+    // than its strength: give each surviving partner the rest of the impulse back, at the contact point. In
+    // bookkeeping terms the broken body carried that impulse away with it (the first impact's record).
+    const bool yields = m_bodies.settings().breakingBodyYields;
     for (const ContactRecorder::Hit& hit : m_bodies.contacts().hits())
     {
         for (const bool brokenIsA : {true, false})
@@ -65,10 +92,8 @@ void Damage::refundBreakingContacts(const std::vector<double>& keptShare, int wa
             b2Body* body = m_bodies.entity(partner).body;
             if (body == nullptr || body->GetType() != b2_dynamicBody)
                 continue;
-            const double refund = (1.0 - keptShare[static_cast<std::size_t>(broken)]) * hit.impulseNs;
-            // b was pushed along the normal and a against it: the refund restores what the partner lost.
-            const float sign = brokenIsA ? -1.0f : 1.0f;
-            const b2Vec2 impulse = (sign * static_cast<float>(refund)) * hit.normal;
+            const b2Vec2 impulse =
+                refundFor(hit, brokenIsA, keptShare[static_cast<std::size_t>(broken)], yields, *body);
             body->ApplyLinearImpulse(impulse, hit.point, true);
             givenBack[static_cast<std::size_t>(broken)] += impulse;
             if (broken == watched)
@@ -127,8 +152,17 @@ void Damage::handOnMomentum(const std::vector<double>& keptShare, const std::vec
             pushes.push_back({other, at, impulse});
             total += impulse;
         }
+        // A block pushes a body at most up to its own speed: a heavy block falling on a light body pinned to the
+        // ground would otherwise fling it many times faster than the block moved. What the bodies ahead cannot take
+        // stays with the debris.
+        const b2Vec2 velocity = (1.0f / body->GetMass()) * momentum;
+        const b2Vec2 direction = (1.0f / momentum.Length()) * momentum;
         for (const Push& push : pushes)
-            push.body->ApplyLinearImpulse((push.weight / total) * momentum, push.point, true);
+        {
+            const float share = (push.weight / total) * momentum.Length();
+            const float room = push.body->GetMass() * b2Dot(velocity - push.body->GetLinearVelocity(), direction);
+            push.body->ApplyLinearImpulse(std::clamp(room, 0.0f, share) * direction, push.point, true);
+        }
     }
 }
 

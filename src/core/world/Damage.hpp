@@ -40,8 +40,8 @@ public:
     static constexpr double kBulletSpeedMps = 10.0;
 
 private:
-    /// Break-through: every surviving body that struck a breaking one gets back the rest of the contact impulse
-    /// along the contact normal.
+    /// Break-through: every surviving body that struck a breaking one gets back the rest of the contact impulse (the
+    /// normal impulse, and with WorldSettings::breakingBodyYields the rebound and friction too).
     /// What each breaking body gave back is added to givenBack (per entity).
     void refundBreakingContacts(const std::vector<double>& keptShare, int watched, std::vector<b2Vec2>& givenBack);
     /// A breaking block's momentum goes on to the bodies it was pushing (WorldSettings::handOnMomentum).
