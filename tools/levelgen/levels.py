@@ -467,7 +467,7 @@ def l6_10():
                  "Two stone castles with helmeted pigs: every idea of the campaign at once. Stone does not break, it "
                  "topples; heavy birds carry momentum; TNT between the castles reaches both.",
                  ["The TNT between the castles is within reach of both.",
-                  "The crate beside the right castle's far tower opens it."],
+                  "The crate beside the right castle's far tower reaches the pig inside it."],
                  ["black", "red", "black", "red", "red"], s, (35.0, 21.21))
 
 
