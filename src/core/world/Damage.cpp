@@ -156,10 +156,11 @@ void Damage::handOnMomentum(const std::vector<double>& keptShare, const std::vec
         // ground would otherwise fling it many times faster than the block moved. What the bodies ahead cannot take
         // stays with the debris.
         const b2Vec2 velocity = (1.0f / body->GetMass()) * momentum;
-        const b2Vec2 direction = (1.0f / momentum.Length()) * momentum;
+        const float amount = momentum.Length();
+        const b2Vec2 direction = (1.0f / amount) * momentum;
         for (const Push& push : pushes)
         {
-            const float share = (push.weight / total) * momentum.Length();
+            const float share = (push.weight / total) * amount;
             const float room = push.body->GetMass() * b2Dot(velocity - push.body->GetLinearVelocity(), direction);
             push.body->ApplyLinearImpulse(std::clamp(room, 0.0f, share) * direction, push.point, true);
         }
