@@ -121,22 +121,25 @@ public:
 /// ability's own defaults). Throws std::runtime_error naming a bad number.
 using AbilityFactory = std::function<std::shared_ptr<const Ability>(const nlohmann::json& params)>;
 
-/// Every ability the program knows, by name.
+/// One line of the table of abilities: the name the catalog uses and the function that makes it.
+struct AbilityTableEntry
+{
+    std::string_view name;
+    std::shared_ptr<const Ability> (*make)(const nlohmann::json& params);
+};
+
+/// Every ability the program knows: an explicit table (src/core/world/abilities/AbilityTable.cpp), so linking the
+/// core in any way keeps them all.
+const std::vector<AbilityTableEntry>& abilityTable();
+
+/// Every ability the program knows, by name, read from the table.
 class AbilityRegistry
 {
 public:
-    /// Adds an ability; a second one of the same name is a programming error (std::logic_error).
-    static void add(std::string name, AbilityFactory factory);
     /// The factory of an ability, or null when no ability has that name.
     static const AbilityFactory* find(std::string_view name);
-    /// Every registered name, sorted.
+    /// Every known name, sorted.
     static std::vector<std::string> names();
-};
-
-/// Registers an ability at start-up: `const AbilityRegistrar kSplit{"split", makeSplit};` in the ability's file.
-struct AbilityRegistrar
-{
-    AbilityRegistrar(std::string name, AbilityFactory factory);
 };
 
 /// The name the catalog uses for a bird without an ability.

@@ -112,15 +112,4 @@ void SoundLayer::frameUpdate(PlayView& view, double frameS)
     m_lastSpeedMps = aim->speedMps;
 }
 
-namespace
-{
-/// The bottom play layer: it draws nothing and only listens to the session.
-const PlayLayerRegistrar kLayer{10, "sound",
-                                [](App& app) -> std::unique_ptr<PlayLayer>
-                                {
-                                    (void)app;
-                                    return std::make_unique<SoundLayer>();
-                                }};
-} // namespace
-
 } // namespace abalike::app

@@ -338,7 +338,7 @@ void EditorFiles::fileDialog()
     folders.erase(std::unique(folders.begin(), folders.end()), folders.end());
     ImGui::BeginChild("files", ImVec2(0.0f, 9.0f * ImGui::GetTextLineHeightWithSpacing()), true);
     for (const std::filesystem::path& folder : folders)
-        for (const std::filesystem::path& file : levelFilesIn(folder))
+        for (const std::filesystem::path& file : levelFilesForDialogs(folder))
             if (ImGui::Selectable(file.string().c_str(), file.string() == m_fileDialogPath,
                                   ImGuiSelectableFlags_AllowDoubleClick))
             {

@@ -175,7 +175,7 @@ void EditorPanels::prefabMenu()
         if (!ImGui::BeginMenu(title))
             return;
         const std::vector<std::filesystem::path> files =
-            folder.empty() ? std::vector<std::filesystem::path>{} : levelFilesIn(folder);
+            folder.empty() ? std::vector<std::filesystem::path>{} : levelFilesForDialogs(folder);
         if (files.empty())
             ImGui::TextDisabled("(none in %s)", folder.string().c_str());
         for (const std::filesystem::path& file : files)

@@ -19,7 +19,7 @@ EditorSource sandboxSource()
 }
 
 /// Level files in a folder, sorted, for the open and save dialogs.
-std::vector<std::filesystem::path> levelFilesIn(const std::filesystem::path& folder)
+std::vector<std::filesystem::path> levelFilesForDialogs(const std::filesystem::path& folder)
 {
     std::vector<std::filesystem::path> files;
     std::error_code ec;

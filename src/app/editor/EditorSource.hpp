@@ -26,7 +26,7 @@ EditorSource sandboxSource();
 /// be read or whose JSON or format is invalid throws LevelLoadError (every problem, as `check` prints them); a
 /// level with geometry problems opens with them listed.
 /// Level files in a folder (campaign manifests left out), sorted: the open and save dialogs' lists, the prefabs.
-std::vector<std::filesystem::path> levelFilesIn(const std::filesystem::path& folder);
+std::vector<std::filesystem::path> levelFilesForDialogs(const std::filesystem::path& folder);
 
 EditorSource editorSourceFor(const std::filesystem::path& path);
 

@@ -1,5 +1,6 @@
 #include "editor/ScenePlay.hpp"
 
+#include "layers/PlayLayerTable.hpp"
 #include "play/PlayDrawing.hpp"
 #include "shell/App.hpp"
 

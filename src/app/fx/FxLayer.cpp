@@ -185,15 +185,4 @@ void FxLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     }
 }
 
-namespace
-{
-/// On top: debris falls in front of the overlays, and score pop-ups are never hidden under a panel.
-const PlayLayerRegistrar kLayer{40, "fx",
-                                [](App& app) -> std::unique_ptr<PlayLayer>
-                                {
-                                    (void)app;
-                                    return std::make_unique<FxLayer>();
-                                }};
-} // namespace
-
 } // namespace abalike::app

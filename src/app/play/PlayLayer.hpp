@@ -55,7 +55,7 @@ public:
 };
 
 /// Something drawn over the play screen and given its input first: the teaching overlay, path history, tools.
-/// Layers are made once per play screen by makePlayLayers() and kept across restarts and levels.
+/// Layers are made once per play screen (layers/PlayLayerTable.hpp) and kept across restarts and levels.
 class PlayLayer
 {
 public:
@@ -104,18 +104,5 @@ public:
         (void)view;
     }
 };
-
-/// Makes one play layer for a play screen.
-using PlayLayerFactory = std::function<std::unique_ptr<PlayLayer>(App&)>;
-
-/// Registers a play layer from its own file: `const PlayLayerRegistrar kFx{40, "fx", ...};`. Layers are stacked by
-/// order, lowest at the bottom: drawn first, offered input last.
-struct PlayLayerRegistrar
-{
-    PlayLayerRegistrar(int order, std::string name, PlayLayerFactory make);
-};
-
-/// The layers every play screen gets, bottom first: every registered layer, by order.
-std::vector<std::unique_ptr<PlayLayer>> makePlayLayers(App& app);
 
 } // namespace abalike::app

@@ -9,11 +9,17 @@ namespace abalike::app
 namespace
 {
 
-std::map<std::string, std::unique_ptr<AbilityLook>, std::less<>>& looks()
+const std::map<std::string, std::unique_ptr<AbilityLook>, std::less<>>& looks()
 {
-    // A function-local static: looks register from their own files' static initialisers, in any order.
-    static std::map<std::string, std::unique_ptr<AbilityLook>, std::less<>> registered;
-    return registered;
+    static const std::map<std::string, std::unique_ptr<AbilityLook>, std::less<>> byAbility = []
+    {
+        std::map<std::string, std::unique_ptr<AbilityLook>, std::less<>> made;
+        for (const AbilityLookTableEntry& entry : abilityLookTable())
+            if (!made.emplace(std::string(entry.ability), entry.make()).second)
+                throw std::logic_error("look of ability \"" + std::string(entry.ability) + "\" is in the table twice");
+        return made;
+    }();
+    return byAbility;
 }
 
 } // namespace
@@ -50,12 +56,6 @@ const AbilityLook& abilityLook(std::string_view ability)
 bool hasAbilityLook(std::string_view ability)
 {
     return looks().find(ability) != looks().end();
-}
-
-AbilityLookRegistrar::AbilityLookRegistrar(std::string ability, std::unique_ptr<AbilityLook> look)
-{
-    if (!looks().emplace(ability, std::move(look)).second)
-        throw std::logic_error("look of ability \"" + ability + "\" registered twice");
 }
 
 } // namespace abalike::app

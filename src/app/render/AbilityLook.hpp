@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace abalike::app
 {
@@ -24,8 +25,8 @@ public:
 };
 
 /// How an ability looks in the game: each ability that draws or shows something of its own has one file under
-/// src/app/render/abilities/ that registers its look by the ability's name (AbilityLookRegistrar). An ability
-/// without one is drawn and shown by the defaults here.
+/// src/app/render/abilities/ and a line in its table (abilityLookTable). An ability without one is drawn and
+/// shown by the defaults here.
 class AbilityLook
 {
 public:
@@ -46,10 +47,15 @@ const AbilityLook& abilityLook(std::string_view ability);
 /// True when an ability has a look of its own.
 bool hasAbilityLook(std::string_view ability);
 
-/// Registers an ability's look at start-up: `const AbilityLookRegistrar kEgg{"egg", std::make_unique<EggLook>()};`.
-struct AbilityLookRegistrar
+/// One line of the table of looks: an ability's name in the catalog and the function that makes its look.
+struct AbilityLookTableEntry
 {
-    AbilityLookRegistrar(std::string ability, std::unique_ptr<AbilityLook> look);
+    std::string_view ability;
+    std::unique_ptr<AbilityLook> (*make)();
 };
+
+/// Every ability's own look: an explicit table (src/app/render/abilities/AbilityLookTable.cpp), so linking the app
+/// in any way keeps them all.
+const std::vector<AbilityLookTableEntry>& abilityLookTable();
 
 } // namespace abalike::app

@@ -1,5 +1,6 @@
 #include "screens/PlayScreen.hpp"
 
+#include "layers/PlayLayerTable.hpp"
 #include "play/PlayDrawing.hpp"
 #include "play/PlayToolbar.hpp"
 #include "render/CameraFocus.hpp"

@@ -335,16 +335,6 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
         m_paths.drawTools(target, *font, view.camera(), session, rowSize, scale);
 }
 
-namespace
-{
-/// The teaching overlay sits over the world and the HUD, under the notices and the effects.
-const PlayLayerRegistrar kLayer{20, "teach",
-                                [](App& app) -> std::unique_ptr<PlayLayer>
-                                {
-                                    return std::make_unique<TeachLayer>(app);
-                                }};
-} // namespace
-
 bool TeachLayer::hidesPreview(const PlayView& view) const
 {
     return PredictQuizView::wanted(view.session().level()) && view.session().phase() == Phase::Aiming &&

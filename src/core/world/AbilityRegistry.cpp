@@ -14,20 +14,20 @@ namespace abalike
 namespace
 {
 
-std::map<std::string, AbilityFactory, std::less<>>& registry()
+const std::map<std::string, AbilityFactory, std::less<>>& registry()
 {
-    // A function-local static: abilities register from their own files' static initialisers, in any order.
-    static std::map<std::string, AbilityFactory, std::less<>> abilities;
+    static const std::map<std::string, AbilityFactory, std::less<>> abilities = []
+    {
+        std::map<std::string, AbilityFactory, std::less<>> byName;
+        for (const AbilityTableEntry& entry : abilityTable())
+            if (entry.name == kNoAbility || !byName.emplace(std::string(entry.name), entry.make).second)
+                throw std::logic_error("ability \"" + std::string(entry.name) + "\" is in the table twice");
+        return byName;
+    }();
     return abilities;
 }
 
 } // namespace
-
-void AbilityRegistry::add(std::string name, AbilityFactory factory)
-{
-    if (name == kNoAbility || !registry().emplace(name, std::move(factory)).second)
-        throw std::logic_error("ability \"" + name + "\" registered twice");
-}
 
 const AbilityFactory* AbilityRegistry::find(std::string_view name)
 {
@@ -41,11 +41,6 @@ std::vector<std::string> AbilityRegistry::names()
     for (const auto& entry : registry())
         names.push_back(entry.first);
     return names;
-}
-
-AbilityRegistrar::AbilityRegistrar(std::string name, AbilityFactory factory)
-{
-    AbilityRegistry::add(std::move(name), std::move(factory));
 }
 
 double abilityNumber(const nlohmann::json& params, const char* key, double fallback, std::string_view ability)

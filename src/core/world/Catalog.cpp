@@ -69,6 +69,9 @@ std::vector<std::shared_ptr<const Ability>> readAbilities(const json& root, std:
         if (factory == nullptr)
             throw CatalogError{pointer, unknownAbility(name)};
         made.push_back((*factory)(block != nullptr && block->contains(name) ? block->at(name) : none));
+        if (made.back()->name() != name)
+            throw std::logic_error("the table of abilities makes \"" + std::string(made.back()->name()) + "\" for \"" +
+                                   name + "\"");
         return made.back();
     };
     const json& birdList = root.at("birds");

@@ -26,8 +26,11 @@ public:
     }
 };
 
-const AbilityLookRegistrar kEgg{"egg", std::make_unique<EggLook>()};
-
 } // namespace
+
+std::unique_ptr<AbilityLook> makeEggLook()
+{
+    return std::make_unique<EggLook>();
+}
 
 } // namespace abalike::app

@@ -18,8 +18,11 @@ public:
     }
 };
 
-const AbilityLookRegistrar kExplode{"explode", std::make_unique<ExplodeLook>()};
-
 } // namespace
+
+std::unique_ptr<AbilityLook> makeExplodeLook()
+{
+    return std::make_unique<ExplodeLook>();
+}
 
 } // namespace abalike::app

@@ -55,11 +55,11 @@ private:
     double m_speedGainMps;
 };
 
-const AbilityRegistrar kBoost{"boost", [](const nlohmann::json& params)
-                              {
-                                  return std::make_shared<Boost>(params);
-                              }};
-
 } // namespace
+
+std::shared_ptr<const Ability> makeBoost(const nlohmann::json& params)
+{
+    return std::make_shared<Boost>(params);
+}
 
 } // namespace abalike

@@ -79,11 +79,11 @@ private:
     double m_pushSpeedMps;
 };
 
-const AbilityRegistrar kEgg{"egg", [](const nlohmann::json& params)
-                            {
-                                return std::make_shared<Egg>(params);
-                            }};
-
 } // namespace
+
+std::shared_ptr<const Ability> makeEgg(const nlohmann::json& params)
+{
+    return std::make_shared<Egg>(params);
+}
 
 } // namespace abalike

@@ -53,11 +53,11 @@ private:
     double m_impulseNs;
 };
 
-const AbilityRegistrar kExplode{"explode", [](const nlohmann::json& params)
-                                {
-                                    return std::make_shared<Explode>(params);
-                                }};
-
 } // namespace
+
+std::shared_ptr<const Ability> makeExplode(const nlohmann::json& params)
+{
+    return std::make_shared<Explode>(params);
+}
 
 } // namespace abalike

@@ -57,11 +57,11 @@ private:
     double m_angleDeg;
 };
 
-const AbilityRegistrar kSplit{"split", [](const nlohmann::json& params)
-                              {
-                                  return std::make_shared<Split>(params);
-                              }};
-
 } // namespace
+
+std::shared_ptr<const Ability> makeSplit(const nlohmann::json& params)
+{
+    return std::make_shared<Split>(params);
+}
 
 } // namespace abalike

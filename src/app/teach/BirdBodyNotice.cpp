@@ -1,4 +1,4 @@
-#include "editor/BirdBodyNotice.hpp"
+#include "teach/BirdBodyNotice.hpp"
 
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
@@ -58,16 +58,5 @@ void BirdBodyNotice::drawScreen(sf::RenderTarget& target, PlayView& view)
         y += lineHeight;
     }
 }
-
-namespace
-{
-/// The notice about a bird Box2D cannot collide as designed, over the teaching panels.
-const PlayLayerRegistrar kLayer{30, "bird body notice",
-                                [](App& app) -> std::unique_ptr<PlayLayer>
-                                {
-                                    (void)app;
-                                    return std::make_unique<BirdBodyNotice>();
-                                }};
-} // namespace
 
 } // namespace abalike::app
