@@ -1,7 +1,10 @@
+#include "CatalogLoadError.hpp"
+
 #include <abalike/world/CatalogTable.hpp>
 #include <cstdlib>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 namespace abalike
@@ -58,16 +61,36 @@ TEST(CatalogTable, IceIsLightSlipperyAndBrittleStoneHeavyAndTough)
     EXPECT_GT(stone.strengthNs, wood.strengthNs);
 }
 
-TEST(CatalogTable, BirdsHaveDistinctMassesRadiiAndAbilities)
+TEST(CatalogTable, ABirdWithAnotherBirdsMassOrSizeIsALocatedError)
 {
-    const auto& birds = Catalog::builtin().birds();
-    for (std::size_t i = 0; i < birds.size(); ++i)
-        for (std::size_t j = i + 1; j < birds.size(); ++j)
-        {
-            EXPECT_NE(birds[i].massKg, birds[j].massKg);
-            EXPECT_NE(birds[i].radiusM, birds[j].radiusM);
-            EXPECT_NE(birds[i].abilityName(), birds[j].abilityName());
-        }
+    // The rule is checked where the catalog loads: a bird copied from the first one and given only a new name must be
+    // told which number to change, at its line.
+    nlohmann::json catalog = nlohmann::json::parse(Catalog::builtinJson());
+    nlohmann::json copy = catalog.at("birds").at(0);
+    const std::string first = copy.at("name").get<std::string>();
+    copy["name"] = first + "-copy";
+    catalog["birds"].push_back(copy);
+    const std::string last = std::to_string(catalog.at("birds").size() - 1);
+    const std::string text = catalog.dump(2);
+    std::string error = test::catalogLoadError(text);
+    EXPECT_NE(error.find("/birds/" + last + "/mass_kg: the same mass as \"" + first + "\" (/birds/0)"),
+              std::string::npos)
+        << error;
+    EXPECT_EQ(error.rfind("assets/catalog.json:", 0), 0u) << error;
+
+    catalog["birds"].back()["mass_kg"] = copy.at("mass_kg").get<double>() * 1.5 + 0.125;
+    error = test::catalogLoadError(catalog.dump(2));
+    EXPECT_NE(error.find("/birds/" + last + "/radius_m: the same radius as \"" + first + "\""), std::string::npos)
+        << error;
+
+    catalog["birds"].back()["radius_m"] = copy.at("radius_m").get<double>() * 1.5 + 0.125;
+    catalog["birds"].back()["name"] = first;
+    error = test::catalogLoadError(catalog.dump(2));
+    EXPECT_NE(error.find("/birds/" + last + "/name: a second bird named \"" + first + "\""), std::string::npos)
+        << error;
+
+    catalog["birds"].back()["name"] = first + "-copy";
+    EXPECT_EQ(test::catalogLoadError(catalog.dump(2)), "") << "two birds may share an ability";
 }
 
 } // namespace

@@ -19,7 +19,8 @@ constexpr double kContactTolerance = 0.015;
 LevelDef wallLevel(bool staticWall)
 {
     LevelDef level;
-    level.birds = {"red", "blue", "yellow", "black", "white"};
+    for (const BirdType& bird : Catalog::builtin().birds())
+        level.birds.push_back(bird.name);
     level.pigs = {{"small", 40.0, 0.25}};
     level.slingshot.maxForceN = 1.0e5; // every bird as fast as the world allows
     if (staticWall)

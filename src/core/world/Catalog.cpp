@@ -39,6 +39,28 @@ const T* findByName(const std::vector<T>& items, std::string_view name)
     return nullptr;
 }
 
+/// The catalog's rule for birds (the requirements' "characters with unique masses and sizes"): each has a name, a
+/// mass and a radius of its own; two birds may share an ability.
+void checkBirdsDiffer(const std::vector<BirdType>& birds)
+{
+    for (std::size_t j = 1; j < birds.size(); ++j)
+        for (std::size_t i = 0; i < j; ++i)
+        {
+            const std::string at = "/birds/" + std::to_string(j);
+            const std::string other = "\"" + birds[i].name + "\" (/birds/" + std::to_string(i) + ")";
+            if (birds[j].name == birds[i].name)
+                throw CatalogError{at + "/name", "a second bird named \"" + birds[j].name + "\": names are unique"};
+            if (birds[j].massKg == birds[i].massKg)
+                throw CatalogError{at + "/mass_kg", "the same mass as " + other +
+                                                        ": every bird has a mass of its own (the game compares birds "
+                                                        "by mass)"};
+            if (birds[j].radiusM == birds[i].radiusM)
+                throw CatalogError{at + "/radius_m", "the same radius as " + other +
+                                                         ": every bird has a size of its own (players tell birds "
+                                                         "apart by size)"};
+        }
+}
+
 /// "unknown ability "boomrang" (did you mean "boost"?)", or the list of known names when none is close.
 std::string unknownAbility(const std::string& name)
 {
@@ -146,6 +168,7 @@ Catalog Catalog::fromJson(std::string_view text, const std::string& fileName)
             bird.look = readBirdLook(b, "/birds/" + std::to_string(i));
             catalog.m_birds.push_back(std::move(bird));
         }
+        checkBirdsDiffer(catalog.m_birds);
         for (const json& p : root.at("pigs"))
         {
             const std::string where = "pig " + p.at("name").get<std::string>();
