@@ -65,7 +65,7 @@ TEST(CameraFit, EveryCampaignLevelStartsWithTheSlingshotAndEveryBodyInViewInEver
             EXPECT_NEAR(visible.width / visible.height, static_cast<float>(window.x) / static_cast<float>(window.y),
                         1e-3f);
             const auto launch = session.launchPoint();
-            EXPECT_TRUE(inside(visible, {static_cast<float>(launch[0]), static_cast<float>(launch[1])}, 1.0f));
+            EXPECT_TRUE(inside(visible, {static_cast<float>(launch.x), static_cast<float>(launch.y)}, 1.0f));
             // The smallest pig is drawn at least kMinPigPx tall while aiming.
             const CameraFocus focus = cameraFocusOf(session);
             EXPECT_GE(rig.view().pixelsPerMetre * focus.smallestPigM, kMinPigPx - 1e-3f);

@@ -190,7 +190,7 @@ TEST(TeachGuides, TheTutorialFollowsTheAim)
 TEST(TeachPaths, SamplesCarryVelocitiesFromTheFlownPath)
 {
     // A parabola sampled every 1/60 s: central differences give its velocity to O(dt^2), exactly for a parabola.
-    std::vector<std::array<double, 3>> path;
+    std::vector<TrackPoint> path;
     for (int i = 0; i <= 60; ++i)
     {
         const double t = i / 60.0;
@@ -236,9 +236,9 @@ TEST(TeachPaths, TrailsKeepTheLastFiveShotsAcrossRestartsAndForgetAnotherLevel)
     EXPECT_EQ(trails.paths().front().name, "shot 3");
     EXPECT_GT(trails.paths().back().samples.size(), 10u);
     // The newest kept path is the flown path, point for point.
-    const std::vector<std::array<double, 3>>& flown = session.shots().back().actualPath;
+    const std::vector<TrackPoint>& flown = session.shots().back().actualPath;
     ASSERT_EQ(trails.paths().back().samples.size(), flown.size());
-    EXPECT_DOUBLE_EQ(trails.paths().back().samples.back().x, flown.back()[1]);
+    EXPECT_DOUBLE_EQ(trails.paths().back().samples.back().x, flown.back().position.x);
 
     GameSession other(sourceLevel("levels/1-2-the-long-shot.json"));
     trails.onLevelStart(other);

@@ -117,7 +117,7 @@ TEST(SceneEditorClipboard, CopyAndPasteAcrossScenesAsLevelJson)
     second.blocks = {box(10.0, 0.5, 1.0, 1.0)};
     SceneEditor to(second);
     // Pasted with its bounding box's bottom centre at (50, 0): the hill's bottom is the group's bottom.
-    EXPECT_EQ(to.paste(text, std::array<double, 2>{50.0, 0.0}), "");
+    EXPECT_EQ(to.paste(text, Vec2{50.0, 0.0}), "");
     const LevelDef& pasted = to.level();
     ASSERT_EQ(pasted.blocks.size(), 4u);
     ASSERT_EQ(pasted.pigs.size(), 1u);
@@ -126,7 +126,7 @@ TEST(SceneEditorClipboard, CopyAndPasteAcrossScenesAsLevelJson)
     // 0.25 m grid steps (22.25): bodies on the grid stay on it. Heights kept.
     EXPECT_DOUBLE_EQ(pasted.blocks[1].x, 20.0 + 22.25);
     EXPECT_DOUBLE_EQ(pasted.blocks[1].y, 1.0);
-    EXPECT_DOUBLE_EQ(pasted.terrain[0].points[0][0], 30.0 + 22.25);
+    EXPECT_DOUBLE_EQ(pasted.terrain[0].points[0].x, 30.0 + 22.25);
     EXPECT_EQ(to.selection().size(), 5u);
     to.undo();
     EXPECT_EQ(to.level().blocks, second.blocks);
@@ -144,7 +144,7 @@ TEST(SceneEditorClipboard, APastedGroupSettlesOntoTheSurfaceUnderIt)
     LevelDef tower = emptyScene();
     tower.blocks = {box(0.0, 1.0, 0.5, 2.0), box(1.5, 1.0, 0.5, 2.0), box(0.75, 2.1, 2.0, 0.2)};
     // Dropped 5 cm above the plinth (within snap reach): the posts land on it, the roof stays on the posts.
-    ASSERT_EQ(editor.insertBodies(tower, std::array<double, 2>{30.0, 1.05}, "Insert tower"), "");
+    ASSERT_EQ(editor.insertBodies(tower, Vec2{30.0, 1.05}, "Insert tower"), "");
     const auto& b = editor.level().blocks;
     ASSERT_EQ(b.size(), 4u);
     EXPECT_NEAR(b[1].y, 2.0, 1e-9);
@@ -152,7 +152,7 @@ TEST(SceneEditorClipboard, APastedGroupSettlesOntoTheSurfaceUnderIt)
     EXPECT_NEAR(b[3].y, 3.1, 1e-9);
     EXPECT_NEAR(b[1].x, 30.0 - 0.75, 1e-9);
     // Never under the ground: a drop below it comes up onto it.
-    ASSERT_EQ(editor.insertBodies(tower, std::array<double, 2>{10.0, -3.0}, "Insert tower"), "");
+    ASSERT_EQ(editor.insertBodies(tower, Vec2{10.0, -3.0}, "Insert tower"), "");
     EXPECT_NEAR(editor.level().blocks[4].y, 1.0, 1e-9);
 }
 
@@ -168,7 +168,7 @@ TEST(SceneEditorClipboard, APasteLandsOnTheGridAndFallsOntoTheSurfaceFromAnyHeig
     for (const double height : {1.24, 4.0})
     {
         SCOPED_TRACE(height);
-        ASSERT_EQ(editor.insertBodies(plank, std::array<double, 2>{14.771127701, height}, "Paste"), "");
+        ASSERT_EQ(editor.insertBodies(plank, Vec2{14.771127701, height}, "Paste"), "");
         const BlockDef& pasted = editor.level().blocks.back();
         EXPECT_DOUBLE_EQ(pasted.x, 14.75) << "on the 0.25 m grid";
         EXPECT_NEAR(pasted.y, 1.1, 1e-9) << "resting on the plinth";
@@ -176,7 +176,7 @@ TEST(SceneEditorClipboard, APasteLandsOnTheGridAndFallsOntoTheSurfaceFromAnyHeig
     }
     // With surfaces off it stays where it was put (on the grid's heights too).
     editor.snapSettings().surfaces = false;
-    ASSERT_EQ(editor.insertBodies(plank, std::array<double, 2>{14.771127701, 3.9}, "Paste"), "");
+    ASSERT_EQ(editor.insertBodies(plank, Vec2{14.771127701, 3.9}, "Paste"), "");
     EXPECT_NEAR(editor.level().blocks.back().y, 4.0 + 0.1, 1e-9);
 }
 
@@ -190,7 +190,7 @@ TEST(SceneEditorClipboard, TheOutlineBeforeADropIsWhereTheDropLands)
     LevelDef frame = emptyScene();
     frame.blocks = {box(0.0, 1.0, 0.5, 2.0), box(1.5, 1.0, 0.5, 2.0), box(0.75, 2.1, 2.0, 0.2)};
     frame.pigs = {PigDef{"small", 0.75, 0.25}};
-    const std::array<double, 2> at{14.771127701, 2.63};
+    const Vec2 at{14.771127701, 2.63};
     const std::vector<ObjectDef> outline = editor.placedBodies(frame, at);
     ASSERT_EQ(outline.size(), 4u);
     EXPECT_EQ(editor.level().blocks.size(), 1u) << "outlining adds nothing";
@@ -212,12 +212,12 @@ TEST(SceneEditorVertices, MovesAddsAndRemovesCornersAndRefusesACrossing)
     level.terrain.push_back(hill());
     SceneEditor editor(level);
     EXPECT_EQ(editor.moveVertex(0, 2, 35.0, 3.0), "");
-    EXPECT_EQ(editor.level().terrain[0].points[2], (std::array<double, 2>{35.0, 3.0}));
+    EXPECT_EQ(editor.level().terrain[0].points[2], (Vec2{35.0, 3.0}));
     EXPECT_DOUBLE_EQ(editor.level().terrain[0].heightM, 3.0); // its box follows
     EXPECT_DOUBLE_EQ(editor.level().terrain[0].y, 1.5);
     EXPECT_EQ(editor.insertVertex(0, 0), ""); // the middle of the bottom edge
     ASSERT_EQ(editor.level().terrain[0].points.size(), 5u);
-    EXPECT_EQ(editor.level().terrain[0].points[1], (std::array<double, 2>{33.0, 0.0}));
+    EXPECT_EQ(editor.level().terrain[0].points[1], (Vec2{33.0, 0.0}));
     EXPECT_EQ(editor.removeVertex(0, 1), "");
     EXPECT_EQ(editor.level().terrain[0].points.size(), 4u);
     // Dragging the top-left corner past the right side makes the outline cross itself: refused, nothing changes.

@@ -504,8 +504,8 @@ TEST(SceneEditorMirror, MirrorsPositionsAnglesTrianglesAndPolygonsInOneUndoStep)
     EXPECT_NEAR(m.blocks[1].angleDeg, 90.0, 1e-9);
     // The polygon's points mirror about its own new centre.
     ASSERT_EQ(m.terrain[0].points.size(), 3u);
-    EXPECT_NEAR(m.terrain[0].points[0][0] - m.terrain[0].points[1][0], 4.0, 1e-9);
-    EXPECT_NEAR(m.terrain[0].points[2][0], m.terrain[0].points[0][0], 1e-9);
+    EXPECT_NEAR(m.terrain[0].points[0].x - m.terrain[0].points[1].x, 4.0, 1e-9);
+    EXPECT_NEAR(m.terrain[0].points[2].x, m.terrain[0].points[0].x, 1e-9);
     editor.undo();
     EXPECT_EQ(editor.level().blocks, level.blocks);
     EXPECT_EQ(editor.level().terrain, level.terrain);

@@ -8,6 +8,15 @@ namespace abalike
 namespace
 {
 
+/// Each of the four numbers of s within tolerance(its exact value) of exact.
+void expectNear(const FlightState& s, const FlightState& exact, double (*tolerance)(double))
+{
+    EXPECT_NEAR(s.position.x, exact.position.x, tolerance(exact.position.x));
+    EXPECT_NEAR(s.position.y, exact.position.y, tolerance(exact.position.y));
+    EXPECT_NEAR(s.velocity.x, exact.velocity.x, tolerance(exact.velocity.x));
+    EXPECT_NEAR(s.velocity.y, exact.velocity.y, tolerance(exact.velocity.y));
+}
+
 FlightState fly(const FlightModel& model, const IntegratorSettings& settings, const FlightState& s0, int steps)
 {
     FlightIntegrator integrator(model, settings);
@@ -23,10 +32,10 @@ TEST(ClosedForm, VacuumIsTheParabola)
     const FlightState s0 = launchState(1.0, 2.0, 25.0, 30.0);
     const double t = 1.7;
     const FlightState s = *closedFormState(vacuum, s0, t);
-    EXPECT_DOUBLE_EQ(s[0], 1.0 + s0[2] * t);
-    EXPECT_DOUBLE_EQ(s[1], 2.0 + s0[3] * t - 0.5 * 9.81 * t * t);
-    EXPECT_DOUBLE_EQ(s[2], s0[2]);
-    EXPECT_DOUBLE_EQ(s[3], s0[3] - 9.81 * t);
+    EXPECT_DOUBLE_EQ(s.position.x, 1.0 + s0.velocity.x * t);
+    EXPECT_DOUBLE_EQ(s.position.y, 2.0 + s0.velocity.y * t - 0.5 * 9.81 * t * t);
+    EXPECT_DOUBLE_EQ(s.velocity.x, s0.velocity.x);
+    EXPECT_DOUBLE_EQ(s.velocity.y, s0.velocity.y - 9.81 * t);
 }
 
 TEST(ClosedForm, LinearDragSatisfiesItsOde)
@@ -44,15 +53,15 @@ TEST(ClosedForm, LinearDragSatisfiesItsOde)
         const FlightState a = *closedFormState(model, s0, t - h);
         const FlightState b = *closedFormState(model, s0, t + h);
         const FlightState s = *closedFormState(model, s0, t);
-        EXPECT_NEAR((b[0] - a[0]) / (2 * h), s[2], 1e-6);
-        EXPECT_NEAR((b[1] - a[1]) / (2 * h), s[3], 1e-6);
-        EXPECT_NEAR((b[2] - a[2]) / (2 * h), -k * (s[2] - 3.0), 1e-6);
-        EXPECT_NEAR((b[3] - a[3]) / (2 * h), -9.81 - k * s[3], 1e-6);
+        EXPECT_NEAR((b.position.x - a.position.x) / (2 * h), s.velocity.x, 1e-6);
+        EXPECT_NEAR((b.position.y - a.position.y) / (2 * h), s.velocity.y, 1e-6);
+        EXPECT_NEAR((b.velocity.x - a.velocity.x) / (2 * h), -k * (s.velocity.x - 3.0), 1e-6);
+        EXPECT_NEAR((b.velocity.y - a.velocity.y) / (2 * h), -9.81 - k * s.velocity.y, 1e-6);
     }
     // Long after launch the bird falls at the terminal velocity g m / b, drifting with the wind.
     const FlightState late = *closedFormState(model, s0, 200.0);
-    EXPECT_NEAR(late[2], 3.0, 1e-9);
-    EXPECT_NEAR(late[3], -9.81 / k, 1e-9);
+    EXPECT_NEAR(late.velocity.x, 3.0, 1e-9);
+    EXPECT_NEAR(late.velocity.y, -9.81 / k, 1e-9);
 }
 
 TEST(ClosedForm, NoneForQuadraticDragOrGusts)
@@ -77,8 +86,7 @@ TEST(ClosedForm, Rk4MatchesVacuumToRounding)
     const FlightState s0 = launchState(0.0, 0.0, 20.0, 45.0);
     const FlightState s = fly(vacuum, {}, s0, 180);
     const FlightState exact = *closedFormState(vacuum, s0, 3.0);
-    for (std::size_t i = 0; i < 4; ++i)
-        EXPECT_NEAR(s[i], exact[i], 1e-11) << i;
+    expectNear(s, exact, [](double) { return 1e-11; });
 }
 
 TEST(ClosedForm, AnalyticStepperIsExact)
@@ -93,8 +101,7 @@ TEST(ClosedForm, AnalyticStepperIsExact)
     const FlightState s0 = launchState(5.0, 1.0, 40.0, 70.0);
     const FlightState s = fly(model, settings, s0, 40);
     const FlightState exact = *closedFormState(model, s0, 10.0);
-    for (std::size_t i = 0; i < 4; ++i)
-        EXPECT_NEAR(s[i], exact[i], 1e-12 * (1.0 + std::abs(exact[i]))) << i;
+    expectNear(s, exact, [](double x) { return 1e-12 * (1.0 + std::abs(x)); });
 }
 
 TEST(ClosedForm, AnalyticStepperRefusesQuadraticDrag)
@@ -119,7 +126,7 @@ TEST(ClosedForm, Dopri5IsWithinItsTolerance)
         settings.stepper = StepperKind::Dopri5;
         settings.tolerance = tol;
         const FlightState s = fly(model, settings, s0, 240);
-        const double error = std::hypot(s[0] - exact[0], s[1] - exact[1]);
+        const double error = std::hypot(s.position.x - exact.position.x, s.position.y - exact.position.y);
         // Tolerance is per step and relative to the state's size (~50 m here); a flight accumulates a few.
         EXPECT_LT(error, 100.0 * tol * 50.0) << "tol " << tol;
     }

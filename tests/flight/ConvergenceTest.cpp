@@ -33,7 +33,8 @@ double positionError(StepperKind stepper, int n)
     for (int i = 0; i < n; ++i)
         integrator.step();
     const FlightState exact = *closedFormState(model, s0, integrator.time());
-    return std::hypot(integrator.state()[0] - exact[0], integrator.state()[1] - exact[1]);
+    return std::hypot(integrator.state().position.x - exact.position.x,
+                      integrator.state().position.y - exact.position.y);
 }
 
 /// Least-squares slope of log(error) against log(dt) over dt = 2 s / n for the given n.

@@ -45,20 +45,20 @@ TEST(FlightRhs, EachTermAddsItsForce)
     FlightState d{};
 
     FlightRhs<kGravityTerm | kLinearDragTerm>{model}(s, d, t);
-    EXPECT_DOUBLE_EQ(d[2], -0.2 * 10.0);
-    EXPECT_DOUBLE_EQ(d[3], -9.81 - 0.2 * 4.0);
+    EXPECT_DOUBLE_EQ(d.velocity.x, -0.2 * 10.0);
+    EXPECT_DOUBLE_EQ(d.velocity.y, -9.81 - 0.2 * 4.0);
 
     FlightRhs<kQuadraticDragTerm | kWindTerm>{model}(s, d, t);
     const double rx = 10.0 - 3.0, ry = 4.0 + 1.0;
     const double speed = std::hypot(rx, ry);
-    EXPECT_DOUBLE_EQ(d[2], -0.05 * speed * rx);
-    EXPECT_DOUBLE_EQ(d[3], -0.05 * speed * ry);
+    EXPECT_DOUBLE_EQ(d.velocity.x, -0.05 * speed * rx);
+    EXPECT_DOUBLE_EQ(d.velocity.y, -0.05 * speed * ry);
 
     FlightRhs<kQuadraticDragTerm | kWindTerm | kGustTerm>{model}(s, d, t);
     const double gx = 10.0 - 3.0 - 2.0;
     const double gspeed = std::hypot(gx, ry);
-    EXPECT_NEAR(d[2], -0.05 * gspeed * gx, 1e-12);
-    EXPECT_NEAR(d[3], -0.05 * gspeed * ry, 1e-12);
+    EXPECT_NEAR(d.velocity.x, -0.05 * gspeed * gx, 1e-12);
+    EXPECT_NEAR(d.velocity.y, -0.05 * gspeed * ry, 1e-12);
 }
 
 TEST(FlightRhs, JacobianMatchesFiniteDifferences)
@@ -68,24 +68,24 @@ TEST(FlightRhs, JacobianMatchesFiniteDifferences)
     const FlightState s{0.0, 0.0, 12.0, -3.0};
     const double t = 0.3;
     std::array<double, 4> dadv{};
-    std::array<double, 2> dadt{};
+    Vec2 dadt{};
     rhs.accelerationJacobian(s, t, dadv, dadt);
     const double h = 1e-6;
     for (std::size_t j = 0; j < 2; ++j)
     {
         FlightState a = s, b = s, fa{}, fb{};
-        a[2 + j] -= h;
-        b[2 + j] += h;
+        (j == 0 ? a.velocity.x : a.velocity.y) -= h;
+        (j == 0 ? b.velocity.x : b.velocity.y) += h;
         rhs(a, fa, t);
         rhs(b, fb, t);
-        EXPECT_NEAR(dadv[j], (fb[2] - fa[2]) / (2 * h), 1e-6);
-        EXPECT_NEAR(dadv[2 + j], (fb[3] - fa[3]) / (2 * h), 1e-6);
+        EXPECT_NEAR(dadv[j], (fb.velocity.x - fa.velocity.x) / (2 * h), 1e-6);
+        EXPECT_NEAR(dadv[2 + j], (fb.velocity.y - fa.velocity.y) / (2 * h), 1e-6);
     }
     FlightState fa{}, fb{};
     rhs(s, fa, t - h);
     rhs(s, fb, t + h);
-    EXPECT_NEAR(dadt[0], (fb[2] - fa[2]) / (2 * h), 1e-6);
-    EXPECT_NEAR(dadt[1], (fb[3] - fa[3]) / (2 * h), 1e-6);
+    EXPECT_NEAR(dadt.x, (fb.velocity.x - fa.velocity.x) / (2 * h), 1e-6);
+    EXPECT_NEAR(dadt.y, (fb.velocity.y - fa.velocity.y) / (2 * h), 1e-6);
 }
 
 TEST(FlightTerms, ActiveTermsAreOnlyTheOnesThatActUp)
@@ -127,11 +127,11 @@ TEST(Gusts, StepsHoldUntilTheNextStep)
 {
     GustDef gusts;
     gusts.steps = {{1.0, 2.0, 0.0}, {3.0, -1.0, 0.5}};
-    EXPECT_EQ(gusts.windAt(0.5), (std::array<double, 2>{0.0, 0.0}));
-    EXPECT_EQ(gusts.windAt(1.0), (std::array<double, 2>{2.0, 0.0}));
-    EXPECT_EQ(gusts.windAt(2.9), (std::array<double, 2>{2.0, 0.0}));
-    EXPECT_EQ(gusts.windAt(10.0), (std::array<double, 2>{-1.0, 0.5}));
-    EXPECT_EQ(gusts.rateAt(2.0), (std::array<double, 2>{0.0, 0.0}));
+    EXPECT_EQ(gusts.windAt(0.5), (Vec2{0.0, 0.0}));
+    EXPECT_EQ(gusts.windAt(1.0), (Vec2{2.0, 0.0}));
+    EXPECT_EQ(gusts.windAt(2.9), (Vec2{2.0, 0.0}));
+    EXPECT_EQ(gusts.windAt(10.0), (Vec2{-1.0, 0.5}));
+    EXPECT_EQ(gusts.rateAt(2.0), (Vec2{0.0, 0.0}));
 }
 
 TEST(Gusts, SineAndItsRate)
@@ -141,9 +141,9 @@ TEST(Gusts, SineAndItsRate)
     gusts.amplitudeX = 2.0;
     gusts.amplitudeY = -1.0;
     gusts.periodS = 2.0;
-    EXPECT_NEAR(gusts.windAt(0.5)[0], 2.0, 1e-15);
-    EXPECT_NEAR(gusts.windAt(0.5)[1], -1.0, 1e-15);
-    EXPECT_NEAR(gusts.rateAt(0.0)[0], 2.0 * M_PI, 1e-12);
+    EXPECT_NEAR(gusts.windAt(0.5).x, 2.0, 1e-15);
+    EXPECT_NEAR(gusts.windAt(0.5).y, -1.0, 1e-15);
+    EXPECT_NEAR(gusts.rateAt(0.0).x, 2.0 * M_PI, 1e-12);
 }
 
 TEST(Gusts, FixedStepsStopAtAGustStepSoRk4KeepsItsOrder)
@@ -170,8 +170,9 @@ TEST(Gusts, FixedStepsStopAtAGustStepSoRk4KeepsItsOrder)
     const FlightState reference = endAt(0.01, StepperKind::Dopri5, 1e-13);
     const FlightState coarse = endAt(0.04, StepperKind::Rk4, 1e-9);
     const FlightState fine = endAt(0.02, StepperKind::Rk4, 1e-9);
-    const double ratio = std::hypot(coarse[0] - reference[0], coarse[1] - reference[1]) /
-                         std::hypot(fine[0] - reference[0], fine[1] - reference[1]);
+    const double ratio =
+        std::hypot(coarse.position.x - reference.position.x, coarse.position.y - reference.position.y) /
+        std::hypot(fine.position.x - reference.position.x, fine.position.y - reference.position.y);
     EXPECT_GT(ratio, 12.0);
 }
 

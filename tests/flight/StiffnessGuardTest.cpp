@@ -53,9 +53,11 @@ double relativeError(const std::vector<FlightState>& path, const std::vector<Fli
     double scale = 0.0;
     for (std::size_t i = 0; i < path.size(); ++i)
     {
-        const double e = std::hypot(path[i][0] - reference[i][0], path[i][1] - reference[i][1]);
+        const double e =
+            std::hypot(path[i].position.x - reference[i].position.x, path[i].position.y - reference[i].position.y);
         worst = std::isfinite(e) ? std::max(worst, e) : INFINITY;
-        scale = std::max(scale, std::hypot(reference[i][0] - s0[0], reference[i][1] - s0[1]));
+        scale = std::max(scale,
+                         std::hypot(reference[i].position.x - s0.position.x, reference[i].position.y - s0.position.y));
     }
     return worst / scale;
 }
@@ -110,8 +112,8 @@ TEST(StiffnessGuard, PersistentStiffnessIsHandedToRosenbrock4AndStaysExact)
     EXPECT_EQ(integrator.guardAction(), GuardAction::Implicit);
     EXPECT_LT(integrator.substeps(), 2000u);
     const FlightState exact = *closedFormState(model, s0, integrator.time());
-    EXPECT_NEAR(integrator.state()[0], exact[0], 1e-6);
-    EXPECT_NEAR(integrator.state()[1], exact[1], 1e-6);
+    EXPECT_NEAR(integrator.state().position.x, exact.position.x, 1e-6);
+    EXPECT_NEAR(integrator.state().position.y, exact.position.y, 1e-6);
 }
 
 TEST(StiffnessGuard, ModerateStiffnessIsSubSteppedNotImplicit)
@@ -145,10 +147,10 @@ TEST(StiffnessGuard, GuardedEulerIsStable)
         IntegratorSettings settings;
         settings.stepper = stepper;
         const PredictedFlight flight = predictFlight(model, settings, launchState(0, 0, 50, 45), {});
-        const FlightState& end = flight.path.back().s;
-        EXPECT_TRUE(std::isfinite(end[0]) && std::isfinite(end[1])) << stepperName(stepper);
+        const FlightState& end = flight.path.back().state;
+        EXPECT_TRUE(std::isfinite(end.position.x) && std::isfinite(end.position.y)) << stepperName(stepper);
         // Falling at the terminal velocity sqrt(m g / c) = 1.4 m/s.
-        EXPECT_NEAR(end[3], -std::sqrt(0.01 * 9.81 / 0.05), 1e-3) << stepperName(stepper);
+        EXPECT_NEAR(end.velocity.y, -std::sqrt(0.01 * 9.81 / 0.05), 1e-3) << stepperName(stepper);
     }
 }
 

@@ -92,14 +92,14 @@ TEST(GameSession, PreviewEndsAtTheFirstContact)
     const PredictedFlight preview = session.preview(35.0, 17.0);
     ASSERT_EQ(preview.end, FlightEnd::Contact);
     ASSERT_TRUE(preview.contact.has_value());
-    EXPECT_EQ(preview.path.back().t, preview.contact->t);
-    EXPECT_EQ(preview.path.back().s[0], preview.contact->x);
+    EXPECT_EQ(preview.path.back().timeS, preview.contact->t);
+    EXPECT_EQ(preview.path.back().state.position.x, preview.contact->x);
     // It stops at the left face of the second tower's column (x = 27.875), one bird radius (0.25 m) short.
     EXPECT_NEAR(preview.contact->x, 27.875 - 0.25, 0.015);
     // No earlier point of the path touches anything.
     const double radius = session.currentBird()->radiusM;
     for (std::size_t i = 0; i + 1 < preview.path.size(); ++i)
-        EXPECT_FALSE(session.world().castCircle(radius, preview.path[i].s, preview.path[i].s).has_value()) << i;
+        EXPECT_FALSE(session.world().castCircle(radius, preview.path[i].state, preview.path[i].state).has_value()) << i;
 }
 
 TEST(GameSession, PredictedAndActualFirstContactAgreeWithinOneCentimetre)

@@ -45,8 +45,8 @@ TEST(ShotEnergy, BalanceClosesOnADragAndWindLevel)
         EXPECT_DOUBLE_EQ(e.launchKineticJ, 0.5 * 4.0 * shot.speedMps * shot.speedMps);
         // The state it is taken at is the bird's at its first contact (the world's contact lies on the step's
         // chord, within the chord's sag of the curved path).
-        EXPECT_NEAR(e.state[0], shot.actualContact->x, 1e-3) << name;
-        EXPECT_NEAR(e.state[1], shot.actualContact->y, 1e-3) << name;
+        EXPECT_NEAR(e.state.position.x, shot.actualContact->x, 1e-3) << name;
+        EXPECT_NEAR(e.state.position.y, shot.actualContact->y, 1e-3) << name;
     }
 }
 
@@ -73,14 +73,14 @@ TEST(FirstImpact, HeadOnIntoAFloatingCubeConservesMomentumWithTheMaterialsRestit
     EXPECT_NEAR(hit.birdMassKg, 4.0, 1e-5);
     EXPECT_NEAR(hit.birdBefore.vx, 20.0, 1e-4);
     EXPECT_EQ(hit.bodyBefore.vx, 0.0);
-    EXPECT_NEAR(hit.normal[0], 1.0, 1e-6);
+    EXPECT_NEAR(hit.normal.x, 1.0, 1e-6);
     // Box2D mixes restitution as the larger of the two: the red bird's 0.3 against stone's 0.05.
     ASSERT_TRUE(hit.restitution());
     EXPECT_NEAR(*hit.restitution(), 0.3, 0.01);
     // 1-D collision with e = 0.3: v_bird' = (m1 - e m2) v / (m1 + m2), v_cube' = (1 + e) m1 v / (m1 + m2).
     EXPECT_NEAR(hit.birdAfter.vx, (4.0 - 0.3 * 240.0) * 20.0 / 244.0, 0.05);
     EXPECT_NEAR(hit.bodyAfter.vx, 1.3 * 4.0 * 20.0 / 244.0, 0.005);
-    EXPECT_NEAR(hit.momentumAfter()[0], hit.momentumBefore()[0], 1e-5 * hit.momentumBefore()[0]);
+    EXPECT_NEAR(hit.momentumAfter().x, hit.momentumBefore().x, 1e-5 * hit.momentumBefore().x);
     EXPECT_NEAR(hit.kineticBeforeJ(), 800.0, 0.01);
     EXPECT_LT(hit.kineticAfterJ(), hit.kineticBeforeJ());
     // The damage is the impulse the cube took: its change of momentum.

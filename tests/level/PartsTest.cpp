@@ -32,7 +32,7 @@ TEST(CastleParts, EveryPartIsASandboxSceneThatStandsAndInsertsWhole)
         scene.sandbox = true;
         scene.birds = {"red"};
         SceneEditor editor(scene);
-        ASSERT_EQ(editor.insertBodies(part, std::array<double, 2>{30.0, 0.0}, "Insert"), "");
+        ASSERT_EQ(editor.insertBodies(part, Vec2{30.0, 0.0}, "Insert"), "");
         EXPECT_EQ(editor.level().blocks.size(), part.blocks.size());
         EXPECT_EQ(editor.level().pigs.size(), part.pigs.size());
     }

@@ -1,4 +1,4 @@
-#include "../save/TempDir.hpp"
+#include "save/TempDir.hpp"
 
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/level/SafeText.hpp>

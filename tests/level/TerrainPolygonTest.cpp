@@ -12,31 +12,31 @@ namespace abalike
 namespace
 {
 
-double area(const std::vector<Point2>& polygon)
+double area(const std::vector<Vec2>& polygon)
 {
     return 0.5 * std::abs(twiceSignedArea(polygon));
 }
 
-bool isConvex(const std::vector<Point2>& p)
+bool isConvex(const std::vector<Vec2>& p)
 {
     for (std::size_t i = 0; i < p.size(); ++i)
     {
-        const Point2& a = p[i];
-        const Point2& b = p[(i + 1) % p.size()];
-        const Point2& c = p[(i + 2) % p.size()];
-        if ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) < -1e-12)
+        const Vec2& a = p[i];
+        const Vec2& b = p[(i + 1) % p.size()];
+        const Vec2& c = p[(i + 2) % p.size()];
+        if ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) < -1e-12)
             return false;
     }
     return true;
 }
 
-const std::vector<Point2> kHill{{14, 0}, {34, 0}, {34, 2}, {30, 4}, {27, 4}, {24, 2.5}, {20, 3.2}, {16, 1}};
+const std::vector<Vec2> kHill{{14, 0}, {34, 0}, {34, 2}, {30, 4}, {27, 4}, {24, 2.5}, {20, 3.2}, {16, 1}};
 
 TEST(PolygonPartition, AConvexPolygonStaysWholeEitherWinding)
 {
-    const std::vector<Point2> square{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+    const std::vector<Vec2> square{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
     ASSERT_EQ(convexPieces(square).size(), 1u);
-    std::vector<Point2> clockwise(square.rbegin(), square.rend());
+    std::vector<Vec2> clockwise(square.rbegin(), square.rend());
     const auto pieces = convexPieces(clockwise);
     ASSERT_EQ(pieces.size(), 1u);
     EXPECT_GT(twiceSignedArea(pieces[0]), 0.0) << "pieces are counter-clockwise";
@@ -60,7 +60,7 @@ TEST(PolygonPartition, AConcaveHillSplitsIntoConvexPiecesOfTheSameArea)
 
 TEST(PolygonPartition, ManyCornersAreSplitIntoPiecesBox2DTakes)
 {
-    std::vector<Point2> disc;
+    std::vector<Vec2> disc;
     for (int i = 0; i < 40; ++i)
         disc.push_back(
             {5.0 * std::cos(i * 2.0 * 3.141592653589793 / 40), 5.0 * std::sin(i * 2.0 * 3.141592653589793 / 40)});

@@ -33,8 +33,8 @@ TEST(FlightEnergy, VacuumHasNoDragLossAndConservesEnergy)
     EXPECT_DOUBLE_EQ(e.launchKineticJ, 0.5 * 20.0 * 20.0);
     EXPECT_DOUBLE_EQ(e.launchPotentialJ, 9.81 * 1.5);
     const FlightState exact = *closedFormState(FlightModel{}, s0, 2.0);
-    EXPECT_NEAR(e.state[1], exact[1], 1e-12);
-    EXPECT_NEAR(e.potentialJ, 9.81 * exact[1], 1e-10);
+    EXPECT_NEAR(e.state.position.y, exact.position.y, 1e-12);
+    EXPECT_NEAR(e.potentialJ, 9.81 * exact.position.y, 1e-10);
 }
 
 TEST(FlightEnergy, DragAndWindBalanceClosesToTheIntegratorsAccuracy)
@@ -66,8 +66,9 @@ TEST(FlightEnergy, LinearDragLossMatchesTheClosedForm)
     const FlightState s0 = launchState(0.0, 0.0, 25.0, 40.0);
     const double t = 2.5;
     const FlightState exact = *closedFormState(model, s0, t);
-    const double exactLoss =
-        0.5 * (s0[2] * s0[2] + s0[3] * s0[3]) - 0.5 * (exact[2] * exact[2] + exact[3] * exact[3]) - 9.81 * exact[1];
+    const double exactLoss = 0.5 * (s0.velocity.x * s0.velocity.x + s0.velocity.y * s0.velocity.y) -
+                             0.5 * (exact.velocity.x * exact.velocity.x + exact.velocity.y * exact.velocity.y) -
+                             9.81 * exact.position.y;
     const FlightEnergy e = flightEnergyAt(model, {}, s0, t);
     EXPECT_NEAR(e.dragLossJ, exactLoss, 1e-7);
 }

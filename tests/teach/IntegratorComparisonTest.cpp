@@ -84,8 +84,9 @@ TEST(IntegratorComparison, ErrorIsMeasuredOnTheRealPathBetweenItsPoints)
     double worst = 0.0;
     for (const PathPoint& point : euler.flight.path)
     {
-        const FlightState exact = *closedFormState(vacuum, s0, point.t);
-        worst = std::max(worst, std::hypot(point.s[0] - exact[0], point.s[1] - exact[1]));
+        const FlightState exact = *closedFormState(vacuum, s0, point.timeS);
+        worst = std::max(
+            worst, std::hypot(point.state.position.x - exact.position.x, point.state.position.y - exact.position.y));
     }
     EXPECT_NEAR(euler.maxErrorM, worst, 1e-12);
     // Explicit Euler in vacuum is off by g t h / 2 in height.
@@ -99,8 +100,8 @@ TEST(IntegratorComparison, ContactErrorWhenBothTouch)
     // A wall at x = 30 m.
     p.limits.contact = [](const FlightState& a, const FlightState& b) -> std::optional<double>
     {
-        if (a[0] < 30.0 && b[0] >= 30.0)
-            return (30.0 - a[0]) / (b[0] - a[0]);
+        if (a.position.x < 30.0 && b.position.x >= 30.0)
+            return (30.0 - a.position.x) / (b.position.x - a.position.x);
         return std::nullopt;
     };
     IntegratorSettings settings;

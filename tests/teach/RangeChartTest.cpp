@@ -107,9 +107,9 @@ TEST(RangeChart, LinearDragWithWindMatchesTheClosedForm)
         {
             const double mid = 0.5 * (lo + hi);
             const FlightState s = *closedFormState(launch.model, s0, mid);
-            (s[3] > 0.0 || s[1] > 0.0 ? lo : hi) = mid;
+            (s.velocity.y > 0.0 || s.position.y > 0.0 ? lo : hi) = mid;
         }
-        const double exact = (*closedFormState(launch.model, s0, lo))[0];
+        const double exact = (*closedFormState(launch.model, s0, lo)).position.x;
         EXPECT_NEAR(*rangeAtAngle(launch, a), exact, 1e-7) << a;
     }
 }

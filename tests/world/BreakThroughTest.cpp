@@ -135,7 +135,7 @@ TEST(BreakThrough, ARedBirdPassesThroughAnIceBlockToThePigBehindIt)
         EXPECT_DOUBLE_EQ(hit.strengthBeforeNs, 25.0);
         // The bird lost only the ice's strength along the normal: v_after = v_before - H / m n.
         const double m = hit.birdMassKg;
-        EXPECT_NEAR(hit.birdAfter.vx, hit.birdBefore.vx - 25.0 / m * hit.normal[0], 0.25) << angle;
+        EXPECT_NEAR(hit.birdAfter.vx, hit.birdBefore.vx - 25.0 / m * hit.normal.x, 0.25) << angle;
         EXPECT_GT(hit.birdAfter.vx, 20.0) << angle;
         // The ice absorbed exactly its strength (the ground's friction on it is why bird and block alone do not
         // conserve momentum across this step).

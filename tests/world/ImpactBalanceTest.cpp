@@ -24,9 +24,9 @@ std::optional<FirstImpact> firstImpact(const LevelDef& level, double angleDeg, d
     return session.world().birdImpact();
 }
 
-double length(const std::array<double, 2>& v)
+double length(const Vec2& v)
 {
-    return std::hypot(v[0], v[1]);
+    return std::hypot(v.x, v.y);
 }
 
 /// Box2D works in float: the balance closes to 1e-3 kg m/s or 1e-5 of the bird's momentum, whichever is larger.
@@ -36,11 +36,10 @@ void expectBalanced(const FirstImpact& impact, const std::string& where)
     const double tolerance = std::max(1e-3, 1e-5 * birdMomentum);
     const auto residual = impact.balanceResidual();
     EXPECT_LE(length(residual), tolerance)
-        << where << ": residual (" << residual[0] << ", " << residual[1] << ") kg m/s; bird change ("
-        << impact.birdChange()[0] << ", " << impact.birdChange()[1] << "), body change (" << impact.bodyChange()[0]
-        << ", " << impact.bodyChange()[1] << "), supports (" << impact.balance.supports[0] << ", "
-        << impact.balance.supports[1] << "), gravity (" << impact.balance.gravity[0] << ", "
-        << impact.balance.gravity[1] << ")";
+        << where << ": residual (" << residual.x << ", " << residual.y << ") kg m/s; bird change ("
+        << impact.birdChange().x << ", " << impact.birdChange().y << "), body change (" << impact.bodyChange().x << ", "
+        << impact.bodyChange().y << "), supports (" << impact.balance.supports.x << ", " << impact.balance.supports.y
+        << "), gravity (" << impact.balance.gravity.x << ", " << impact.balance.gravity.y << ")";
 }
 
 TEST(ImpactBalance, ClosesOnEveryCampaignLevelsAndLessonsReferenceShot)
@@ -80,10 +79,10 @@ TEST(ImpactBalance, TheMomentumLessonsShotShowsTheBlockHeldByWhatItStandsOn)
     const auto impact = firstImpact(level, level.referenceShot->angleDeg, level.referenceShot->speedMps);
     ASSERT_TRUE(impact);
     expectBalanced(*impact, level.id);
-    EXPECT_GT(impact->balance.supports[1], 0.5 * impact->bodyChange()[1]) << "the support lifts the block";
+    EXPECT_GT(impact->balance.supports.y, 0.5 * impact->bodyChange().y) << "the support lifts the block";
     // Newton's third law between the two: the bird's change is the opposite of its push, plus what the break gave
     // back to it.
-    const double refundX = impact->birdChange()[0] + impact->balance.pushOnBody[0];
+    const double refundX = impact->birdChange().x + impact->balance.pushOnBody.x;
     EXPECT_GE(refundX, -1e-3);
     EXPECT_EQ(impact->broke, refundX > 1e-3);
 }
@@ -105,9 +104,9 @@ TEST(ImpactBalance, APigPinnedAgainstTheGroundLeavesUpwardAndTheGroundsShareSays
     ASSERT_TRUE(impact);
     ASSERT_EQ(impact->bodyKind, EntityKind::Pig);
     expectBalanced(*impact, "pinned pig");
-    EXPECT_LT(impact->balance.pushOnBody[1], 0.0) << "the bird pushed the pig down";
-    EXPECT_GT(impact->balance.supports[1], -0.95 * impact->balance.pushOnBody[1]) << "the ground pushed back";
-    EXPECT_GE(impact->bodyChange()[1], 0.0) << "so the pig does not go down";
+    EXPECT_LT(impact->balance.pushOnBody.y, 0.0) << "the bird pushed the pig down";
+    EXPECT_GT(impact->balance.supports.y, -0.95 * impact->balance.pushOnBody.y) << "the ground pushed back";
+    EXPECT_GE(impact->bodyChange().y, 0.0) << "so the pig does not go down";
 }
 
 TEST(ImpactBalance, AFloatingBodyHasNoSupportAndKeepsMomentum)
@@ -122,8 +121,8 @@ TEST(ImpactBalance, AFloatingBodyHasNoSupportAndKeepsMomentum)
     expectBalanced(*impact, "zero g");
     EXPECT_EQ(length(impact->balance.supports), 0.0);
     EXPECT_EQ(length(impact->balance.gravity), 0.0);
-    EXPECT_NEAR(impact->birdChange()[0], -impact->balance.pushOnBody[0], 1e-4);
-    EXPECT_GT(impact->balance.pushOnBody[0], 10.0);
+    EXPECT_NEAR(impact->birdChange().x, -impact->balance.pushOnBody.x, 1e-4);
+    EXPECT_GT(impact->balance.pushOnBody.x, 10.0);
 }
 
 TEST(ImpactBalance, AnAwakeBodysWeightOverTheStepIsCounted)
@@ -138,8 +137,8 @@ TEST(ImpactBalance, AnAwakeBodysWeightOverTheStepIsCounted)
     const auto impact = firstImpact(level, 0.0, 15.0);
     ASSERT_TRUE(impact);
     expectBalanced(*impact, "awake block");
-    EXPECT_LT(impact->balance.gravity[1], 0.0);
-    EXPECT_NEAR(impact->balance.gravity[1], -impact->bodyMassKg * 9.81 / 60.0, 1e-3 * impact->bodyMassKg);
+    EXPECT_LT(impact->balance.gravity.y, 0.0);
+    EXPECT_NEAR(impact->balance.gravity.y, -impact->bodyMassKg * 9.81 / 60.0, 1e-3 * impact->bodyMassKg);
 }
 
 } // namespace

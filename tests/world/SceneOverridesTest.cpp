@@ -150,7 +150,8 @@ TEST(SceneOverrides, ExtremeCustomBirdsFlyAndCollideWithoutBreakingTheWorld)
                 const PredictedFlight preview = session.preview(20.0, speed);
                 ASSERT_FALSE(preview.path.empty());
                 for (const PathPoint& p : preview.path)
-                    ASSERT_TRUE(std::isfinite(p.s[0]) && std::isfinite(p.s[1]) && std::isfinite(p.s[2]));
+                    ASSERT_TRUE(std::isfinite(p.state.position.x) && std::isfinite(p.state.position.y) &&
+                                std::isfinite(p.state.velocity.x));
                 session.launch(20.0, speed);
                 for (int i = 0; i < 60 * 25 && !session.finished(); ++i)
                 {

@@ -72,9 +72,9 @@ public:
     void clearSelection();
     /// An object's outline for drawing (a convex polygon, counter-clockwise; circles with 64 sides; the slingshot's
     /// frame as a box; a terrain polygon's own corners, in its file's order), in metres.
-    std::vector<std::array<double, 2>> outline(const ObjectRef& ref) const;
+    std::vector<Vec2> outline(const ObjectRef& ref) const;
     /// The outline an object would have in this scene (the placement ghost).
-    std::vector<std::array<double, 2>> outlineOf(const ObjectDef& def) const;
+    std::vector<Vec2> outlineOf(const ObjectDef& def) const;
     /// The object under a point, the one drawn on top first (pigs, then blocks, the slingshot, terrain); none if empty.
     std::optional<ObjectRef> objectAt(double x, double y) const;
 
@@ -119,14 +119,13 @@ public:
     /// Adds copies of the blocks, pigs and terrain of `source` as one undo step and selects them. With `at`, the
     /// group moves so its bounding box's bottom centre is there (never below the ground), then settles onto a surface
     /// within snap reach. Returns why not, or an empty string.
-    std::string insertBodies(const LevelDef& source, const std::optional<std::array<double, 2>>& at,
-                             const std::string& label);
+    std::string insertBodies(const LevelDef& source, const std::optional<Vec2>& at, const std::string& label);
     /// Where insertBodies would put the blocks, pigs and terrain of `source` (moved to `at`, on the grid, settled),
     /// without adding them: what the editor outlines under the pointer before a drop.
-    std::vector<ObjectDef> placedBodies(const LevelDef& source, const std::optional<std::array<double, 2>>& at) const;
+    std::vector<ObjectDef> placedBodies(const LevelDef& source, const std::optional<Vec2>& at) const;
     /// Pastes clipboard text (a copied selection, or any level file's JSON) as insertBodies does. Returns why not:
     /// text that is not a level, or one without bodies.
-    std::string paste(std::string_view text, const std::optional<std::array<double, 2>>& at);
+    std::string paste(std::string_view text, const std::optional<Vec2>& at);
 
     // ---------------------------------------------------------------- terrain polygon corners
     /// Moves corner `vertex` of terrain polygon `terrain` to (x, y). Returns why not (a polygon that would cross

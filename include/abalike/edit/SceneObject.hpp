@@ -51,7 +51,7 @@ ObjectDef objectDef(const LevelDef& level, const ObjectRef& ref);
 void setObjectDef(LevelDef& level, const ObjectRef& ref, const ObjectDef& def);
 
 /// Centre of an object (m): a body's centre, the slingshot's launch point.
-std::array<double, 2> centreOf(const ObjectDef& def);
+Vec2 centreOf(const ObjectDef& def);
 
 /// The same object moved so its centre is at (x, y).
 ObjectDef withCentre(ObjectDef def, double x, double y);

@@ -1,15 +1,12 @@
 #pragma once
 
-#include <array>
+#include <abalike/flight/FlightState.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace abalike
 {
-
-/// Free-flight state of a bird: x, y (m) and vx, vy (m/s); y points up.
-using FlightState = std::array<double, 4>;
 
 /// Time-varying wind added to the constant wind: piecewise-constant steps or a smooth sine.
 struct GustDef
@@ -37,9 +34,9 @@ struct GustDef
     bool operator==(const GustDef&) const = default;
 
     /// Gust wind at time t (m/s), without the constant wind.
-    std::array<double, 2> windAt(double t) const;
+    Vec2 windAt(double t) const;
     /// d(windAt)/dt (m/s^2); zero between the jumps of Kind::Steps.
-    std::array<double, 2> rateAt(double t) const;
+    Vec2 rateAt(double t) const;
 };
 
 /// The forces on a bird in free flight. Every term is optional; a term that is absent (zero) is not

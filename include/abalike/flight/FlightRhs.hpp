@@ -32,8 +32,7 @@ public:
 
     void operator()(const FlightState& s, FlightState& dsdt, double t) const
     {
-        dsdt[0] = s[2];
-        dsdt[1] = s[3];
+        dsdt.position = s.velocity;
         double ax = 0.0;
         double ay = 0.0;
         if constexpr ((Terms & kGravityTerm) != 0)
@@ -58,8 +57,7 @@ public:
         {
             (void)t;
         }
-        dsdt[2] = ax;
-        dsdt[3] = ay;
+        dsdt.velocity = {ax, ay};
     }
 
     /// Estimate of the largest |eigenvalue| of the velocity Jacobian: (b + 2 c |v - w|) / m (1/s).
@@ -79,7 +77,7 @@ public:
             if constexpr ((Terms & kQuadraticDragTerm) != 0)
             {
                 const auto r = relativeVelocity(s, t);
-                lambda += 2.0 * m_quadraticPerMass * std::sqrt(r[0] * r[0] + r[1] * r[1]);
+                lambda += 2.0 * m_quadraticPerMass * std::sqrt(r.x * r.x + r.y * r.y);
             }
             return lambda;
         }
@@ -87,8 +85,7 @@ public:
 
     /// For implicit steppers: the Jacobian of the acceleration with respect to the velocity (row-major 2 x 2) and
     /// the acceleration's explicit rate of change in time (non-zero only with smooth gusts).
-    void accelerationJacobian(const FlightState& s, double t, std::array<double, 4>& dadv,
-                              std::array<double, 2>& dadt) const
+    void accelerationJacobian(const FlightState& s, double t, std::array<double, 4>& dadv, Vec2& dadt) const
     {
         dadv = {0.0, 0.0, 0.0, 0.0};
         dadt = {0.0, 0.0};
@@ -103,21 +100,21 @@ public:
             {
                 // a = -k |r| r  =>  da/dv = -k (|r| I + r r^T / |r|)
                 const auto r = relativeVelocity(s, t);
-                const double speed = std::sqrt(r[0] * r[0] + r[1] * r[1]);
+                const double speed = std::sqrt(r.x * r.x + r.y * r.y);
                 if (speed > 0.0)
                 {
-                    dadv[0] -= m_quadraticPerMass * (speed + r[0] * r[0] / speed);
-                    dadv[1] -= m_quadraticPerMass * r[0] * r[1] / speed;
-                    dadv[2] -= m_quadraticPerMass * r[1] * r[0] / speed;
-                    dadv[3] -= m_quadraticPerMass * (speed + r[1] * r[1] / speed);
+                    dadv[0] -= m_quadraticPerMass * (speed + r.x * r.x / speed);
+                    dadv[1] -= m_quadraticPerMass * r.x * r.y / speed;
+                    dadv[2] -= m_quadraticPerMass * r.y * r.x / speed;
+                    dadv[3] -= m_quadraticPerMass * (speed + r.y * r.y / speed);
                 }
             }
             if constexpr ((Terms & kGustTerm) != 0)
             {
                 // a depends on t only through r = v - w(t): da/dt = -(da/dv) w'(t).
                 const auto rate = m_gusts->rateAt(t);
-                dadt[0] = -(dadv[0] * rate[0] + dadv[1] * rate[1]);
-                dadt[1] = -(dadv[2] * rate[0] + dadv[3] * rate[1]);
+                dadt.x = -(dadv[0] * rate.x + dadv[1] * rate.y);
+                dadt.y = -(dadv[2] * rate.x + dadv[3] * rate.y);
             }
         }
         else
@@ -129,13 +126,13 @@ public:
 
 private:
     /// Velocity relative to the air, v - w(t).
-    std::array<double, 2> relativeVelocity(const FlightState& s, double t) const
+    Vec2 relativeVelocity(const FlightState& s, double t) const
     {
-        std::array<double, 2> r{s[2], s[3]};
+        Vec2 r = s.velocity;
         if constexpr ((Terms & kWindTerm) != 0)
         {
-            r[0] -= m_windX;
-            r[1] -= m_windY;
+            r.x -= m_windX;
+            r.y -= m_windY;
         }
         if constexpr ((Terms & kGustTerm) != 0)
         {
@@ -143,14 +140,14 @@ private:
             {
                 // Inline rather than through GustDef::windAt: a returned pair costs a store-forwarding stall here.
                 const double sine = std::sin(m_gustOmega * t + m_gusts->phaseRad);
-                r[0] -= m_gusts->amplitudeX * sine;
-                r[1] -= m_gusts->amplitudeY * sine;
+                r.x -= m_gusts->amplitudeX * sine;
+                r.y -= m_gusts->amplitudeY * sine;
             }
             else
             {
-                const auto gust = m_gusts->windAt(t);
-                r[0] -= gust[0];
-                r[1] -= gust[1];
+                const Vec2 gust = m_gusts->windAt(t);
+                r.x -= gust.x;
+                r.y -= gust.y;
             }
         }
         else

@@ -11,8 +11,8 @@ namespace abalike
 /// A point of a flight path in time.
 struct PathPoint
 {
-    double t = 0.0;
-    FlightState s{};
+    double timeS = 0.0;
+    FlightState state{};
 };
 
 /// Where and when a flight first meets something.

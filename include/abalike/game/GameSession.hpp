@@ -37,10 +37,10 @@ struct ShotRecord
     /// Distance between predicted and actual first contact; only when the bird flew the predicted flight, i.e.
     /// no ability changed it before its first contact (a split does not: the bird flies on unchanged).
     std::optional<double> deviationM;
-    std::optional<EntityKind> firstTouched;           ///< what the bird first touched
-    std::vector<std::array<double, 3>> predictedPath; ///< (t, x, y)
-    std::vector<std::array<double, 3>> actualPath;    ///< (t, x, y)
-    std::vector<std::vector<BodyRef>> actualTouches;  ///< beside each actualPath point: what the bird touched
+    std::optional<EntityKind> firstTouched; ///< what the bird first touched
+    std::vector<TrackPoint> predictedPath;
+    std::vector<TrackPoint> actualPath;
+    std::vector<std::vector<BodyRef>> actualTouches; ///< beside each actualPath point: what the bird touched
     std::optional<AbilityUse> ability; ///< the ability, if used: when, where, and every impulse it applied
     /// The energy balance at the first contact, along the RK4 flight the bird flew; none when an ability fired
     /// before the first contact or the bird touched nothing.
@@ -128,7 +128,7 @@ public:
     /// Fastest launch of the current bird: a full pull, at most the catalog's launch-speed cap.
     double maxLaunchSpeed() const;
     /// Where a bird leaves the slingshot.
-    std::array<double, 2> launchPoint() const;
+    Vec2 launchPoint() const;
 
     /// The flight model acting on a bird in this level (gravity, drag from air density, wind).
     FlightModel flightModelFor(const BirdType& bird) const;

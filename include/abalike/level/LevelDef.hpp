@@ -55,7 +55,7 @@ struct TerrainDef
     /// A polygon instead of a box (hills, slopes, pits, floating islands): its corners in metres, simple, convex or
     /// not, either winding; solid. When given, x, y, w and h hold its bounding box (centre and size) and angleDeg is
     /// 0; the file gives only the points.
-    std::vector<std::array<double, 2>> points;
+    std::vector<Vec2> points;
 
     bool isPolygon() const { return !points.empty(); }
 

@@ -40,6 +40,6 @@ std::optional<double> closedFormAnswer(QuizQuantity quantity, const QuizLaunch& 
 /// The quantity measured on the path the bird really flew (ShotRecord::actualPath): where (and when) its centre comes
 /// back down through the launch point's height, interpolated between the physics steps around it. nullopt when it
 /// touched something before that, or never came back down.
-std::optional<double> measuredAnswer(QuizQuantity quantity, const ShotRecord& shot, std::array<double, 2> launchPoint);
+std::optional<double> measuredAnswer(QuizQuantity quantity, const ShotRecord& shot, Vec2 launchPoint);
 
 } // namespace abalike

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <abalike/util/Vec2.hpp>
 #include <array>
 #include <optional>
 #include <string>
@@ -21,15 +22,15 @@ struct BodyVelocity
 /// besides each other's momentum: with the two changes of momentum they add to zero (FirstImpact::balanceResidual).
 struct ImpactBalance
 {
-    std::array<double, 2> pushOnBody{};        ///< from the bird through their contact (the bird got the opposite)
-    std::array<double, 2> supports{};          ///< on the body from all else it touches: the ground, blocks, neighbours
-    std::array<double, 2> birdOtherContacts{}; ///< on the bird from anything else it touched in that step
+    Vec2 pushOnBody{};        ///< from the bird through their contact (the bird got the opposite)
+    Vec2 supports{};          ///< on the body from all else it touches: the ground, blocks, neighbours
+    Vec2 birdOtherContacts{}; ///< on the bird from anything else it touched in that step
     /// Weight over the time Box2D integrated each body: the struck body's. The bird's weight and drag over the step
     /// are already in the velocity it starts the step with (the flight model's chord), so they add nothing here.
-    std::array<double, 2> gravity{};
+    Vec2 gravity{};
     /// What the break rule moved after the solver: the impulse given back to the bird and to the body's other
     /// partners when it broke, and momentum a breaking block handed on to the bird (0 when nothing broke).
-    std::array<double, 2> breakThrough{};
+    Vec2 breakThrough{};
 };
 
 /// The launched bird's first contact with a block or a pig, from Box2D's own velocities: "before" is the start of the
@@ -48,24 +49,24 @@ struct FirstImpact
     BodyVelocity birdAfter;
     BodyVelocity bodyBefore;
     BodyVelocity bodyAfter;
-    std::array<double, 2> birdCentre{}; ///< the bird's centre when it touched (m)
-    std::array<double, 2> bodyCentre{}; ///< the body's centre of mass then
-    std::array<double, 2> normal{};     ///< unit contact normal, from the bird into the body
-    std::array<double, 2> point{};      ///< where they touched (m)
-    double damageNs = 0.0;              ///< impulse the body took as damage during that step (N s)
-    double strengthBeforeNs = 0.0;      ///< what the body could still absorb when the step began (N s)
-    bool broke = false;                 ///< the body broke (or the pig was defeated) in that step
+    Vec2 birdCentre{};             ///< the bird's centre when it touched (m)
+    Vec2 bodyCentre{};             ///< the body's centre of mass then
+    Vec2 normal{};                 ///< unit contact normal, from the bird into the body
+    Vec2 point{};                  ///< where they touched (m)
+    double damageNs = 0.0;         ///< impulse the body took as damage during that step (N s)
+    double strengthBeforeNs = 0.0; ///< what the body could still absorb when the step began (N s)
+    bool broke = false;            ///< the body broke (or the pig was defeated) in that step
     ImpactBalance balance;
 
     /// Change of the bird's and of the body's momentum over the step (after minus before, kg m/s).
-    std::array<double, 2> birdChange() const;
-    std::array<double, 2> bodyChange() const;
+    Vec2 birdChange() const;
+    Vec2 bodyChange() const;
     /// The two changes less every impulse of the balance: zero but for Box2D's float rounding.
-    std::array<double, 2> balanceResidual() const;
+    Vec2 balanceResidual() const;
 
     /// Linear momentum of bird and body together (kg m/s).
-    std::array<double, 2> momentumBefore() const;
-    std::array<double, 2> momentumAfter() const;
+    Vec2 momentumBefore() const;
+    Vec2 momentumAfter() const;
     /// Kinetic energy of bird and body together, translation and rotation (J).
     double kineticBeforeJ() const;
     double kineticAfterJ() const;

@@ -104,7 +104,7 @@ public:
     /// The bird's first contact with a block or a pig, once it has had one (not for the ground or terrain).
     const std::optional<FirstImpact>& birdImpact() const;
     /// The bird's path since launch, one point (t since launch, x, y) per step.
-    const std::vector<std::array<double, 3>>& birdPath() const;
+    const std::vector<TrackPoint>& birdPath() const;
     /// Beside each point of birdPath(): what the bird touched in the step that ended there.
     const std::vector<std::vector<BodyRef>>& birdPathTouches() const;
 

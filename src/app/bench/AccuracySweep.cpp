@@ -58,7 +58,7 @@ public:
         {
             const FlightState a = at(i * kReferenceDt);
             const FlightState b = other.at(i * kReferenceDt);
-            worst = std::max(worst, std::hypot(a[0] - b[0], a[1] - b[1]));
+            worst = std::max(worst, std::hypot(a.position.x - b.position.x, a.position.y - b.position.y));
         }
         return worst;
     }
@@ -92,7 +92,8 @@ SweepPoint measure(const AccuracyProblem& problem, const ReferencePath& referenc
             const FlightStep& step = integrator.step();
             // The output time is i dt, not the integrator's summed time: the reference grid is exact multiples.
             const FlightState exact = reference.at(static_cast<double>(i + 1) * dt);
-            const double error = std::hypot(step.s1[0] - exact[0], step.s1[1] - exact[1]);
+            const double error =
+                std::hypot(step.s1.position.x - exact.position.x, step.s1.position.y - exact.position.y);
             point.maxError = std::max(point.maxError, error);
             point.finalError = error;
         }

@@ -81,15 +81,15 @@ std::optional<FlightState> naiveFirstContact(const ReferenceShot& shot, const Na
     if (settings.halfStepStart)
     {
         const FlightState a0 = forces.rightHandSide(0.0, s0);
-        v0[2] -= 0.5 * h * a0[2];
-        v0[3] -= 0.5 * h * a0[3];
+        v0.velocity.x -= 0.5 * h * a0.velocity.x;
+        v0.velocity.y -= 0.5 * h * a0.velocity.y;
     }
 
     b2BodyDef def;
     def.type = b2_dynamicBody;
     def.bullet = true;
-    def.position.Set(static_cast<float>(s0[0]), static_cast<float>(s0[1]));
-    def.linearVelocity.Set(static_cast<float>(v0[2]), static_cast<float>(v0[3]));
+    def.position.Set(static_cast<float>(s0.position.x), static_cast<float>(s0.position.y));
+    def.linearVelocity.Set(static_cast<float>(v0.velocity.x), static_cast<float>(v0.velocity.y));
     b2Body* body = world.CreateBody(&def);
     birdBody = body;
     b2CircleShape circle;
@@ -105,7 +105,8 @@ std::optional<FlightState> naiveFirstContact(const ReferenceShot& shot, const Na
         const FlightState a = forces.rightHandSide(step * h, {p.x, p.y, v.x, v.y});
         const double mass = body->GetMass();
         body->ApplyForceToCenter(
-            b2Vec2(static_cast<float>(mass * a[2]), static_cast<float>(mass * (a[3] + shot.gravity))), true);
+            b2Vec2(static_cast<float>(mass * a.velocity.x), static_cast<float>(mass * (a.velocity.y + shot.gravity))),
+            true);
         world.Step(static_cast<float>(h), 8, 3);
         if (listener.touch)
             return listener.touch;

@@ -37,7 +37,7 @@ std::optional<double> distance(const std::optional<ContactPoint>& a, const std::
 {
     if (!a || !b)
         return std::nullopt;
-    return std::hypot(a->x - (*b)[0], a->y - (*b)[1]);
+    return std::hypot(a->x - (*b).position.x, a->y - (*b).position.y);
 }
 
 ReferenceRow fire(const ReferenceShot& shot)
@@ -61,7 +61,7 @@ ReferenceRow fire(const ReferenceShot& shot)
             return session.world().castCircle(bird.radiusM, a, b);
         };
         const auto p = session.launchPoint();
-        return predictFlight(session.flightModelFor(bird), exact, launchState(p[0], p[1], shot.speedMps, shot.angleDeg),
+        return predictFlight(session.flightModelFor(bird), exact, launchState(p.x, p.y, shot.speedMps, shot.angleDeg),
                              limits)
             .contact;
     };

@@ -23,27 +23,27 @@ public:
 
     void operator()(const FlightState& s, FlightState& dsdt, double t) const
     {
-        dsdt[0] = s[2];
-        dsdt[1] = s[3];
+        dsdt.position.x = s.velocity.x;
+        dsdt.position.y = s.velocity.y;
         double ax = 0.0;
         double ay = -m_model.gravity;
         if (m_model.linearDrag != 0.0 || m_model.quadraticDrag != 0.0)
         {
-            double rx = s[2] - m_model.windX;
-            double ry = s[3] - m_model.windY;
+            double rx = s.velocity.x - m_model.windX;
+            double ry = s.velocity.y - m_model.windY;
             if (m_model.gusts)
             {
                 const auto gust = m_model.gusts->windAt(t);
-                rx -= gust[0];
-                ry -= gust[1];
+                rx -= gust.x;
+                ry -= gust.y;
             }
             const double k =
                 (m_model.linearDrag + m_model.quadraticDrag * std::sqrt(rx * rx + ry * ry)) / m_model.massKg;
             ax -= k * rx;
             ay -= k * ry;
         }
-        dsdt[2] = ax;
-        dsdt[3] = ay;
+        dsdt.velocity.x = ax;
+        dsdt.velocity.y = ay;
     }
 
 private:
@@ -71,20 +71,20 @@ double nsPerEvaluation(const Rhs& rhs, bool quick)
     return 1e9 * medianSeconds(sweep, quick ? 9 : 41, 20) / static_cast<double>(states.size());
 }
 
-struct Scene
+struct FlightScene
 {
     const char* name;
     FlightModel model;
     ReferenceShot shot;
 };
 
-std::vector<Scene> scenes()
+std::vector<FlightScene> scenes()
 {
     const ReferenceShot base{.name = "cost", .description = "", .angleDeg = 50.0, .speedMps = 30.0, .wallX = 60.0};
-    std::vector<Scene> list;
+    std::vector<FlightScene> list;
     list.push_back({"gravity only (vacuum)", FlightModel{}, base});
 
-    Scene windy{"gravity + quadratic drag + wind", FlightModel{}, base};
+    FlightScene windy{"gravity + quadratic drag + wind", FlightModel{}, base};
     windy.model.massKg = 4.0;
     windy.model.quadraticDrag = quadraticDragCoefficient(1.2, 0.47, 0.25);
     windy.model.windX = -6.0;
@@ -94,7 +94,7 @@ std::vector<Scene> scenes()
     windy.shot.windY = 1.5;
     list.push_back(windy);
 
-    Scene all = windy;
+    FlightScene all = windy;
     all.name = "all terms (+ linear drag, sine gusts)";
     all.model.linearDrag = 0.2;
     GustDef gusts;
@@ -112,7 +112,7 @@ std::vector<Scene> scenes()
 std::vector<RhsCost> measureRhsCost(bool quick)
 {
     std::vector<RhsCost> rows;
-    for (const Scene& scene : scenes())
+    for (const FlightScene& scene : scenes())
     {
         RhsCost row;
         row.scene = scene.name;

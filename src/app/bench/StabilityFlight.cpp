@@ -55,11 +55,13 @@ double relativeError(const std::vector<FlightState>& path, const std::vector<Fli
     double scale = 0.0;
     for (std::size_t i = 0; i < path.size(); ++i)
     {
-        const double e = std::hypot(path[i][0] - reference[i][0], path[i][1] - reference[i][1]);
+        const double e =
+            std::hypot(path[i].position.x - reference[i].position.x, path[i].position.y - reference[i].position.y);
         if (!std::isfinite(e))
             return std::numeric_limits<double>::infinity();
         worst = std::max(worst, e);
-        scale = std::max(scale, std::hypot(reference[i][0] - s0[0], reference[i][1] - s0[1]));
+        scale = std::max(scale,
+                         std::hypot(reference[i].position.x - s0.position.x, reference[i].position.y - s0.position.y));
     }
     return scale > 0.0 ? worst / scale : worst;
 }
@@ -161,7 +163,7 @@ StabilityResult runStabilityCase(const StabilityCase& c, bool quick)
     plain.guardStiffness = false;
     const std::vector<FlightState> plainPath = fly(c, plain);
     for (std::size_t i = 0; i < plainPath.size(); ++i)
-        if (!std::isfinite(plainPath[i][0]) || !std::isfinite(plainPath[i][1]))
+        if (!std::isfinite(plainPath[i].position.x) || !std::isfinite(plainPath[i].position.y))
         {
             result.plainFinite = false;
             result.plainBlowUpS = static_cast<double>(i + 1) * kDt;

@@ -86,7 +86,7 @@ LaunchOutcome launch(const LevelDef& level, const BirdType& bird, double speed, 
     LaunchOutcome outcome;
     const bool hadWall = wallBody(world) != nullptr;
     int afterContact = 0;
-    b2Vec2 previous(static_cast<float>(s0[0]), static_cast<float>(s0[1]));
+    b2Vec2 previous(static_cast<float>(s0.position.x), static_cast<float>(s0.position.y));
     for (int i = 0; i < 15 * 60 && afterContact < 60 && world.bird() != nullptr; ++i)
     {
         world.step();

@@ -112,7 +112,7 @@ int runPredict(const PredictArgs& a)
     // what a double can carry diverge, and that is an error.
     const bool diverged = flight.end == FlightEnd::Diverged;
     if (diverged && settings.guardStiffness)
-        throw UsageError("the flight left the range of a double at t = " + std::to_string(flight.path.back().t) +
+        throw UsageError("the flight left the range of a double at t = " + std::to_string(flight.path.back().timeS) +
                          " s (the forces overflow: use a smaller speed, drag or a larger mass)");
     const bool landed = flight.end == FlightEnd::Landed;
 
@@ -121,8 +121,8 @@ int runPredict(const PredictArgs& a)
         std::cout << "stepper " << stepperName(settings.stepper) << ", dt " << settings.dtS << " s, " << flight.steps
                   << " steps, " << flight.rhsEvaluations << " evaluations, stiffness guard "
                   << guardActionName(flight.guard) << " (" << flight.substeps << " sub-steps)\n"
-                  << (landed ? "landed" : "stopped") << " after " << last.t << " s at x = " << last.s[0] << " m (range "
-                  << last.s[0] - x0 << " m), highest point " << flight.maxHeightM << " m\n";
+                  << (landed ? "landed" : "stopped") << " after " << last.timeS << " s at x = " << last.state.position.x
+                  << " m (range " << last.state.position.x - x0 << " m), highest point " << flight.maxHeightM << " m\n";
         return 0;
     }
 
@@ -141,14 +141,18 @@ int runPredict(const PredictArgs& a)
     out["terms"] = termNames(activeTerms(model));
     out["landed"] = landed;
     out["diverged"] = diverged; // the path stops at the last finite state
-    out["range_m"] = last.s[0] - x0;
-    out["flight_time_s"] = last.t;
+    out["range_m"] = last.state.position.x - x0;
+    out["flight_time_s"] = last.timeS;
     out["max_height_m"] = flight.maxHeightM;
     out["max_stiffness_ratio"] = flight.maxStiffnessRatio;
-    out["final"] = {{"t", last.t}, {"x", last.s[0]}, {"y", last.s[1]}, {"vx", last.s[2]}, {"vy", last.s[3]}};
+    out["final"] = {{"t", last.timeS},
+                    {"x", last.state.position.x},
+                    {"y", last.state.position.y},
+                    {"vx", last.state.velocity.x},
+                    {"vy", last.state.velocity.y}};
     nlohmann::ordered_json path = nlohmann::ordered_json::array();
     for (const PathPoint& p : flight.path)
-        path.push_back({p.t, p.s[0], p.s[1], p.s[2], p.s[3]});
+        path.push_back({p.timeS, p.state.position.x, p.state.position.y, p.state.velocity.x, p.state.velocity.y});
     out["path"] = std::move(path);
     std::cout << out.dump() << '\n';
     return 0;

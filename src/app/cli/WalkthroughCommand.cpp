@@ -28,14 +28,14 @@ struct WalkthroughArgs
 
 nlohmann::ordered_json stateJson(const FlightState& s)
 {
-    return nlohmann::ordered_json::array({s[0], s[1], s[2], s[3]});
+    return nlohmann::ordered_json::array({s.position.x, s.position.y, s.velocity.x, s.velocity.y});
 }
 
 /// One row of the readable table: a label, four numbers and a note.
 void printRow(const char* label, const FlightState& values, const std::string& note)
 {
-    print("%-8s %14.10g %14.10g %14.10g %14.10g  %s\n", label, values[0], values[1], values[2], values[3],
-          note.c_str());
+    print("%-8s %14.10g %14.10g %14.10g %14.10g  %s\n", label, values.position.x, values.position.y, values.velocity.x,
+          values.velocity.y, note.c_str());
 }
 
 void printTable(const Rk4Walkthrough& walk)
@@ -56,9 +56,7 @@ void printTable(const Rk4Walkthrough& walk)
     if (walk.exact)
     {
         printRow("exact", *walk.exact, "closed form at t0 + dt");
-        FlightState error{};
-        for (std::size_t i = 0; i < error.size(); ++i)
-            error[i] = walk.next[i] - (*walk.exact)[i];
+        const FlightState error{walk.next.position - walk.exact->position, walk.next.velocity - walk.exact->velocity};
         printRow("error", error, "next - exact");
     }
     else
@@ -87,13 +85,9 @@ int runWalkthrough(const WalkthroughArgs& a)
         throw UsageError(e.what());
     }
     // Every input was finite, but the forces or the step can still overflow a double: refuse rather than print inf.
-    const auto finite = [](const FlightState& s)
-    {
-        return std::all_of(s.begin(), s.end(), [](double v) { return std::isfinite(v); });
-    };
-    bool ok = finite(walk.next) && finite(walk.averageSlope) && (!walk.exact || finite(*walk.exact));
+    bool ok = isFinite(walk.next) && isFinite(walk.averageSlope) && (!walk.exact || isFinite(*walk.exact));
     for (const Rk4Stage& stage : walk.stages)
-        ok = ok && finite(stage.slope) && finite(stage.at);
+        ok = ok && isFinite(stage.slope) && isFinite(stage.at);
     if (!ok)
         throw UsageError("the forces or the step overflow a double at this state; use a smaller speed, drag or step");
     if (!a.json)

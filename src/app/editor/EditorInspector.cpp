@@ -34,7 +34,7 @@ void fitPolygonToBox(TerrainDef& terrain, const TerrainDef& before)
     const double sx = before.widthM > 0.0 ? std::max(terrain.widthM, 0.01) / before.widthM : 1.0;
     const double sy = before.heightM > 0.0 ? std::max(terrain.heightM, 0.01) / before.heightM : 1.0;
     for (auto& point : terrain.points)
-        point = {terrain.x + (point[0] - before.x) * sx, terrain.y + (point[1] - before.y) * sy};
+        point = {terrain.x + (point.x - before.x) * sx, terrain.y + (point.y - before.y) * sy};
 }
 bool sliderDouble(const char* label, double& value, double min, double max, const char* format,
                   ImGuiSliderFlags flags = 0)

@@ -24,11 +24,11 @@ const sf::Color kStale(235, 130, 130);
 const sf::Color kGhost(255, 255, 255, 150);
 const sf::Color kBand(120, 190, 255);
 
-std::vector<sf::Vector2f> closed(const std::vector<std::array<double, 2>>& outline)
+std::vector<sf::Vector2f> closed(const std::vector<Vec2>& outline)
 {
     std::vector<sf::Vector2f> points;
     for (const auto& p : outline)
-        points.emplace_back(static_cast<float>(p[0]), static_cast<float>(p[1]));
+        points.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
     if (!points.empty())
         points.push_back(points.front());
     return points;
@@ -44,7 +44,7 @@ void SceneDrawing::addOutline(const Camera& camera, const ObjectRef& ref, float 
 void SceneDrawing::addHeldOutline(const Camera& camera, sf::Vector2f pointer, float widthPx)
 {
     // Exactly where a click would drop them: the same placement (grid, settling onto what is below) as the drop.
-    const std::array<double, 2> at{pointer.x, pointer.y};
+    const Vec2 at{pointer.x, pointer.y};
     for (const ObjectDef& def : m_ctx.scene().placedBodies(m_tools.held->bodies, at))
         m_mesh.addPolyline(closed(m_ctx.scene().outlineOf(def)), widthPx * camera.metresPerPixel(), kGhost);
 }

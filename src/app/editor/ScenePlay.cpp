@@ -97,7 +97,7 @@ void ScenePlay::handleEvent(const sf::Event& event)
     if (m_session->phase() != Phase::Aiming || m_session->currentBird() == nullptr || m_requestedLaunch)
         return;
     const auto pouch = m_session->launchPoint();
-    const sf::Vector2f pouchPoint(static_cast<float>(pouch[0]), static_cast<float>(pouch[1]));
+    const sf::Vector2f pouchPoint(static_cast<float>(pouch.x), static_cast<float>(pouch.y));
     if (m_aim.handleEvent(event, m_camera, pouchPoint))
         fire();
     m_previewStale = true;

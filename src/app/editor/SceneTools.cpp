@@ -98,9 +98,9 @@ sf::Vector2f SceneTools::vertexHandlePosition(const VertexHandle& handle) const
     const auto& points = m_ctx.scene().level().terrain[handle.terrain].points;
     const auto& a = points[handle.vertex];
     if (!handle.edgeMiddle)
-        return {static_cast<float>(a[0]), static_cast<float>(a[1])};
+        return {static_cast<float>(a.x), static_cast<float>(a.y)};
     const auto& b = points[(handle.vertex + 1) % points.size()];
-    return {static_cast<float>(0.5 * (a[0] + b[0])), static_cast<float>(0.5 * (a[1] + b[1]))};
+    return {static_cast<float>(0.5 * (a.x + b.x)), static_cast<float>(0.5 * (a.y + b.y))};
 }
 
 std::optional<SceneTools::VertexHandle> SceneTools::vertexHandleAt(sf::Vector2f pixel) const
@@ -243,7 +243,7 @@ void SceneTools::pressOnScene(sf::Vector2f pixel, bool shift, bool ctrl)
         {
             const ObjectRef placed = m_ctx.scene().place(toolObject(world));
             const auto at = centreOf(objectDef(m_ctx.scene().level(), placed));
-            m_ctx.app.trace().write("editor-place", {{"object", pointerOf(placed)}, {"x", at[0]}, {"y", at[1]}});
+            m_ctx.app.trace().write("editor-place", {{"object", pointerOf(placed)}, {"x", at.x}, {"y", at.y}});
             m_ctx.message.clear();
         }
         catch (const std::exception& error)
@@ -362,7 +362,7 @@ void SceneTools::releaseOnScene(sf::Vector2f pixel)
     }
 }
 
-std::array<double, 2> SceneTools::insertionPoint() const
+Vec2 SceneTools::insertionPoint() const
 {
     if (pointerOnScene)
     {
@@ -396,8 +396,7 @@ void SceneTools::dropHeld(sf::Vector2f world, bool shift)
         tool = Tool::Select;
         return;
     }
-    const std::string why =
-        m_ctx.scene().insertBodies(held->bodies, std::array<double, 2>{world.x, world.y}, held->label);
+    const std::string why = m_ctx.scene().insertBodies(held->bodies, Vec2{world.x, world.y}, held->label);
     const std::size_t count = m_ctx.scene().selection().size();
     m_ctx.message = why.empty() ? held->label + ": " + std::to_string(count) + " bodies dropped"
                                 : "Cannot drop " + held->label + ": " + why;

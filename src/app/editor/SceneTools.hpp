@@ -72,7 +72,7 @@ public:
     bool handleDragged() const { return m_resizing || m_vertexDrag; }
     /// Where pasted or inserted bodies go: under the pointer when it is on the scene, else the view's centre on the
     /// ground.
-    std::array<double, 2> insertionPoint() const;
+    Vec2 insertionPoint() const;
 
     Tool tool = Tool::Select;
     BlockDef blockTemplate{BlockShape::Box, "wood", 0.0, 0.0, 1.0, 1.0, 0.0, 0.1};

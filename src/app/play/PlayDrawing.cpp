@@ -28,7 +28,7 @@ void drawPullLimit(sf::RenderTarget& target, const Camera& camera, const GameSes
                    float uiScale)
 {
     const auto launch = session.launchPoint();
-    const sf::Vector2f pouch = camera.toScreen({static_cast<float>(launch[0]), static_cast<float>(launch[1])});
+    const sf::Vector2f pouch = camera.toScreen({static_cast<float>(launch.x), static_cast<float>(launch.y)});
     const float radius = AimController::fullPullPx(camera.windowSize());
     const sf::Color colour = faded(palette::kPreviewDot, pulling ? 0.85f : 0.3f);
     const float width = (pulling ? 2.5f : 1.5f) * uiScale;

@@ -23,8 +23,8 @@ void forEachKeepVisible(const GameSession& session, const Camera& camera, bool p
         visit(name, sf::FloatRect(topLeft, bottomRight - topLeft));
     };
     // The slingshot with the bird it holds: its pouch and a post's length under it.
-    const std::array<double, 2> pouch = session.launchPoint();
-    box("slingshot", pouch[0] - 0.8, pouch[1] + 0.8, pouch[0] + 0.8, pouch[1] - 1.6);
+    const Vec2 pouch = session.launchPoint();
+    box("slingshot", pouch.x - 0.8, pouch.y + 0.8, pouch.x + 0.8, pouch.y - 1.6);
     if (const Entity* bird = session.world().bird(); bird != nullptr && bird->body != nullptr)
     {
         const b2Vec2 p = bird->body->GetPosition();

@@ -23,12 +23,12 @@ namespace
 constexpr float kDotRadiusPx = 3.5f;
 constexpr float kContactRingPx = 10.0f;
 
-sf::Vector2f toVector(const std::array<double, 3>& point)
+sf::Vector2f toVector(const TrackPoint& point)
 {
-    return {static_cast<float>(point[1]), static_cast<float>(point[2])};
+    return {static_cast<float>(point.position.x), static_cast<float>(point.position.y)};
 }
 
-std::vector<sf::Vector2f> worldPoints(std::span<const std::array<double, 3>> path)
+std::vector<sf::Vector2f> worldPoints(std::span<const TrackPoint> path)
 {
     std::vector<sf::Vector2f> points;
     points.reserve(path.size());
@@ -149,7 +149,8 @@ void OverlayRenderer::drawPreview(sf::RenderTarget& target, const Camera& camera
     std::vector<sf::Vector2f> points;
     points.reserve(count);
     for (std::size_t i = 0; i < count; ++i)
-        points.emplace_back(static_cast<float>(preview.path[i].s[0]), static_cast<float>(preview.path[i].s[1]));
+        points.emplace_back(static_cast<float>(preview.path[i].state.position.x),
+                            static_cast<float>(preview.path[i].state.position.y));
     addDots(camera, points, kDotRadiusPx, 1.0f);
     if (preview.contact && count == preview.path.size())
         addPredictedContact(camera, *preview.contact, 1.0f);

@@ -12,7 +12,7 @@ namespace
 const sf::Color kShotColours[] = {{230, 159, 0}, {86, 180, 233}, {0, 158, 115}, {240, 228, 66}, {204, 121, 167}};
 } // namespace
 
-std::vector<PathSample> samplesOf(const std::vector<std::array<double, 3>>& path)
+std::vector<PathSample> samplesOf(const std::vector<TrackPoint>& path)
 {
     std::vector<PathSample> samples;
     samples.reserve(path.size());
@@ -22,12 +22,12 @@ std::vector<PathSample> samplesOf(const std::vector<std::array<double, 3>>& path
         // a step's own time) borrows its neighbour's.
         const std::size_t lo = i == 0 ? 0 : i - 1;
         const std::size_t hi = std::min(i + 1, path.size() - 1);
-        const double dt = path[hi][0] - path[lo][0];
-        PathSample s{path[i][0], path[i][1], path[i][2], 0.0, 0.0};
+        const double dt = path[hi].timeS - path[lo].timeS;
+        PathSample s{path[i].timeS, path[i].position.x, path[i].position.y, 0.0, 0.0};
         if (dt > 1e-9)
         {
-            s.vx = (path[hi][1] - path[lo][1]) / dt;
-            s.vy = (path[hi][2] - path[lo][2]) / dt;
+            s.vx = (path[hi].position.x - path[lo].position.x) / dt;
+            s.vy = (path[hi].position.y - path[lo].position.y) / dt;
         }
         else if (!samples.empty())
         {

@@ -30,7 +30,7 @@ struct MeasuredPath
 };
 
 /// Samples of a flown path (t, x, y per step) with velocities from central differences.
-std::vector<PathSample> samplesOf(const std::vector<std::array<double, 3>>& path);
+std::vector<PathSample> samplesOf(const std::vector<TrackPoint>& path);
 
 /// The paths the last several shots really flew on this level, kept across restarts (as in the original game, where
 /// the previous shots stay on screen, dimmed), until the player clears them or plays another level. The play screen

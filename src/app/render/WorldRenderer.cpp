@@ -96,12 +96,12 @@ void WorldRenderer::drawForeground(sf::RenderTarget& target, const Camera& camer
     m_mesh.setPixelSize(pixelM);
 
     // The slingshot and the bird it holds.
-    const std::array<double, 2> pouch = session.launchPoint();
+    const Vec2 pouch = session.launchPoint();
     SlingshotPose pose;
     // The slingshot stands on whatever is under it: a cliff or a hill top, else the ground.
-    const auto standY = static_cast<float>(standingY(session.world(), level.slingshot.x, pouch[1]));
+    const auto standY = static_cast<float>(standingY(session.world(), level.slingshot.x, pouch.y));
     pose.base = {static_cast<float>(level.slingshot.x), standY};
-    pose.pouch = {static_cast<float>(pouch[0]), static_cast<float>(pouch[1])};
+    pose.pouch = {static_cast<float>(pouch.x), static_cast<float>(pouch.y)};
     const BirdType* loaded = session.phase() == Phase::Aiming ? session.currentBird() : nullptr;
     if (loaded != nullptr)
     {
@@ -146,9 +146,9 @@ std::optional<sf::Vector2f> WorldRenderer::loadedBirdAt(const GameSession& sessi
     const BirdType* loaded = session.phase() == Phase::Aiming ? session.currentBird() : nullptr;
     if (loaded == nullptr)
         return std::nullopt;
-    const std::array<double, 2> pouch = session.launchPoint();
-    const auto standY = static_cast<float>(standingY(session.world(), session.level().slingshot.x, pouch[1]));
-    sf::Vector2f seat = sf::Vector2f(static_cast<float>(pouch[0]), static_cast<float>(pouch[1])) + pullOffset;
+    const Vec2 pouch = session.launchPoint();
+    const auto standY = static_cast<float>(standingY(session.world(), session.level().slingshot.x, pouch.y));
+    sf::Vector2f seat = sf::Vector2f(static_cast<float>(pouch.x), static_cast<float>(pouch.y)) + pullOffset;
     seat.y = std::max(seat.y, standY + static_cast<float>(loaded->radiusM));
     return seat;
 }
@@ -174,7 +174,7 @@ void WorldRenderer::addTerrainPolygon(const Entity& entity, const TerrainDef& de
     // The designed convex pieces (not the world's, which are inset for Box2D's skin and would show seams), then
     // the outline and the grass along the polygon as designed. Terrain never moves: world coordinates.
     (void)entity;
-    for (const std::vector<Point2>& piece : convexPieces(def.points))
+    for (const std::vector<Vec2>& piece : convexPieces(def.points))
     {
         std::vector<sf::Vector2f> corners;
         for (const auto& [x, y] : piece)
@@ -311,7 +311,7 @@ void WorldRenderer::addWaitingBirds(const GameSession& session, float pixelM)
         const BirdType& bird = birdOf(session.catalog(), type);
         const auto radius = static_cast<float>(bird.radiusM);
         x -= radius;
-        const double standY = standingY(session.world(), x, session.launchPoint()[1]);
+        const double standY = standingY(session.world(), x, session.launchPoint().y);
         m_mesh.setLocalTransform(placeAt({x, static_cast<float>(standY) + radius}));
         CharacterPainter::paintBird(m_mesh, bird, radius, pixelM);
         x -= radius + kWaitingGapM + 0.3f * radius; // room for the tail feathers

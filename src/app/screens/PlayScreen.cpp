@@ -26,9 +26,9 @@ namespace abalike::app
 
 namespace
 {
-sf::Vector2f toVector(const std::array<double, 2>& p)
+sf::Vector2f toVector(const Vec2& p)
 {
-    return {static_cast<float>(p[0]), static_cast<float>(p[1])};
+    return {static_cast<float>(p.x), static_cast<float>(p.y)};
 }
 } // namespace
 

@@ -55,9 +55,9 @@ Json impactJson(const std::optional<FirstImpact>& impact)
     {
         return Json{v.vx, v.vy, v.omegaRadPerS};
     };
-    const auto pair = [](const std::array<double, 2>& p)
+    const auto pair = [](const Vec2& p)
     {
-        return Json{p[0], p[1]};
+        return Json{p.x, p.y};
     };
     Json out;
     out["t"] = impact->tS;
@@ -87,11 +87,11 @@ Json impactJson(const std::optional<FirstImpact>& impact)
     return out;
 }
 
-Json pathJson(const std::vector<std::array<double, 3>>& path)
+Json pathJson(const std::vector<TrackPoint>& path)
 {
     Json out = Json::array();
     for (const auto& p : path)
-        out.push_back({p[0], p[1], p[2]});
+        out.push_back({p.timeS, p.position.x, p.position.y});
     return out;
 }
 

@@ -23,7 +23,7 @@ bool ShotFollower::follow(const GameSession& session)
     m_speedMps = shot.speedMps;
     m_model = session.flightModelFor(*bird);
     const auto p = session.launchPoint();
-    m_launch = launchState(p[0], p[1], shot.speedMps, shot.angleDeg);
+    m_launch = launchState(p.x, p.y, shot.speedMps, shot.angleDeg);
     IntegratorSettings settings;
     settings.dtS = session.world().dt();
     m_tracker = std::make_unique<FlightEnergyTracker>(*m_model, settings, m_launch);
@@ -57,17 +57,17 @@ std::optional<BirdReadout> ShotFollower::at(const GameSession& session, double t
     const FlightState f = full.rightHandSide(tS, r.state);
     const double m = m_model->massKg;
     const double g = m_model->gravity;
-    r.accelerationMps2 = {f[2], f[3]};
+    r.accelerationMps2 = {f.velocity.x, f.velocity.y};
     r.gravityN = {0.0, -m * g};
-    r.dragN = {m * f[2], m * (f[3] + g)};
-    std::array<double, 2> wind{m_model->windX, m_model->windY};
+    r.dragN = {m * f.velocity.x, m * (f.velocity.y + g)};
+    Vec2 wind{m_model->windX, m_model->windY};
     if (m_model->gusts)
     {
-        const std::array<double, 2> gust = m_model->gusts->windAt(tS);
-        wind = {wind[0] + gust[0], wind[1] + gust[1]};
+        const Vec2 gust = m_model->gusts->windAt(tS);
+        wind = {wind.x + gust.x, wind.y + gust.y};
     }
-    r.airVelocityMps = {r.state[2] - wind[0], r.state[3] - wind[1]};
-    r.windy = wind[0] != 0.0 || wind[1] != 0.0;
+    r.airVelocityMps = {r.state.velocity.x - wind.x, r.state.velocity.y - wind.y};
+    r.windy = wind.x != 0.0 || wind.y != 0.0;
     return r;
 }
 

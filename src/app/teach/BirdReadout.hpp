@@ -15,13 +15,13 @@ struct BirdReadout
     double tS = 0.0;     ///< since launch
     FlightState state{}; ///< on the RK4 path the world flies the bird along
     double massKg = 0.0;
-    std::array<double, 2> accelerationMps2{};
-    std::array<double, 2> gravityN{};
+    Vec2 accelerationMps2{};
+    Vec2 gravityN{};
     /// The air's whole force: drag on the velocity relative to the air, v - w. Wind has no force of its own; it
     /// acts only by moving the air the drag is measured against.
-    std::array<double, 2> dragN{};
-    std::array<double, 2> airVelocityMps{}; ///< v - w: the bird's velocity relative to the air
-    bool windy = false;                     ///< the air moves (w is not zero at this moment)
+    Vec2 dragN{};
+    Vec2 airVelocityMps{}; ///< v - w: the bird's velocity relative to the air
+    bool windy = false;    ///< the air moves (w is not zero at this moment)
     FlightEnergy energy;
 };
 

@@ -36,7 +36,7 @@ double integrationMicros(const FlightModel& model, const IntegratorSettings& set
         integrator.reset(0.0, s0);
         for (std::size_t i = 0; i < steps; ++i)
             integrator.step();
-        sink = sink + integrator.state()[0];
+        sink = sink + integrator.state().position.x;
     };
     return 1e6 * medianSeconds(run, 7, 4);
 }
@@ -83,7 +83,7 @@ void ComparisonView::update(const GameSession& session, const PredictedFlight* p
     // The play screen replaces its preview whenever the aim changes; its end point tells a new one from the old.
     const PathPoint& end = preview->path.back();
     const bool same = m_lastPreview == preview && m_lastPreviewSteps == preview->path.size() && m_lastPreviewEnd &&
-                      m_lastPreviewEnd->t == end.t && m_lastPreviewEnd->s == end.s;
+                      m_lastPreviewEnd->timeS == end.timeS && m_lastPreviewEnd->state == end.state;
     if (same && !m_dirty)
         return;
     m_dirty = false;
@@ -93,7 +93,7 @@ void ComparisonView::update(const GameSession& session, const PredictedFlight* p
 
     const BirdType& bird = *session.currentBird();
     const FlightModel model = session.flightModelFor(bird);
-    const FlightState s0 = preview->path.front().s;
+    const FlightState s0 = preview->path.front().state;
     PredictionLimits limits;
     limits.maxTimeS = 15.0; // as GameSession::preview
     const GameWorld& world = session.world();
@@ -105,7 +105,7 @@ void ComparisonView::update(const GameSession& session, const PredictedFlight* p
     try
     {
         m_result = compareIntegrator(model, s0, method(), kPhysicsDtS, *preview, limits);
-        const double duration = std::max(end.t, kPhysicsDtS);
+        const double duration = std::max(end.timeS, kPhysicsDtS);
         m_costUs = integrationMicros(model, method().settings(kPhysicsDtS), s0, duration);
         IntegratorSettings real;
         real.dtS = kPhysicsDtS;
@@ -125,7 +125,8 @@ void ComparisonView::drawWorld(sf::RenderTarget& target, const Camera& camera, f
     Mesh mesh;
     std::vector<sf::Vector2f> line;
     for (const PathPoint& p : m_result->flight.path)
-        line.push_back(camera.toScreen({static_cast<float>(p.s[0]), static_cast<float>(p.s[1])}));
+        line.push_back(
+            camera.toScreen({static_cast<float>(p.state.position.x), static_cast<float>(p.state.position.y)}));
     mesh.addPolyline(line, 2.5f * scale, faded(teach::kComparison, 0.85f));
     for (const sf::Vector2f& p : line)
         mesh.addCircle(p, 2.6f * scale, teach::kComparison, 10);

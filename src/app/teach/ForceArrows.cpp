@@ -20,14 +20,14 @@ constexpr float kGravityArrowPx = 70.0f;
 /// Velocity arrows: pixels per m/s at scale 1.
 constexpr float kVelocityPxPerMps = 3.0f;
 
-sf::Vector2f screenDirection(const std::array<double, 2>& v)
+sf::Vector2f screenDirection(const Vec2& v)
 {
-    return {static_cast<float>(v[0]), -static_cast<float>(v[1])}; // y up in the world, down on the screen
+    return {static_cast<float>(v.x), -static_cast<float>(v.y)}; // y up in the world, down on the screen
 }
 
-double length(const std::array<double, 2>& v)
+double length(const Vec2& v)
 {
-    return std::hypot(v[0], v[1]);
+    return std::hypot(v.x, v.y);
 }
 
 /// "2.1e-07": how small the balance's residual is.
@@ -43,7 +43,8 @@ std::string scientific(double value)
 void drawForceArrows(sf::RenderTarget& target, const sf::Font& font, const Camera& camera, const BirdReadout& bird,
                      bool components, unsigned labelSize, float scale)
 {
-    const sf::Vector2f centre = camera.toScreen({static_cast<float>(bird.state[0]), static_cast<float>(bird.state[1])});
+    const sf::Vector2f centre =
+        camera.toScreen({static_cast<float>(bird.state.position.x), static_cast<float>(bird.state.position.y)});
     // Forces in newtons, scaled so that the bird's weight is kGravityArrowPx long (in vacuum at 9.81 if g is 0).
     const double weight = std::max(length(bird.gravityN), bird.massKg * 9.81);
     const float pxPerN = kGravityArrowPx * scale / static_cast<float>(weight);
@@ -56,17 +57,17 @@ void drawForceArrows(sf::RenderTarget& target, const sf::Font& font, const Camer
         sf::Color colour;
         std::string name;
     };
-    const std::array<double, 2> v{bird.state[2], bird.state[3]};
+    const Vec2 v{bird.state.velocity.x, bird.state.velocity.y};
     // The net force, on the forces' scale: the thin arrow is the sum of the thick ones (and m a, which is why the
     // bird's path bends that way; the acceleration itself is a motion, not one more force, and is not drawn here).
-    const std::array<double, 2> net{bird.gravityN[0] + bird.dragN[0], bird.gravityN[1] + bird.dragN[1]};
+    const Vec2 net{bird.gravityN.x + bird.dragN.x, bird.gravityN.y + bird.dragN.y};
     // Velocity first, so that a force pointing along it (a tailwind's push) is drawn over it.
     std::vector<Arrow> arrows{{centre + pxPerMps * screenDirection(v), width, teach::kVelocity, "v"}};
     if (components)
     {
         // vx and vy on the same scale as v: the parallelogram's sides.
-        arrows.push_back({centre + pxPerMps * screenDirection({v[0], 0.0}), 1.8f * scale, teach::kVelocity, "vx"});
-        arrows.push_back({centre + pxPerMps * screenDirection({0.0, v[1]}), 1.8f * scale, teach::kVelocity, "vy"});
+        arrows.push_back({centre + pxPerMps * screenDirection({v.x, 0.0}), 1.8f * scale, teach::kVelocity, "vx"});
+        arrows.push_back({centre + pxPerMps * screenDirection({0.0, v.y}), 1.8f * scale, teach::kVelocity, "vy"});
     }
     if (bird.windy)
         // Drag acts on this, not on v: it points exactly against it.
@@ -98,8 +99,8 @@ sf::FloatRect drawForceLegend(sf::RenderTarget& target, const sf::Font& font, sf
 {
     // Forces first, under their own heading, then the motion they cause: velocity and acceleration are not forces.
     std::vector<PanelRow> rows;
-    rows.push_back({"t " + withUnit(bird.tS, 2, "s") + "   x " + withUnit(bird.state[0], 1, "m") + "   y " +
-                        withUnit(bird.state[1], 1, "m"),
+    rows.push_back({"t " + withUnit(bird.tS, 2, "s") + "   x " + withUnit(bird.state.position.x, 1, "m") + "   y " +
+                        withUnit(bird.state.position.y, 1, "m"),
                     "", sf::Color::Transparent, false});
     rows.push_back({"forces", "", sf::Color::Transparent, true});
     rows.push_back({"  gravity m g", withUnit(length(bird.gravityN), 1, "N"), teach::kGravity});
@@ -108,16 +109,18 @@ sf::FloatRect drawForceLegend(sf::RenderTarget& target, const sf::Font& font, sf
                         withUnit(length(bird.dragN), 1, "N"), teach::kDrag});
     else
         rows.push_back({"  no air: gravity is the only force", "", sf::Color::Transparent, false});
-    const std::array<double, 2> net{bird.gravityN[0] + bird.dragN[0], bird.gravityN[1] + bird.dragN[1]};
+    const Vec2 net{bird.gravityN.x + bird.dragN.x, bird.gravityN.y + bird.dragN.y};
     rows.push_back({"  net force \u03A3F", withUnit(length(net), 1, "N"), teach::kAcceleration});
     rows.push_back({"motion", "", sf::Color::Transparent, true});
-    rows.push_back({"  velocity v", withUnit(std::hypot(bird.state[2], bird.state[3]), 1, "m/s"), teach::kVelocity});
+    rows.push_back({"  velocity v", withUnit(std::hypot(bird.state.velocity.x, bird.state.velocity.y), 1, "m/s"),
+                    teach::kVelocity});
     if (components)
-        rows.push_back({"    vx, vy", withUnit(bird.state[2], 1, "m/s") + ", " + withUnit(bird.state[3], 1, "m/s"),
+        rows.push_back({"    vx, vy",
+                        withUnit(bird.state.velocity.x, 1, "m/s") + ", " + withUnit(bird.state.velocity.y, 1, "m/s"),
                         teach::kVelocity});
     if (hasWind && bird.windy)
         rows.push_back({"  velocity in the air v \u2212 w",
-                        withUnit(std::hypot(bird.airVelocityMps[0], bird.airVelocityMps[1]), 1, "m/s"), teach::kWind});
+                        withUnit(std::hypot(bird.airVelocityMps.x, bird.airVelocityMps.y), 1, "m/s"), teach::kWind});
     rows.push_back({"  acceleration a = \u03A3F / m", withUnit(length(bird.accelerationMps2), 2, "m/s\u00B2"),
                     sf::Color::Transparent});
     const TextPanel panel("Forces on the bird (" + formatFixed(bird.massKg, 1) + " kg)", std::move(rows));
@@ -127,7 +130,7 @@ sf::FloatRect drawForceLegend(sf::RenderTarget& target, const sf::Font& font, sf
         std::string summary = "Forces: m g " + withUnit(length(bird.gravityN), 1, "N");
         if (hasDrag)
             summary += ", drag " + withUnit(length(bird.dragN), 1, "N");
-        summary += "; v " + withUnit(std::hypot(bird.state[2], bird.state[3]), 1, "m/s") + ", a " +
+        summary += "; v " + withUnit(std::hypot(bird.state.velocity.x, bird.state.velocity.y), 1, "m/s") + ", a " +
                    withUnit(length(bird.accelerationMps2), 2, "m/s\u00B2");
         return drawPanelSummary(target, font, topRight, true, summary, rowSize, scale, "forces");
     }

@@ -36,7 +36,7 @@ std::string kinetic(double massKg, double inertia, const BodyVelocity& v)
 }
 
 /// A momentum or impulse as its components, "(+31.7, −51.1)": the balance only closes with directions.
-std::string components(const std::array<double, 2>& v)
+std::string components(const Vec2& v)
 {
     const auto part = [](double x)
     {
@@ -46,16 +46,16 @@ std::string components(const std::array<double, 2>& v)
         return text;
     };
     std::string text = "(";
-    text += part(v[0]);
+    text += part(v.x);
     text += ", ";
-    text += part(v[1]);
+    text += part(v.y);
     text += ")";
     return text;
 }
 
-bool shows(const std::array<double, 2>& v)
+bool shows(const Vec2& v)
 {
-    return std::hypot(v[0], v[1]) >= 0.05;
+    return std::hypot(v.x, v.y) >= 0.05;
 }
 
 /// The momentum balance of the impact's step: each change and every push from outside the pair, in components, and
@@ -67,8 +67,8 @@ void addBalanceRows(std::vector<PanelRow>& rows, const FirstImpact& impact, cons
     rows.push_back({"  the bird pushed the " + body + " with", components(b.pushOnBody)});
     // A body that breaks holds only its remaining strength: the rest of the push went back to the bird.
     const auto bird = impact.birdChange();
-    const std::array<double, 2> givenBack{bird[0] + b.pushOnBody[0] - b.birdOtherContacts[0],
-                                          bird[1] + b.pushOnBody[1] - b.birdOtherContacts[1]};
+    const Vec2 givenBack{bird.x + b.pushOnBody.x - b.birdOtherContacts.x,
+                         bird.y + b.pushOnBody.y - b.birdOtherContacts.y};
     if (impact.broke && shows(givenBack))
         rows.push_back({"  it broke: given back to the bird", components(givenBack)});
     rows.push_back({"  change of the bird", components(bird)});

@@ -110,7 +110,8 @@ std::optional<PathHistory::Pick> PathHistory::pick(sf::Vector2f pixel, const Pla
             consider(path.name, s);
     if (const PredictedFlight* preview = view.preview(); preview != nullptr)
         for (const PathPoint& p : preview->path)
-            consider("preview", {p.t, p.s[0], p.s[1], p.s[2], p.s[3]});
+            consider("preview",
+                     {p.timeS, p.state.position.x, p.state.position.y, p.state.velocity.x, p.state.velocity.y});
     return best;
 }
 
@@ -214,7 +215,7 @@ bool PathHistory::handleEvent(const sf::Event& event, const PlayView& view)
     {
         const sf::Vector2f pixel(static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y));
         const auto launch = session.launchPoint();
-        const sf::Vector2f sling = camera.toScreen({static_cast<float>(launch[0]), static_cast<float>(launch[1])});
+        const sf::Vector2f sling = camera.toScreen({static_cast<float>(launch.x), static_cast<float>(launch.y)});
         if (distance(pixel, sling) < 40.0f)
             return false;
         if (const std::optional<Pick> hit = pick(pixel, view, kPickRadiusPx))

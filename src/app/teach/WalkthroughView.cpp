@@ -26,7 +26,7 @@ const sf::Color kAverage(255, 230, 80);
 
 sf::Vector2f position(const FlightState& s)
 {
-    return {static_cast<float>(s[0]), static_cast<float>(s[1])};
+    return {static_cast<float>(s.position.x), static_cast<float>(s.position.y)};
 }
 
 std::string pair(double a, double b, int decimals)
@@ -110,7 +110,7 @@ void WalkthroughView::start(PlayView& view, ShotFollower& follower)
         // At launch: from the slingshot with the current aim.
         m_model = session.flightModelFor(*session.currentBird());
         m_tS = 0.0;
-        m_state = preview->path.front().s;
+        m_state = preview->path.front().state;
         m_followsWorld = false;
     }
     else
@@ -177,7 +177,8 @@ void WalkthroughView::drawWorld(sf::RenderTarget& target, const Camera& camera, 
         const Rk4Stage& stage = m_walk->stages[i];
         const sf::Vector2f from = camera.toScreen(position(stage.at));
         const sf::Vector2f to =
-            camera.toScreen(position({stage.at[0] + dt * stage.slope[0], stage.at[1] + dt * stage.slope[1], 0.0, 0.0}));
+            camera.toScreen(position({stage.at.position.x + dt * stage.slope.position.x,
+                                      stage.at.position.y + dt * stage.slope.position.y, 0.0, 0.0}));
         addArrow(mesh, from, to, 2.0f * scale, kStageColours[i]);
         mesh.addCircle(from, 3.0f * scale, kStageColours[i], 10);
     }
@@ -199,20 +200,21 @@ void WalkthroughView::drawPanel(sf::RenderTarget& target, const sf::Font& font, 
                                          "k3 = f(t + dt/2, s + dt/2 k2)", "k4 = f(t + dt, s + dt k3)"};
     for (std::size_t i = 0; i < 4; ++i)
         rows.push_back({kNames[i],
-                        pair(w.stages[i].slope[0], w.stages[i].slope[1], 3) + "   " +
-                            pair(w.stages[i].slope[2], w.stages[i].slope[3], 3),
+                        pair(w.stages[i].slope.position.x, w.stages[i].slope.position.y, 3) + "   " +
+                            pair(w.stages[i].slope.velocity.x, w.stages[i].slope.velocity.y, 3),
                         kStageColours[i]});
-    rows.push_back(
-        {"average (k1 + 2 k2 + 2 k3 + k4) / 6",
-         pair(w.averageSlope[0], w.averageSlope[1], 3) + "   " + pair(w.averageSlope[2], w.averageSlope[3], 3),
-         kAverage});
-    rows.push_back(
-        {"state s (x, y) m   (vx, vy) m/s", pair(w.state[0], w.state[1], 3) + "   " + pair(w.state[2], w.state[3], 3)});
-    rows.push_back(
-        {"next = s + dt \u00D7 average", pair(w.next[0], w.next[1], 3) + "   " + pair(w.next[2], w.next[3], 3)});
+    rows.push_back({"average (k1 + 2 k2 + 2 k3 + k4) / 6",
+                    pair(w.averageSlope.position.x, w.averageSlope.position.y, 3) + "   " +
+                        pair(w.averageSlope.velocity.x, w.averageSlope.velocity.y, 3),
+                    kAverage});
+    rows.push_back({"state s (x, y) m   (vx, vy) m/s", pair(w.state.position.x, w.state.position.y, 3) + "   " +
+                                                           pair(w.state.velocity.x, w.state.velocity.y, 3)});
+    rows.push_back({"next = s + dt \u00D7 average", pair(w.next.position.x, w.next.position.y, 3) + "   " +
+                                                        pair(w.next.velocity.x, w.next.velocity.y, 3)});
     if (w.exact)
     {
-        const double error = std::hypot(w.next[0] - (*w.exact)[0], w.next[1] - (*w.exact)[1]);
+        const double error =
+            std::hypot(w.next.position.x - (*w.exact).position.x, w.next.position.y - (*w.exact).position.y);
         rows.push_back({"exact (closed form): position off by", formatDistance(error)});
     }
     else
@@ -239,7 +241,8 @@ void WalkthroughView::drawPanel(sf::RenderTarget& target, const sf::Font& font, 
     for (const Rk4Stage& stage : w.stages)
     {
         points.push_back(position(stage.at));
-        points.push_back(position({stage.at[0] + dt * stage.slope[0], stage.at[1] + dt * stage.slope[1], 0, 0}));
+        points.push_back(position({stage.at.position.x + dt * stage.slope.position.x,
+                                   stage.at.position.y + dt * stage.slope.position.y, 0, 0}));
     }
     points.push_back(position(w.next));
     const std::vector<FlightState> truth = finePath(m_model, w.t0S, w.state, dt);

@@ -43,15 +43,16 @@ struct FlightSample
 
 std::vector<FlightSample> freeFlight(const ShotRecord& shot)
 {
-    const std::vector<std::array<double, 3>>& path = shot.actualPath;
-    const double endS = shot.actualContact ? shot.actualContact->t : (path.empty() ? 0.0 : path.back()[0]);
+    const std::vector<TrackPoint>& path = shot.actualPath;
+    const double endS = shot.actualContact ? shot.actualContact->t : (path.empty() ? 0.0 : path.back().timeS);
     std::vector<FlightSample> samples;
-    for (std::size_t i = 1; i < path.size() && path[i][0] <= endS; ++i)
+    for (std::size_t i = 1; i < path.size() && path[i].timeS <= endS; ++i)
     {
-        const double dt = path[i][0] - path[i - 1][0];
+        const double dt = path[i].timeS - path[i - 1].timeS;
         if (dt > 0.0)
-            samples.push_back({path[i][0], path[i][1], path[i][2], (path[i][1] - path[i - 1][1]) / dt,
-                               (path[i][2] - path[i - 1][2]) / dt});
+            samples.push_back({path[i].timeS, path[i].position.x, path[i].position.y,
+                               (path[i].position.x - path[i - 1].position.x) / dt,
+                               (path[i].position.y - path[i - 1].position.y) / dt});
     }
     return samples;
 }

@@ -17,10 +17,6 @@ namespace abalike
 namespace
 {
 
-/// Heights and edges closer than this are the same: the parts' coordinates carry float noise, and a last-bit difference
-/// must not decide a storey line or an occupied cell.
-constexpr double kTouch = 1e-6;
-
 /// Fewer bodies than this and a layout gets neighbours (the campaign asks 15 of its levels; parts come in threes).
 constexpr int kMinBodies = 12;
 
@@ -49,17 +45,17 @@ std::vector<double> storeyLines(const LevelDef& part, const Catalog& catalog)
     for (const BlockDef& b : part.blocks)
     {
         blocks.push_back(objectBounds(ObjectDef(b), catalog));
-        top = std::max(top, blocks.back()[1][1]);
+        top = std::max(top, blocks.back()[1].y);
     }
     std::set<double> lines;
     for (const auto& [lo, hi] : blocks)
     {
-        const double y = hi[1];
-        const bool floor = hi[0] - lo[0] >= hi[1] - lo[1] - kTouch;
+        const double y = hi.y;
+        const bool floor = hi.x - lo.x >= hi.y - lo.y - kSameEdgeM;
         const bool crossed =
             std::any_of(blocks.begin(), blocks.end(),
-                        [&](const std::array<Vec2, 2>& b) { return b[0][1] < y - kTouch && b[1][1] > y + kTouch; });
-        if (floor && !crossed && y >= top / 3.0 - kTouch && y < top - kTouch)
+                        [&](const std::array<Vec2, 2>& b) { return b[0].y < y - kSameEdgeM && b[1].y > y + kSameEdgeM; });
+        if (floor && !crossed && y >= top / 3.0 - kSameEdgeM && y < top - kSameEdgeM)
             lines.insert(y);
     }
     return {lines.begin(), lines.end()};
@@ -72,10 +68,10 @@ LevelDef cutAt(const LevelDef& part, double height, const Catalog& catalog)
     cut.blocks.clear();
     cut.pigs.clear();
     for (const BlockDef& b : part.blocks)
-        if (objectBounds(ObjectDef(b), catalog)[1][1] <= height + kTouch)
+        if (objectBounds(ObjectDef(b), catalog)[1].y <= height + kSameEdgeM)
             cut.blocks.push_back(b);
     for (const PigDef& p : part.pigs)
-        if (objectBounds(ObjectDef(p), catalog)[1][1] <= height + kTouch)
+        if (objectBounds(ObjectDef(p), catalog)[1].y <= height + kSameEdgeM)
             cut.pigs.push_back(p);
     return cut;
 }
@@ -413,16 +409,16 @@ std::set<std::pair<int, int>> occupancy(const LevelDef& level, const Catalog& ca
     const std::vector<std::array<Vec2, 2>> boxes = bodyBoxes(level, catalog);
     double origin = 1e9;
     for (const auto& [lo, hi] : boxes)
-        origin = std::min(origin, lo[0]);
+        origin = std::min(origin, lo.x);
     std::set<std::pair<int, int>> cells;
     for (const auto& [lo, hi] : boxes)
-        for (int c = static_cast<int>(std::floor((lo[0] - origin) / kCell));
-             (c + 0.5) * kCell + origin <= hi[0] + kTouch; ++c)
-            for (int r = static_cast<int>(std::floor(lo[1] / kCell)); (r + 0.5) * kCell <= hi[1] + kTouch; ++r)
+        for (int c = static_cast<int>(std::floor((lo.x - origin) / kCell)); (c + 0.5) * kCell + origin <= hi.x + kSameEdgeM;
+             ++c)
+            for (int r = static_cast<int>(std::floor(lo.y / kCell)); (r + 0.5) * kCell <= hi.y + kSameEdgeM; ++r)
             {
                 const double x = (c + 0.5) * kCell + origin;
                 const double y = (r + 0.5) * kCell;
-                if (x >= lo[0] - kTouch && x <= hi[0] + kTouch && y >= lo[1] - kTouch && y <= hi[1] + kTouch)
+                if (x >= lo.x - kSameEdgeM && x <= hi.x + kSameEdgeM && y >= lo.y - kSameEdgeM && y <= hi.y + kSameEdgeM)
                     cells.insert({c, r});
             }
     return cells;

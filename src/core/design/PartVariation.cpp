@@ -11,13 +11,11 @@ namespace abalike
 namespace
 {
 
-constexpr double kTouch = 1e-6;
-
 /// Whether a block's angle is a whole number of quarter turns, and whether that turn lays it on its side.
 bool quarterTurn(double angleDeg, bool& onSide)
 {
     const double turns = angleDeg / 90.0;
-    if (std::abs(turns - std::round(turns)) > kTouch)
+    if (std::abs(turns - std::round(turns)) > kSameEdgeM)
         return false;
     onSide = (static_cast<long>(std::round(turns)) % 2) != 0;
     return true;
@@ -29,7 +27,7 @@ bool canMirror(const LevelDef& part)
 {
     return std::none_of(part.blocks.begin(), part.blocks.end(),
                         [](const BlockDef& b)
-                        { return b.shape == BlockShape::Triangle && std::abs(b.widthM - b.heightM) > kTouch; });
+                        { return b.shape == BlockShape::Triangle && std::abs(b.widthM - b.heightM) > kSameEdgeM; });
 }
 
 bool allWood(const LevelDef& part)
@@ -60,9 +58,9 @@ bool fitsAs(const LevelDef& part, const PigDef& pig, const std::string& type, co
                         [&](const BlockDef& b)
                         {
                             const auto box = objectBounds(ObjectDef(b), catalog);
-                            const double dx = std::max({box[0][0] - pig.x, 0.0, pig.x - box[1][0]});
-                            const double dy = std::max({box[0][1] - y, 0.0, y - box[1][1]});
-                            return dx * dx + dy * dy < (r - kTouch) * (r - kTouch);
+                            const double dx = std::max({box[0].x - pig.x, 0.0, pig.x - box[1].x});
+                            const double dy = std::max({box[0].y - y, 0.0, y - box[1].y});
+                            return dx * dx + dy * dy < (r - kSameEdgeM) * (r - kSameEdgeM);
                         });
 }
 
@@ -83,14 +81,14 @@ PartSpan partSpan(const LevelDef& part, const Catalog& catalog)
     for (const BlockDef& b : part.blocks)
     {
         const auto box = objectBounds(ObjectDef(b), catalog);
-        s.left = std::min(s.left, box[0][0]);
-        s.right = std::max(s.right, box[1][0]);
+        s.left = std::min(s.left, box[0].x);
+        s.right = std::max(s.right, box[1].x);
     }
     for (const PigDef& p : part.pigs)
     {
         const auto box = objectBounds(ObjectDef(p), catalog);
-        s.left = std::min(s.left, box[0][0]);
-        s.right = std::max(s.right, box[1][0]);
+        s.left = std::min(s.left, box[0].x);
+        s.right = std::max(s.right, box[1].x);
     }
     return s;
 }
@@ -105,7 +103,7 @@ PartVariation drawPartVariation(const LevelDef& part, GeneratorRng& rng, const C
     const double width = partSpan(part, catalog).width();
     std::vector<double> stretches;
     for (const double s : kPartStretches)
-        if (s == 1.0 || width * s <= kMaxStretchedWidthM + kTouch)
+        if (s == 1.0 || width * s <= kMaxStretchedWidthM + kSameEdgeM)
             stretches.push_back(s);
     // Every draw is made whatever the part allows: the seed's next draws stay where they were.
     const double stretch = stretches[rng.index(stretches.size())];
@@ -146,7 +144,7 @@ LevelDef varyPart(const LevelDef& part, const PartVariation& variation, const Ca
         {
             double& across = onSide ? b.heightM : b.widthM;
             const double along = onSide ? b.widthM : b.heightM;
-            if (across >= along - kTouch)
+            if (across >= along - kSameEdgeM)
                 across = tidyMetres(across * s);
         }
         if (variation.ice && b.material == "wood")

@@ -39,9 +39,9 @@ double closestApproachTo(const PredictedFlight& flight, double x, double y)
     {
         const PathPoint& a = flight.path[i - 1];
         const PathPoint& b = flight.path[i];
-        const double ax = a.s[0], ay = a.s[1];
-        const double dx = b.s[0] - ax;
-        const double dy = b.s[1] - ay;
+        const double ax = a.state.position.x, ay = a.state.position.y;
+        const double dx = b.state.position.x - ax;
+        const double dy = b.state.position.y - ay;
         const double length2 = dx * dx + dy * dy;
         const double t = length2 > 0.0 ? std::clamp(((x - ax) * dx + (y - ay) * dy) / length2, 0.0, 1.0) : 0.0;
         best = std::min(best, std::hypot(ax + t * dx - x, ay + t * dy - y));

@@ -18,7 +18,7 @@ constexpr double kGrazeM = 1e-9;
 
 double cross(const Vec2& o, const Vec2& a, const Vec2& b)
 {
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
 /// Convex hull, counter-clockwise, without collinear points (Andrew's monotone chain).
@@ -103,13 +103,12 @@ ConvexShape objectShape(const ObjectDef& def, const Catalog& catalog)
 std::array<Vec2, 2> shapeBounds(const ConvexShape& shape)
 {
     Vec2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-    Vec2 hi{-lo[0], -lo[1]};
+    Vec2 hi{-lo.x, -lo.y};
     for (const Vec2& v : shape)
-        for (int a = 0; a < 2; ++a)
-        {
-            lo[a] = std::min(lo[a], v[a]);
-            hi[a] = std::max(hi[a], v[a]);
-        }
+    {
+        lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)};
+        hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
+    }
     return {lo, hi};
 }
 
@@ -135,7 +134,7 @@ std::optional<std::array<double, 2>> contactInterval(const ConvexShape& moving, 
     // and only objects near the moving one are tested, so the simple construction is fast enough.
     for (const Vec2& f : fixed)
         for (const Vec2& m : moving)
-            points.push_back({f[0] - m[0], f[1] - m[1]});
+            points.push_back({f.x - m.x, f.y - m.y});
     const ConvexShape difference = hull(std::move(points));
     if (difference.size() < 3)
         return std::nullopt;
@@ -147,12 +146,12 @@ std::optional<std::array<double, 2>> contactInterval(const ConvexShape& moving, 
     {
         const Vec2& a = difference[i];
         const Vec2& b = difference[(i + 1) % difference.size()];
-        const double ex = b[0] - a[0];
-        const double ey = b[1] - a[1];
+        const double ex = b.x - a.x;
+        const double ey = b.y - a.y;
         const double length = std::hypot(ex, ey);
         const Vec2 n{ey / length, -ex / length}; // outward normal of a counter-clockwise polygon
-        const double offset = n[0] * a[0] + n[1] * a[1];
-        const double along = n[0] * u[0] + n[1] * u[1];
+        const double offset = n.x * a.x + n.y * a.y;
+        const double along = n.x * u.x + n.y * u.y;
         // Inside this edge's half-plane: t along <= offset. The inner bounds use the half-plane shrunk by a graze.
         if (along == 0.0)
         {

@@ -14,10 +14,10 @@ void fitPolygonBounds(TerrainDef& terrain)
     double left = 1e300, right = -1e300, bottom = 1e300, top = -1e300;
     for (const auto& point : terrain.points)
     {
-        left = std::min(left, point[0]);
-        right = std::max(right, point[0]);
-        bottom = std::min(bottom, point[1]);
-        top = std::max(top, point[1]);
+        left = std::min(left, point.x);
+        right = std::max(right, point.x);
+        bottom = std::min(bottom, point.y);
+        top = std::max(top, point.y);
     }
     terrain.x = 0.5 * (left + right);
     terrain.y = 0.5 * (bottom + top);
@@ -26,14 +26,14 @@ void fitPolygonBounds(TerrainDef& terrain)
     terrain.angleDeg = 0.0;
 }
 
-bool polygonContains(const std::vector<std::array<double, 2>>& points, double x, double y)
+bool polygonContains(const std::vector<Vec2>& points, double x, double y)
 {
     bool inside = false;
     for (std::size_t i = 0, j = points.size() - 1; i < points.size(); j = i++)
     {
         const auto& a = points[i];
         const auto& b = points[j];
-        if ((a[1] > y) != (b[1] > y) && x < (b[0] - a[0]) * (y - a[1]) / (b[1] - a[1]) + a[0])
+        if ((a.y > y) != (b.y > y) && x < (b.x - a.x) * (y - a.y) / (b.y - a.y) + a.x)
             inside = !inside;
     }
     return inside;
@@ -46,8 +46,8 @@ void rotatePolygon(TerrainDef& terrain, double deltaDeg)
     const double s = std::sin(deltaDeg * std::numbers::pi / 180.0);
     for (auto& point : terrain.points)
     {
-        const double dx = point[0] - terrain.x;
-        const double dy = point[1] - terrain.y;
+        const double dx = point.x - terrain.x;
+        const double dy = point.y - terrain.y;
         point = {terrain.x + c * dx - s * dy, terrain.y + s * dx + c * dy};
     }
     fitPolygonBounds(terrain);
@@ -86,7 +86,7 @@ std::array<Vec2, 2> objectBounds(const ObjectDef& def, const Catalog& catalog)
     if (!shape.empty())
         return shapeBounds(shape);
     const auto c = centreOf(def);
-    return {Vec2{c[0], c[1]}, Vec2{c[0], c[1]}};
+    return {Vec2{c.x, c.y}, Vec2{c.x, c.y}};
 }
 
 } // namespace abalike

@@ -14,11 +14,15 @@ namespace abalike
 
 // Small helpers the editing model's files share.
 
+/// Heights and edges closer than this are the same: parts' coordinates carry float noise, and a last-bit difference
+/// must not decide a storey line, an occupied cell or a side.
+inline constexpr double kSameEdgeM = 1e-6;
+
 /// A terrain polygon's box (x, y, w, h) made its points' bounding box again after they changed.
 void fitPolygonBounds(TerrainDef& terrain);
 
 /// True when (x, y) lies inside a simple polygon, convex or not, either winding (even-odd rule).
-bool polygonContains(const std::vector<std::array<double, 2>>& points, double x, double y);
+bool polygonContains(const std::vector<Vec2>& points, double x, double y);
 
 /// Turns a terrain polygon's points about its bounding box's centre; its box follows (a polygon has no angle).
 void rotatePolygon(TerrainDef& terrain, double deltaDeg);

@@ -148,7 +148,7 @@ void SceneEditor::selectInRect(double x0, double y0, double x1, double y1, Selec
     for (const ObjectRef& ref : allObjects(m_level))
     {
         const auto [lo, hi] = objectBounds(objectDef(m_level, ref), m_catalog);
-        if (lo[0] >= left && hi[0] <= right && lo[1] >= bottom && hi[1] <= top)
+        if (lo.x >= left && hi.x <= right && lo.y >= bottom && hi.y <= top)
             inside.push_back(ref);
     }
     if (mode == SelectMode::Replace)
@@ -170,14 +170,14 @@ void SceneEditor::clearSelection()
     m_selection.clear();
 }
 
-std::vector<std::array<double, 2>> SceneEditor::outline(const ObjectRef& ref) const
+std::vector<Vec2> SceneEditor::outline(const ObjectRef& ref) const
 {
     if (!exists(m_level, ref))
         return {};
     return outlineOf(objectDef(m_level, ref));
 }
 
-std::vector<std::array<double, 2>> SceneEditor::outlineOf(const ObjectDef& def) const
+std::vector<Vec2> SceneEditor::outlineOf(const ObjectDef& def) const
 {
     if (const auto* s = std::get_if<SlingshotDef>(&def))
     {
@@ -282,7 +282,7 @@ void SceneEditor::moveSelection(double dx, double dy)
     {
         before.push_back(objectDef(m_level, ref));
         const auto c = centreOf(before.back());
-        after.push_back(withCentre(before.back(), clampCoordinate(c[0] + dx), clampCoordinate(c[1] + dy)));
+        after.push_back(withCentre(before.back(), clampCoordinate(c.x + dx), clampCoordinate(c.y + dy)));
     }
     push(makeChangeObjects(labelFor("Move", refs.size()), refs, std::move(before), std::move(after), "move"));
 }
@@ -311,16 +311,16 @@ void SceneEditor::dragTo(double dx, double dy)
         static_cast<std::size_t>(std::find(drag.refs.begin(), drag.refs.end(), drag.grabbed) - drag.refs.begin());
     // Snap the grabbed object; the rest of the selection keeps its place relative to it.
     const auto c = centreOf(drag.start[grabbed]);
-    const SnapResult at = snap(withCentre(drag.start[grabbed], c[0] + dx, c[1] + dy), drag.refs);
-    const double sx = at.x - c[0];
-    const double sy = at.y - c[1];
+    const SnapResult at = snap(withCentre(drag.start[grabbed], c.x + dx, c.y + dy), drag.refs);
+    const double sx = at.x - c.x;
+    const double sy = at.y - c.y;
     std::vector<ObjectDef> before;
     std::vector<ObjectDef> after;
     for (std::size_t i = 0; i < drag.refs.size(); ++i)
     {
         before.push_back(objectDef(m_level, drag.refs[i]));
         const auto p = centreOf(drag.start[i]);
-        after.push_back(withCentre(drag.start[i], clampCoordinate(p[0] + sx), clampCoordinate(p[1] + sy)));
+        after.push_back(withCentre(drag.start[i], clampCoordinate(p.x + sx), clampCoordinate(p.y + sy)));
     }
     if (before == after)
         return;
@@ -343,8 +343,8 @@ void SceneEditor::rotateSelection(double deltaDeg)
     for (const ObjectRef& ref : refs)
     {
         const auto c = centreOf(objectDef(m_level, ref));
-        px += c[0] / static_cast<double>(refs.size());
-        py += c[1] / static_cast<double>(refs.size());
+        px += c.x / static_cast<double>(refs.size());
+        py += c.y / static_cast<double>(refs.size());
     }
     const double c = std::cos(deltaDeg * kDegToRad);
     const double s = std::sin(deltaDeg * kDegToRad);
@@ -356,8 +356,8 @@ void SceneEditor::rotateSelection(double deltaDeg)
         const auto p = centreOf(before.back());
         ObjectDef turned = before.back();
         if (refs.size() > 1)
-            turned = withCentre(turned, clampCoordinate(px + c * (p[0] - px) - s * (p[1] - py)),
-                                clampCoordinate(py + s * (p[0] - px) + c * (p[1] - py)));
+            turned = withCentre(turned, clampCoordinate(px + c * (p.x - px) - s * (p.y - py)),
+                                clampCoordinate(py + s * (p.x - px) + c * (p.y - py)));
         if (auto* block = std::get_if<BlockDef>(&turned))
             block->angleDeg = normaliseAngle(block->angleDeg + deltaDeg);
         else if (auto* terrain = std::get_if<TerrainDef>(&turned); terrain != nullptr && terrain->isPolygon())
@@ -414,8 +414,8 @@ void SceneEditor::mirrorSelection()
     for (const ObjectRef& ref : refs)
     {
         const auto bounds = shapeBounds(objectShape(objectDef(m_level, ref), m_catalog));
-        left = std::min(left, bounds[0][0]);
-        right = std::max(right, bounds[1][0]);
+        left = std::min(left, bounds[0].x);
+        right = std::max(right, bounds[1].x);
     }
     const double axis = 0.5 * (left + right);
     std::vector<ObjectDef> before;
@@ -425,7 +425,7 @@ void SceneEditor::mirrorSelection()
         before.push_back(objectDef(m_level, ref));
         ObjectDef mirrored = before.back();
         const auto centre = centreOf(mirrored);
-        mirrored = withCentre(mirrored, clampCoordinate(cleanMetres(2.0 * axis - centre[0])), centre[1]);
+        mirrored = withCentre(mirrored, clampCoordinate(cleanMetres(2.0 * axis - centre.x)), centre.y);
         if (auto* block = std::get_if<BlockDef>(&mirrored))
         {
             if (block->shape == BlockShape::Triangle)
@@ -442,7 +442,7 @@ void SceneEditor::mirrorSelection()
         {
             if (terrain->isPolygon())
                 for (auto& point : terrain->points)
-                    point[0] = cleanMetres(2.0 * terrain->x - point[0]);
+                    point.x = cleanMetres(2.0 * terrain->x - point.x);
             else
                 terrain->angleDeg = normaliseAngle(-terrain->angleDeg);
         }
@@ -463,8 +463,8 @@ void SceneEditor::duplicateSelection()
             continue;
         copies.push_back(objectDef(m_level, ref));
         const auto [lo, hi] = objectBounds(copies.back(), catalog);
-        left = std::min(left, lo[0]);
-        right = std::max(right, hi[0]);
+        left = std::min(left, lo.x);
+        right = std::max(right, hi.x);
     }
     if (copies.empty())
         return;
@@ -475,7 +475,7 @@ void SceneEditor::duplicateSelection()
     for (ObjectDef& copy : copies)
     {
         const auto c = centreOf(copy);
-        copy = withCentre(copy, clampCoordinate(c[0] + dx), c[1]);
+        copy = withCentre(copy, clampCoordinate(c.x + dx), c.y);
     }
     m_history->seal();
     push(makeAddObjects(labelFor("Duplicate", copies.size()), m_level, std::move(copies)));

@@ -31,7 +31,7 @@ std::vector<ObjectRef> bodiesOf(const std::vector<ObjectRef>& selection)
 ObjectDef shifted(const ObjectDef& def, double dx, double dy)
 {
     const auto c = centreOf(def);
-    return withCentre(def, clampCoordinate(c[0] + dx), clampCoordinate(c[1] + dy));
+    return withCentre(def, clampCoordinate(c.x + dx), clampCoordinate(c.y + dy));
 }
 
 } // namespace
@@ -72,10 +72,10 @@ void SceneEditor::alignSelection(Align align)
     for (const ObjectRef& ref : refs)
     {
         bounds.push_back(objectBounds(objectDef(m_level, ref), catalog));
-        left = std::min(left, bounds.back()[0][0]);
-        bottom = std::min(bottom, bounds.back()[0][1]);
-        right = std::max(right, bounds.back()[1][0]);
-        top = std::max(top, bounds.back()[1][1]);
+        left = std::min(left, bounds.back()[0].x);
+        bottom = std::min(bottom, bounds.back()[0].y);
+        right = std::max(right, bounds.back()[1].x);
+        top = std::max(top, bounds.back()[1].y);
     }
     std::vector<ObjectDef> before;
     std::vector<ObjectDef> after;
@@ -87,22 +87,22 @@ void SceneEditor::alignSelection(Align align)
         switch (align)
         {
         case Align::Left:
-            dx = left - lo[0];
+            dx = left - lo.x;
             break;
         case Align::Right:
-            dx = right - hi[0];
+            dx = right - hi.x;
             break;
         case Align::CentreX:
-            dx = 0.5 * (left + right) - 0.5 * (lo[0] + hi[0]);
+            dx = 0.5 * (left + right) - 0.5 * (lo.x + hi.x);
             break;
         case Align::Bottom:
-            dy = bottom - lo[1];
+            dy = bottom - lo.y;
             break;
         case Align::Top:
-            dy = top - hi[1];
+            dy = top - hi.y;
             break;
         case Align::CentreY:
-            dy = 0.5 * (bottom + top) - 0.5 * (lo[1] + hi[1]);
+            dy = 0.5 * (bottom + top) - 0.5 * (lo.y + hi.y);
             break;
         }
         before.push_back(objectDef(m_level, refs[i]));
@@ -131,7 +131,7 @@ void SceneEditor::distributeSelection(bool horizontal)
     for (const ObjectRef& ref : refs)
     {
         const auto [lo, hi] = objectBounds(objectDef(m_level, ref), catalog);
-        items.push_back({ref, lo[axis], hi[axis]});
+        items.push_back({ref, coordinate(lo, axis), coordinate(hi, axis)});
     }
     std::stable_sort(items.begin(), items.end(),
                      [](const Item& a, const Item& b) { return a.lo + a.hi < b.lo + b.hi; });
@@ -178,8 +178,7 @@ std::string SceneEditor::copySelection() const
     return writeLevelJson(scene, "");
 }
 
-std::vector<ObjectDef> SceneEditor::placedBodies(const LevelDef& source,
-                                                 const std::optional<std::array<double, 2>>& at) const
+std::vector<ObjectDef> SceneEditor::placedBodies(const LevelDef& source, const std::optional<Vec2>& at) const
 {
     std::vector<ObjectDef> bodies;
     for (const TerrainDef& terrain : source.terrain)
@@ -195,12 +194,12 @@ std::vector<ObjectDef> SceneEditor::placedBodies(const LevelDef& source,
     for (const ObjectDef& def : bodies)
     {
         const auto [lo, hi] = objectBounds(def, catalog);
-        left = std::min(left, lo[0]);
-        right = std::max(right, hi[0]);
-        bottom = std::min(bottom, lo[1]);
+        left = std::min(left, lo.x);
+        right = std::max(right, hi.x);
+        bottom = std::min(bottom, lo.y);
     }
-    double dx = (*at)[0] - 0.5 * (left + right);
-    double dy = std::max((*at)[1], m_level.groundY) - bottom;
+    double dx = (*at).x - 0.5 * (left + right);
+    double dy = std::max((*at).y, m_level.groundY) - bottom;
     // On the grid: the group moves by whole grid steps, so bodies that were on it stay on it.
     if (m_snap.grid && m_snap.gridM > 0.0)
     {
@@ -219,11 +218,11 @@ std::vector<ObjectDef> SceneEditor::placedBodies(const LevelDef& source,
         double lift = -std::numeric_limits<double>::infinity();
         for (const ObjectDef& def : bodies)
         {
-            if (kindOf(def) == ObjectKind::Terrain || objectBounds(def, catalog)[0][1] > bottom + dy + 1e-6)
+            if (kindOf(def) == ObjectKind::Terrain || objectBounds(def, catalog)[0].y > bottom + dy + 1e-6)
                 continue;
             const SnapResult snapped = snapObject(m_level, catalog, def, {}, settle);
             if (snapped.onGround || snapped.restsOn)
-                lift = std::max(lift, snapped.y - centreOf(def)[1]);
+                lift = std::max(lift, snapped.y - centreOf(def).y);
         }
         if (std::isfinite(lift))
             for (ObjectDef& def : bodies)
@@ -232,8 +231,7 @@ std::vector<ObjectDef> SceneEditor::placedBodies(const LevelDef& source,
     return bodies;
 }
 
-std::string SceneEditor::insertBodies(const LevelDef& source, const std::optional<std::array<double, 2>>& at,
-                                      const std::string& label)
+std::string SceneEditor::insertBodies(const LevelDef& source, const std::optional<Vec2>& at, const std::string& label)
 {
     std::vector<ObjectDef> bodies = placedBodies(source, at);
     if (bodies.empty())
@@ -256,7 +254,7 @@ std::string SceneEditor::insertBodies(const LevelDef& source, const std::optiona
     return {};
 }
 
-std::string SceneEditor::paste(std::string_view text, const std::optional<std::array<double, 2>>& at)
+std::string SceneEditor::paste(std::string_view text, const std::optional<Vec2>& at)
 {
     if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
         return "the clipboard is empty";
@@ -294,7 +292,7 @@ std::string SceneEditor::insertVertex(std::size_t terrain, std::size_t vertex)
     TerrainDef def = m_level.terrain[terrain];
     const auto& a = def.points[vertex];
     const auto& b = def.points[(vertex + 1) % def.points.size()];
-    const std::array<double, 2> middle{clampCoordinate(0.5 * (a[0] + b[0])), clampCoordinate(0.5 * (a[1] + b[1]))};
+    const Vec2 middle{clampCoordinate(0.5 * (a.x + b.x)), clampCoordinate(0.5 * (a.y + b.y))};
     def.points.insert(def.points.begin() + static_cast<std::ptrdiff_t>(vertex + 1), middle);
     fitPolygonBounds(def);
     return changeObject({ObjectKind::Terrain, terrain}, def, "Add a corner");

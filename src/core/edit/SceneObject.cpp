@@ -115,9 +115,9 @@ void setObjectDef(LevelDef& level, const ObjectRef& ref, const ObjectDef& def)
     }
 }
 
-std::array<double, 2> centreOf(const ObjectDef& def)
+Vec2 centreOf(const ObjectDef& def)
 {
-    return std::visit([](const auto& d) { return std::array<double, 2>{d.x, d.y}; }, def);
+    return std::visit([](const auto& d) { return Vec2{d.x, d.y}; }, def);
 }
 
 ObjectDef withCentre(ObjectDef def, double x, double y)
@@ -126,8 +126,8 @@ ObjectDef withCentre(ObjectDef def, double x, double y)
     if (auto* terrain = std::get_if<TerrainDef>(&def); terrain != nullptr && terrain->isPolygon())
         for (auto& point : terrain->points)
         {
-            point[0] += x - terrain->x;
-            point[1] += y - terrain->y;
+            point.x += x - terrain->x;
+            point.y += y - terrain->y;
         }
     std::visit(
         [&](auto& d)

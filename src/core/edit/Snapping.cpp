@@ -47,8 +47,8 @@ ConvexShape shifted(const ConvexShape& shape, double dx, double dy)
     ConvexShape out = shape;
     for (Vec2& v : out)
     {
-        v[0] += dx;
-        v[1] += dy;
+        v.x += dx;
+        v.y += dy;
     }
     return out;
 }
@@ -61,13 +61,13 @@ std::optional<Contact> nearest(const ConvexShape& moving, const std::vector<std:
     std::optional<Contact> best;
     const auto [lo, hi] = shapeBounds(moving);
     if (groundY)
-        best = Contact{lo[1] - *groundY, std::nullopt};
+        best = Contact{lo.y - *groundY, std::nullopt};
     for (const auto& [ref, shape] : others)
     {
         // Only shapes beside the moving one across the direction can be met; a quick test before the exact one.
         const auto [olo, ohi] = shapeBounds(shape);
-        const int across = u[0] == 0.0 ? 0 : 1;
-        if (ohi[across] <= lo[across] || olo[across] >= hi[across])
+        const int across = u.x == 0.0 ? 0 : 1;
+        if (coordinate(ohi, across) <= coordinate(lo, across) || coordinate(olo, across) >= coordinate(hi, across))
             continue;
         const auto interval = contactInterval(moving, shape, u);
         if (!interval || (*interval)[1] <= 0.0)
@@ -113,8 +113,8 @@ SnapResult snapObject(const LevelDef& level, const Catalog& catalog, const Objec
     {
         // The lower-left corner on the grid: blocks whose sizes are grid multiples then line up edge to edge.
         const auto [lo, hi] = shapeBounds(shape);
-        dx = std::round(lo[0] / settings.gridM) * settings.gridM - lo[0];
-        dy = std::round(lo[1] / settings.gridM) * settings.gridM - lo[1];
+        dx = std::round(lo.x / settings.gridM) * settings.gridM - lo.x;
+        dy = std::round(lo.y / settings.gridM) * settings.gridM - lo.y;
     }
     if (settings.surfaces)
     {

@@ -18,9 +18,9 @@ std::optional<FlightState> closedFormState(const FlightModel& model, const Fligh
     FlightState s = s0;
     if ((terms & kLinearDragTerm) == 0)
     {
-        s[0] += s0[2] * t;
-        s[1] += s0[3] * t - 0.5 * g * t * t;
-        s[3] -= g * t;
+        s.position.x += s0.velocity.x * t;
+        s.position.y += s0.velocity.y * t - 0.5 * g * t * t;
+        s.velocity.y -= g * t;
         return s;
     }
     // Linear drag relaxes v towards the terminal velocity u = w - (g/k) y-hat with rate k = b/m;
@@ -32,10 +32,10 @@ std::optional<FlightState> closedFormState(const FlightModel& model, const Fligh
     const double uy = wy - g / k;
     const double oneMinusE = -std::expm1(-k * t);
     const double e = 1.0 - oneMinusE;
-    s[0] += ux * t + (s0[2] - ux) * oneMinusE / k;
-    s[1] += uy * t + (s0[3] - uy) * oneMinusE / k;
-    s[2] = ux + (s0[2] - ux) * e;
-    s[3] = uy + (s0[3] - uy) * e;
+    s.position.x += ux * t + (s0.velocity.x - ux) * oneMinusE / k;
+    s.position.y += uy * t + (s0.velocity.y - uy) * oneMinusE / k;
+    s.velocity.x = ux + (s0.velocity.x - ux) * e;
+    s.velocity.y = uy + (s0.velocity.y - uy) * e;
     return s;
 }
 

@@ -1,10 +1,10 @@
+#include "flight/FlightStateAlgebra.hpp"
 #include "flight/Rosenbrock4.hpp"
 
 #include <abalike/flight/ClosedForm.hpp>
 #include <abalike/flight/FlightIntegrator.hpp>
 #include <abalike/flight/FlightRhs.hpp>
 #include <algorithm>
-#include <boost/numeric/odeint.hpp>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -46,7 +46,7 @@ template <class Rhs>
 class TypedImpl final : public FlightIntegrator::Impl
 {
 public:
-    using Dopri = odeint::runge_kutta_dopri5<FlightState>;
+    using Dopri = FlightDopri5;
     using DenseDopri = odeint::dense_output_runge_kutta<odeint::controlled_runge_kutta<Dopri>>;
 
     TypedImpl(const FlightModel& m, const IntegratorSettings& s) : Impl(m, s), m_rhs(model)
@@ -173,10 +173,10 @@ private:
                 break;
             case StepperKind::SemiImplicitEuler:
                 // Box2D's scheme: velocity first, then position with the new velocity.
-                state[2] += hs * f[2];
-                state[3] += hs * f[3];
-                state[0] += hs * state[2];
-                state[1] += hs * state[3];
+                state.velocity.x += hs * f.velocity.x;
+                state.velocity.y += hs * f.velocity.y;
+                state.position.x += hs * state.velocity.x;
+                state.position.y += hs * state.velocity.y;
                 break;
             default:
                 m_rk4.do_step(system, state, f, t, hs);
@@ -205,7 +205,7 @@ private:
                 (void)t1;
             evaluate(x, dxdt, t);
         };
-        auto jacobian = [this](const FlightState& x, double t, std::array<double, 4>& dadv, std::array<double, 2>& dadt)
+        auto jacobian = [this](const FlightState& x, double t, std::array<double, 4>& dadv, Vec2& dadt)
         {
             m_rhs.accelerationJacobian(x, t, dadv, dadt);
         };
@@ -265,8 +265,8 @@ private:
     }
 
     Rhs m_rhs;
-    odeint::runge_kutta4<FlightState> m_rk4;
-    odeint::euler<FlightState> m_euler;
+    FlightRk4 m_rk4;
+    FlightEuler m_euler;
     std::optional<DenseDopri> m_dense;
     detail::Rosenbrock4 m_implicit;
     bool m_lastStepImplicit = false; ///< the previous output step ended in rosenbrock4: stiffness persists

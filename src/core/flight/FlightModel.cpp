@@ -7,7 +7,7 @@
 namespace abalike
 {
 
-std::array<double, 2> GustDef::windAt(double t) const
+Vec2 GustDef::windAt(double t) const
 {
     if (kind == Kind::Sine)
     {
@@ -25,7 +25,7 @@ std::array<double, 2> GustDef::windAt(double t) const
     return {current.windX, current.windY};
 }
 
-std::array<double, 2> GustDef::rateAt(double t) const
+Vec2 GustDef::rateAt(double t) const
 {
     if (kind != Kind::Sine)
         return {0.0, 0.0};

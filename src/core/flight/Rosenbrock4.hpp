@@ -76,6 +76,9 @@ public:
     }
 
 private:
+    /// The stages work on the state's four numbers in odeint's order (FlightState's iterator).
+    using Numbers = std::array<double, 4>;
+
     static constexpr int kMaxAttempts = 100000;
     static constexpr double kSafety = 0.9;
     static constexpr double kFacMax = 5.0;
@@ -110,7 +113,7 @@ private:
         {
         }
 
-        void solve(FlightState& g) const
+        void solve(Numbers& g) const
         {
             const double gvx = (m11 * g[2] - m01 * g[3]) / det;
             const double gvy = (m00 * g[3] - m10 * g[2]) / det;
@@ -118,65 +121,83 @@ private:
         }
     };
 
-    template <class Deriv, class Jacobian>
-    static void step(Deriv& deriv, Jacobian& jacobian, const FlightState& x, double t, double dt, FlightState& xOut,
-                     FlightState& xErr)
+    static Numbers numbersOf(const FlightState& s) { return {s.position.x, s.position.y, s.velocity.x, s.velocity.y}; }
+    static FlightState stateOf(const Numbers& n) { return {{n[0], n[1]}, {n[2], n[3]}}; }
+
+    template <class Deriv>
+    static Numbers slope(Deriv& deriv, const Numbers& x, double t)
     {
         FlightState dxdt{};
-        deriv(x, dxdt, t);
+        deriv(stateOf(x), dxdt, t);
+        return numbersOf(dxdt);
+    }
+
+    template <class Deriv, class Jacobian>
+    static void step(Deriv& deriv, Jacobian& jacobian, const FlightState& state, double t, double dt,
+                     FlightState& stateOut, FlightState& stateErr)
+    {
+        const Numbers x = numbersOf(state);
+        const Numbers dxdt = slope(deriv, x, t);
         std::array<double, 4> a{};
-        std::array<double, 2> dadt{};
-        jacobian(x, t, a, dadt);
-        const FlightState dfdt{0.0, 0.0, dadt[0], dadt[1]};
+        Vec2 dadt{};
+        jacobian(state, t, a, dadt);
+        const Numbers dfdt{0.0, 0.0, dadt.x, dadt.y};
         const StageSolver solver(1.0 / (kGamma * dt), a);
 
-        FlightState g1{}, g2{}, g3{}, g4{}, g5{}, tmp{}, f{};
+        Numbers g1{}, g2{}, g3{}, g4{}, g5{}, tmp{}, f{}, xErr{};
         for (std::size_t i = 0; i < 4; ++i)
             g1[i] = dxdt[i] + dt * kD1 * dfdt[i];
         solver.solve(g1);
 
         for (std::size_t i = 0; i < 4; ++i)
             tmp[i] = x[i] + kA21 * g1[i];
-        deriv(tmp, f, t + kC2 * dt);
+        f = slope(deriv, tmp, t + kC2 * dt);
         for (std::size_t i = 0; i < 4; ++i)
             g2[i] = f[i] + dt * kD2 * dfdt[i] + kC21 * g1[i] / dt;
         solver.solve(g2);
 
         for (std::size_t i = 0; i < 4; ++i)
             tmp[i] = x[i] + kA31 * g1[i] + kA32 * g2[i];
-        deriv(tmp, f, t + kC3 * dt);
+        f = slope(deriv, tmp, t + kC3 * dt);
         for (std::size_t i = 0; i < 4; ++i)
             g3[i] = f[i] + dt * kD3 * dfdt[i] + (kC31 * g1[i] + kC32 * g2[i]) / dt;
         solver.solve(g3);
 
         for (std::size_t i = 0; i < 4; ++i)
             tmp[i] = x[i] + kA41 * g1[i] + kA42 * g2[i] + kA43 * g3[i];
-        deriv(tmp, f, t + kC4 * dt);
+        f = slope(deriv, tmp, t + kC4 * dt);
         for (std::size_t i = 0; i < 4; ++i)
             g4[i] = f[i] + dt * kD4 * dfdt[i] + (kC41 * g1[i] + kC42 * g2[i] + kC43 * g3[i]) / dt;
         solver.solve(g4);
 
         for (std::size_t i = 0; i < 4; ++i)
             tmp[i] = x[i] + kA51 * g1[i] + kA52 * g2[i] + kA53 * g3[i] + kA54 * g4[i];
-        deriv(tmp, f, t + dt);
+        f = slope(deriv, tmp, t + dt);
         for (std::size_t i = 0; i < 4; ++i)
             g5[i] = f[i] + (kC51 * g1[i] + kC52 * g2[i] + kC53 * g3[i] + kC54 * g4[i]) / dt;
         solver.solve(g5);
 
         for (std::size_t i = 0; i < 4; ++i)
             tmp[i] += g5[i];
-        deriv(tmp, f, t + dt);
+        f = slope(deriv, tmp, t + dt);
         for (std::size_t i = 0; i < 4; ++i)
             xErr[i] = f[i] + (kC61 * g1[i] + kC62 * g2[i] + kC63 * g3[i] + kC64 * g4[i] + kC65 * g5[i]) / dt;
         solver.solve(xErr);
 
+        Numbers xOut{};
         for (std::size_t i = 0; i < 4; ++i)
             xOut[i] = tmp[i] + xErr[i];
+        stateOut = stateOf(xOut);
+        stateErr = stateOf(xErr);
     }
 
     /// Root-mean-square error relative to atol + rtol |x|, as odeint's controller measures it.
-    static double errorNorm(const FlightState& xOld, const FlightState& x, const FlightState& xErr, double tol)
+    static double errorNorm(const FlightState& stateOld, const FlightState& state, const FlightState& stateErr,
+                            double tol)
     {
+        const Numbers xOld = numbersOf(stateOld);
+        const Numbers x = numbersOf(state);
+        const Numbers xErr = numbersOf(stateErr);
         double sum = 0.0;
         for (std::size_t i = 0; i < 4; ++i)
         {

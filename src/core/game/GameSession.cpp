@@ -58,7 +58,7 @@ double GameSession::maxLaunchSpeed() const
     return bird == nullptr ? 0.0 : abalike::maxLaunchSpeed(m_level.slingshot, *bird, m_catalog);
 }
 
-std::array<double, 2> GameSession::launchPoint() const
+Vec2 GameSession::launchPoint() const
 {
     return {m_level.slingshot.x, m_level.slingshot.y};
 }
@@ -84,7 +84,7 @@ PredictedFlight GameSession::preview(double angleDeg, double speedMps) const
         return m_world->castCircle(radius, a, b);
     };
     const auto p = launchPoint();
-    return predictFlight(flightModelFor(*bird), settings, launchState(p[0], p[1], speedMps, angleDeg), limits);
+    return predictFlight(flightModelFor(*bird), settings, launchState(p.x, p.y, speedMps, angleDeg), limits);
 }
 
 void GameSession::launch(double angleDeg, double speedMps)
@@ -121,9 +121,9 @@ void GameSession::launch(double angleDeg, double speedMps)
     const PredictedFlight predicted = preview(angleDeg, speedMps);
     shot.predictedContact = predicted.contact;
     for (const PathPoint& point : predicted.path)
-        shot.predictedPath.push_back({point.t, point.s[0], point.s[1]});
+        shot.predictedPath.push_back({point.timeS, point.state.position.x, point.state.position.y});
     const auto p = launchPoint();
-    m_world->launchBird(*bird, flightModelFor(*bird), launchState(p[0], p[1], speedMps, angleDeg));
+    m_world->launchBird(*bird, flightModelFor(*bird), launchState(p.x, p.y, speedMps, angleDeg));
     shot.actualPath = m_world->birdPath();
     shot.actualTouches = m_world->birdPathTouches();
     m_shots.push_back(std::move(shot));
@@ -236,7 +236,7 @@ void GameSession::updateBird()
         IntegratorSettings settings;
         settings.dtS = m_settings.dtS;
         shot.energy = flightEnergyAt(flightModelFor(bird), settings,
-                                     launchState(p[0], p[1], shot.speedMps, shot.angleDeg), shot.actualContact->t);
+                                     launchState(p.x, p.y, shot.speedMps, shot.angleDeg), shot.actualContact->t);
     }
     // The prediction made at launch is only a claim about the flight that was launched: once an ability changed
     // that flight, the distance between the two contacts measures the ability, not the prediction.

@@ -76,14 +76,14 @@ void checkOverlaps(const std::vector<Body>& bodies, LevelReader& r)
     }
     std::sort(order.begin(), order.end(),
               [&](std::size_t a, std::size_t b)
-              { return box[a][0][0] < box[b][0][0] || (box[a][0][0] == box[b][0][0] && a < b); });
+              { return box[a][0].x < box[b][0].x || (box[a][0].x == box[b][0].x && a < b); });
     std::vector<std::pair<std::size_t, std::size_t>> pairs;
     for (std::size_t m = 0; m < order.size(); ++m)
-        for (std::size_t n = m + 1; n < order.size() && box[order[n]][0][0] <= box[order[m]][1][0]; ++n)
+        for (std::size_t n = m + 1; n < order.size() && box[order[n]][0].x <= box[order[m]][1].x; ++n)
         {
             const std::size_t a = std::min(order[m], order[n]);
             const std::size_t b = std::max(order[m], order[n]);
-            if (box[a][0][1] > box[b][1][1] || box[b][0][1] > box[a][1][1])
+            if (box[a][0].y > box[b][1].y || box[b][0].y > box[a][1].y)
                 continue;
             if ((bodies[a].isStatic && bodies[b].isStatic) || bodies[a].pointer == bodies[b].pointer)
                 continue;
@@ -109,9 +109,9 @@ void checkBounds(const LevelDef& level, const std::vector<Body>& bodies, LevelRe
     for (const Body& body : bodies)
     {
         const auto [lo, hi] = body.outline.bounds();
-        const double reach = std::max({-lo[0], hi[0], -lo[1], hi[1]});
+        const double reach = std::max({-lo.x, hi.x, -lo.y, hi.y});
         const bool beyond = reach > kWorldExtentM;
-        const bool below = !body.isStatic && lo[1] < level.groundY - kOverlapToleranceM;
+        const bool below = !body.isStatic && lo.y < level.groundY - kOverlapToleranceM;
         if ((beyond || below) && !reported.insert(body.pointer).second)
             continue;
         if (beyond)
@@ -119,7 +119,7 @@ void checkBounds(const LevelDef& level, const std::vector<Body>& bodies, LevelRe
                                       " of the origin, got " + metres(reach) + ")");
         else if (below)
             r.error(body.pointer, "reaches below the ground (expected its bottom at y >= " + metres(level.groundY) +
-                                      ", got " + metres(lo[1]) + ")");
+                                      ", got " + metres(lo.y) + ")");
     }
 }
 

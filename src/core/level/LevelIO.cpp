@@ -190,7 +190,7 @@ std::optional<TerrainDef> readTerrainPolygon(LevelReader& r, const json& t, cons
     }
     if (!ok)
         return std::nullopt;
-    double left = terrain.points[0][0], right = left, bottom = terrain.points[0][1], top = bottom;
+    double left = terrain.points[0].x, right = left, bottom = terrain.points[0].y, top = bottom;
     for (const auto& [x, y] : terrain.points)
     {
         left = std::min(left, x);
@@ -206,7 +206,7 @@ std::optional<TerrainDef> readTerrainPolygon(LevelReader& r, const json& t, cons
     {
         const auto& a = terrain.points.front();
         const auto& b = terrain.points[terrain.points.size() / 2];
-        onOneLine = onOneLine && std::abs((b[0] - a[0]) * (point[1] - a[1]) - (b[1] - a[1]) * (point[0] - a[0])) < 1e-9;
+        onOneLine = onOneLine && std::abs((b.x - a.x) * (point.y - a.y) - (b.y - a.y) * (point.x - a.x)) < 1e-9;
     }
     if (tiny && onOneLine)
     {

@@ -20,7 +20,7 @@ Outline polygon(double x, double y, double angleDeg, std::vector<Vec2> local)
     Outline out;
     out.centre = {x, y};
     for (const Vec2& v : local)
-        out.vertices.push_back({x + c * v[0] - s * v[1], y + s * v[0] + c * v[1]});
+        out.vertices.push_back({x + c * v.x - s * v.y, y + s * v.x + c * v.y});
     return out;
 }
 
@@ -36,14 +36,14 @@ std::array<double, 2> project(const Outline& o, const Vec2& axis)
 {
     if (o.isCircle())
     {
-        const double c = o.centre[0] * axis[0] + o.centre[1] * axis[1];
+        const double c = o.centre.x * axis.x + o.centre.y * axis.y;
         return {c - o.radius, c + o.radius};
     }
     double lo = std::numeric_limits<double>::infinity();
     double hi = -lo;
     for (const Vec2& v : o.vertices)
     {
-        const double d = v[0] * axis[0] + v[1] * axis[1];
+        const double d = v.x * axis.x + v.y * axis.y;
         lo = std::min(lo, d);
         hi = std::max(hi, d);
     }
@@ -56,8 +56,8 @@ void addEdgeNormals(const Outline& o, std::vector<Vec2>& axes)
     {
         const Vec2& p = o.vertices[i];
         const Vec2& q = o.vertices[(i + 1) % o.vertices.size()];
-        const double dx = q[0] - p[0];
-        const double dy = q[1] - p[1];
+        const double dx = q.x - p.x;
+        const double dy = q.y - p.y;
         const double length = std::hypot(dx, dy);
         if (length > 0.0)
             axes.push_back({dy / length, -dx / length});
@@ -71,8 +71,8 @@ void addCircleAxes(const Outline& circle, const Outline& other, std::vector<Vec2
     const std::vector<Vec2> targets = other.isCircle() ? std::vector<Vec2>{other.centre} : other.vertices;
     for (const Vec2& v : targets)
     {
-        const double dx = v[0] - circle.centre[0];
-        const double dy = v[1] - circle.centre[1];
+        const double dx = v.x - circle.centre.x;
+        const double dy = v.y - circle.centre.y;
         const double length = std::hypot(dx, dy);
         if (length > 0.0)
             axes.push_back({dx / length, dy / length});
@@ -84,7 +84,7 @@ void addCircleAxes(const Outline& circle, const Outline& other, std::vector<Vec2
 std::array<Vec2, 2> Outline::bounds() const
 {
     if (isCircle())
-        return {Vec2{centre[0] - radius, centre[1] - radius}, Vec2{centre[0] + radius, centre[1] + radius}};
+        return {Vec2{centre.x - radius, centre.y - radius}, Vec2{centre.x + radius, centre.y + radius}};
     const auto x = project(*this, {1.0, 0.0});
     const auto y = project(*this, {0.0, 1.0});
     return {Vec2{x[0], y[0]}, Vec2{x[1], y[1]}};
@@ -136,7 +136,7 @@ std::vector<Outline> terrainOutlines(const TerrainDef& t)
     if (!t.isPolygon())
         return {terrainOutline(t)};
     std::vector<Outline> pieces;
-    for (std::vector<Point2>& piece : convexPieces(t.points))
+    for (std::vector<Vec2>& piece : convexPieces(t.points))
     {
         Outline outline;
         outline.vertices = std::move(piece);

@@ -1,14 +1,13 @@
 #pragma once
 
 #include <abalike/level/LevelDef.hpp>
+#include <abalike/util/Vec2.hpp>
 
 #include <array>
 #include <vector>
 
 namespace abalike
 {
-
-using Vec2 = std::array<double, 2>;
 
 /// The designed outline of a body for geometric checks: a convex polygon (counter-clockwise), or a circle.
 struct Outline

@@ -8,19 +8,19 @@ namespace abalike
 namespace
 {
 
-double cross(const Point2& o, const Point2& a, const Point2& b)
+double cross(const Vec2& o, const Vec2& a, const Vec2& b)
 {
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
-bool onSegment(const Point2& p, const Point2& a, const Point2& b)
+bool onSegment(const Vec2& p, const Vec2& a, const Vec2& b)
 {
-    return std::min(a[0], b[0]) - 1e-12 <= p[0] && p[0] <= std::max(a[0], b[0]) + 1e-12 &&
-           std::min(a[1], b[1]) - 1e-12 <= p[1] && p[1] <= std::max(a[1], b[1]) + 1e-12;
+    return std::min(a.x, b.x) - 1e-12 <= p.x && p.x <= std::max(a.x, b.x) + 1e-12 &&
+           std::min(a.y, b.y) - 1e-12 <= p.y && p.y <= std::max(a.y, b.y) + 1e-12;
 }
 
 /// Whether segments ab and cd share any point.
-bool segmentsMeet(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
+bool segmentsMeet(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d)
 {
     const double d1 = cross(c, d, a);
     const double d2 = cross(c, d, b);
@@ -32,13 +32,13 @@ bool segmentsMeet(const Point2& a, const Point2& b, const Point2& c, const Point
            (d4 == 0 && onSegment(d, a, b));
 }
 
-bool insideTriangle(const Point2& p, const Point2& a, const Point2& b, const Point2& c)
+bool insideTriangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c)
 {
     // Counter-clockwise triangle; points on its edges count as inside (they would make the ear overlap).
     return cross(a, b, p) >= 0 && cross(b, c, p) >= 0 && cross(c, a, p) >= 0;
 }
 
-bool convex(const std::vector<Point2>& polygon)
+bool convex(const std::vector<Vec2>& polygon)
 {
     const std::size_t n = polygon.size();
     for (std::size_t i = 0; i < n; ++i)
@@ -49,18 +49,18 @@ bool convex(const std::vector<Point2>& polygon)
 
 /// The union of two counter-clockwise polygons that share the edge a[i] -> a[i+1] (b runs it the other way), or
 /// empty when they do not share an edge.
-std::vector<Point2> mergeAlongSharedEdge(const std::vector<Point2>& a, const std::vector<Point2>& b)
+std::vector<Vec2> mergeAlongSharedEdge(const std::vector<Vec2>& a, const std::vector<Vec2>& b)
 {
     for (std::size_t i = 0; i < a.size(); ++i)
     {
-        const Point2& p = a[i];
-        const Point2& q = a[(i + 1) % a.size()];
+        const Vec2& p = a[i];
+        const Vec2& q = a[(i + 1) % a.size()];
         for (std::size_t j = 0; j < b.size(); ++j)
         {
             if (b[j] != q || b[(j + 1) % b.size()] != p)
                 continue;
             // a from q round to p, then b from p round to q (without repeating p and q).
-            std::vector<Point2> merged;
+            std::vector<Vec2> merged;
             for (std::size_t k = 0; k < a.size(); ++k)
                 merged.push_back(a[(i + 1 + k) % a.size()]);
             for (std::size_t k = 2; k < b.size(); ++k)
@@ -73,36 +73,36 @@ std::vector<Point2> mergeAlongSharedEdge(const std::vector<Point2>& a, const std
 
 } // namespace
 
-double twiceSignedArea(const std::vector<Point2>& polygon)
+double twiceSignedArea(const std::vector<Vec2>& polygon)
 {
     double sum = 0.0;
     for (std::size_t i = 0; i < polygon.size(); ++i)
     {
-        const Point2& a = polygon[i];
-        const Point2& b = polygon[(i + 1) % polygon.size()];
-        sum += a[0] * b[1] - b[0] * a[1];
+        const Vec2& a = polygon[i];
+        const Vec2& b = polygon[(i + 1) % polygon.size()];
+        sum += a.x * b.y - b.x * a.y;
     }
     return sum;
 }
 
-std::optional<EdgeCrossing> firstCrossing(const std::vector<Point2>& polygon)
+std::optional<EdgeCrossing> firstCrossing(const std::vector<Vec2>& polygon)
 {
     const std::size_t n = polygon.size();
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = i + 1; j < n; ++j)
         {
-            const Point2& a = polygon[i];
-            const Point2& b = polygon[(i + 1) % n];
-            const Point2& c = polygon[j];
-            const Point2& d = polygon[(j + 1) % n];
+            const Vec2& a = polygon[i];
+            const Vec2& b = polygon[(i + 1) % n];
+            const Vec2& c = polygon[j];
+            const Vec2& d = polygon[(j + 1) % n];
             const bool adjacent = j == i + 1 || (i == 0 && j == n - 1);
             if (adjacent)
             {
                 // Neighbours share a corner; they are wrong only when one folds back along the other.
-                const Point2& shared = j == i + 1 ? b : a;
-                const Point2& p = j == i + 1 ? a : b;
-                const Point2& q = j == i + 1 ? d : c;
-                const double dot = (p[0] - shared[0]) * (q[0] - shared[0]) + (p[1] - shared[1]) * (q[1] - shared[1]);
+                const Vec2& shared = j == i + 1 ? b : a;
+                const Vec2& p = j == i + 1 ? a : b;
+                const Vec2& q = j == i + 1 ? d : c;
+                const double dot = (p.x - shared.x) * (q.x - shared.x) + (p.y - shared.y) * (q.y - shared.y);
                 if (std::abs(cross(shared, p, q)) < 1e-12 && dot > 0)
                     return EdgeCrossing{i, j};
                 continue;
@@ -113,7 +113,7 @@ std::optional<EdgeCrossing> firstCrossing(const std::vector<Point2>& polygon)
     return std::nullopt;
 }
 
-std::vector<std::vector<Point2>> convexPieces(std::vector<Point2> polygon, std::size_t maxVertices)
+std::vector<std::vector<Vec2>> convexPieces(std::vector<Vec2> polygon, std::size_t maxVertices)
 {
     if (twiceSignedArea(polygon) < 0)
         std::reverse(polygon.begin(), polygon.end());
@@ -121,30 +121,30 @@ std::vector<std::vector<Point2>> convexPieces(std::vector<Point2> polygon, std::
     for (std::size_t i = 0; i < polygon.size() && polygon.size() > 3;)
     {
         const std::size_t n = polygon.size();
-        const Point2& prev = polygon[(i + n - 1) % n];
-        const Point2& next = polygon[(i + 1) % n];
+        const Vec2& prev = polygon[(i + n - 1) % n];
+        const Vec2& next = polygon[(i + 1) % n];
         if (polygon[i] == next || std::abs(cross(prev, polygon[i], next)) < 1e-12)
             polygon.erase(polygon.begin() + static_cast<std::ptrdiff_t>(i));
         else
             ++i;
     }
-    std::vector<std::vector<Point2>> pieces;
+    std::vector<std::vector<Vec2>> pieces;
     if (polygon.size() <= maxVertices && convex(polygon))
     {
         pieces.push_back(polygon);
         return pieces;
     }
     // Ear clipping.
-    std::vector<Point2> rest = polygon;
+    std::vector<Vec2> rest = polygon;
     while (rest.size() > 3)
     {
         const std::size_t n = rest.size();
         bool clipped = false;
         for (std::size_t i = 0; i < n && !clipped; ++i)
         {
-            const Point2& a = rest[(i + n - 1) % n];
-            const Point2& b = rest[i];
-            const Point2& c = rest[(i + 1) % n];
+            const Vec2& a = rest[(i + n - 1) % n];
+            const Vec2& b = rest[i];
+            const Vec2& c = rest[(i + 1) % n];
             if (cross(a, b, c) <= 0)
                 continue; // a reflex corner is no ear
             bool empty = true;
@@ -168,7 +168,7 @@ std::vector<std::vector<Point2>> convexPieces(std::vector<Point2> polygon, std::
         for (std::size_t i = 0; i < pieces.size() && !merged; ++i)
             for (std::size_t j = i + 1; j < pieces.size() && !merged; ++j)
             {
-                std::vector<Point2> joined = mergeAlongSharedEdge(pieces[i], pieces[j]);
+                std::vector<Vec2> joined = mergeAlongSharedEdge(pieces[i], pieces[j]);
                 if (joined.empty() || joined.size() > maxVertices || !convex(joined))
                     continue;
                 pieces[i] = std::move(joined);

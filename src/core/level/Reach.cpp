@@ -28,10 +28,10 @@ ReachEnvelope reachEnvelope(const FlightModel& model, double x0, double y0, doub
         while (flight.time() < maxTimeS)
         {
             const FlightStep& step = flight.step();
-            const double ax = step.s0[0];
-            const double ay = step.s0[1];
-            const double bx = step.s1[0];
-            const double by = step.s1[1];
+            const double ax = step.s0.position.x;
+            const double ay = step.s0.position.y;
+            const double bx = step.s1.position.x;
+            const double by = step.s1.position.y;
             out.farthestX = std::max(out.farthestX, bx);
             for (std::size_t i = 0; i < xs.size(); ++i)
             {
@@ -42,7 +42,7 @@ ReachEnvelope reachEnvelope(const FlightModel& model, double x0, double y0, doub
                 if (!out.highestY[i] || y > *out.highestY[i])
                     out.highestY[i] = y;
             }
-            if (by < floorY && step.s1[3] < 0.0)
+            if (by < floorY && step.s1.velocity.y < 0.0)
                 break;
         }
     }

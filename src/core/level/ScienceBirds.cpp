@@ -434,7 +434,7 @@ void Importer::useOwnGround()
     {
         terrain.y = tidy(terrain.y - lift);
         for (auto& point : terrain.points)
-            point[1] = tidy(point[1] - lift);
+            point.y = tidy(point.y - lift);
     }
     // The slingshot comes down with the scene, its pouch kept at least a metre above the ground.
     m_level.slingshot.y = std::max(1.0, tidy(m_level.slingshot.y - lift));

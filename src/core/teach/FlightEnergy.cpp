@@ -1,6 +1,7 @@
+#include "flight/FlightStateAlgebra.hpp"
+
 #include <abalike/teach/FlightEnergy.hpp>
 #include <algorithm>
-#include <boost/numeric/odeint.hpp>
 #include <cmath>
 #include <stdexcept>
 
@@ -65,7 +66,7 @@ void FlightEnergyTracker::advance()
             {
                 dxdt = m_integrator.rightHandSide(tt < stop ? tt : std::nextafter(stop, -INFINITY), x);
             };
-            boost::numeric::odeint::runge_kutta4<FlightState>().do_step(system, s, piece.f0, t, stop - t);
+            FlightRk4().do_step(system, s, piece.f0, t, stop - t);
         }
         piece.t1 = stop;
         piece.s1 = s;
@@ -99,7 +100,7 @@ double FlightEnergyTracker::dragWork(double t0, double t1) const
             // Inside the piece, never at the far end where a gust may already have changed.
             const FlightState f = m_integrator.rightHandSide(std::min(t, std::nextafter(piece.t1, -INFINITY)), s);
             // Drag is what is left of the acceleration once gravity is taken out.
-            return model.massKg * (f[2] * s[2] + (f[3] + model.gravity) * s[3]);
+            return model.massKg * (f.velocity.x * s.velocity.x + (f.velocity.y + model.gravity) * s.velocity.y);
         };
         const double half = 0.5 * (b - a);
         const double mid = 0.5 * (b + a);
@@ -132,11 +133,11 @@ FlightEnergy FlightEnergyTracker::at(double tS)
     energy.dragLossJ = m_lossBeforeStepJ + dragWork(m_pieces.front().t0, tS);
     const auto kinetic = [&](const FlightState& s)
     {
-        return 0.5 * model.massKg * (s[2] * s[2] + s[3] * s[3]);
+        return 0.5 * model.massKg * (s.velocity.x * s.velocity.x + s.velocity.y * s.velocity.y);
     };
     const auto potential = [&](const FlightState& s)
     {
-        return model.massKg * model.gravity * s[1];
+        return model.massKg * model.gravity * s.position.y;
     };
     energy.kineticJ = kinetic(energy.state);
     energy.potentialJ = potential(energy.state);

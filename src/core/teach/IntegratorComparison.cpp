@@ -43,21 +43,21 @@ FlightState pathStateAt(const FlightIntegrator& rhs, const PredictedFlight& flig
     const std::vector<PathPoint>& path = flight.path;
     if (path.empty())
         return {};
-    if (tS <= path.front().t)
-        return path.front().s;
-    if (tS >= path.back().t)
-        return path.back().s;
+    if (tS <= path.front().timeS)
+        return path.front().state;
+    if (tS >= path.back().timeS)
+        return path.back().state;
     const auto after =
-        std::upper_bound(path.begin(), path.end(), tS, [](double t, const PathPoint& p) { return t < p.t; });
+        std::upper_bound(path.begin(), path.end(), tS, [](double t, const PathPoint& p) { return t < p.timeS; });
     const PathPoint& a = *(after - 1);
     const PathPoint& b = *after;
     FlightStep step;
-    step.t0 = a.t;
-    step.t1 = b.t;
-    step.s0 = a.s;
-    step.s1 = b.s;
-    step.f0 = rhs.rightHandSide(a.t, a.s);
-    step.f1 = rhs.rightHandSide(b.t, b.s);
+    step.t0 = a.timeS;
+    step.t1 = b.timeS;
+    step.s0 = a.state;
+    step.s1 = b.state;
+    step.f0 = rhs.rightHandSide(a.timeS, a.state);
+    step.f1 = rhs.rightHandSide(b.timeS, b.state);
     return step.interpolate(tS);
 }
 
@@ -80,13 +80,14 @@ IntegratorComparison compareIntegrator(const FlightModel& model, const FlightSta
     if (real.path.empty())
         return comparison;
     const FlightIntegrator rhs(model, {});
-    const double end = std::min(comparison.flight.path.back().t, real.path.back().t);
+    const double end = std::min(comparison.flight.path.back().timeS, real.path.back().timeS);
     for (const PathPoint& p : comparison.flight.path)
     {
-        if (p.t > end)
+        if (p.timeS > end)
             break;
-        const FlightState r = pathStateAt(rhs, real, p.t);
-        comparison.maxErrorM = std::max(comparison.maxErrorM, std::hypot(p.s[0] - r[0], p.s[1] - r[1]));
+        const FlightState r = pathStateAt(rhs, real, p.timeS);
+        comparison.maxErrorM = std::max(
+            comparison.maxErrorM, std::hypot(p.state.position.x - r.position.x, p.state.position.y - r.position.y));
     }
     if (comparison.flight.contact && real.contact)
         comparison.contactErrorM =

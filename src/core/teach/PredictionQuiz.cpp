@@ -41,11 +41,11 @@ std::optional<double> closedFormAnswer(QuizQuantity quantity, const QuizLaunch& 
     return quantity == QuizQuantity::FlightTime ? time : vx * time;
 }
 
-std::optional<double> measuredAnswer(QuizQuantity quantity, const ShotRecord& shot, std::array<double, 2> launchPoint)
+std::optional<double> measuredAnswer(QuizQuantity quantity, const ShotRecord& shot, Vec2 launchPoint)
 {
-    const std::vector<std::array<double, 3>>& path = shot.actualPath;
-    const double level = launchPoint[1];
-    double highest = path.empty() ? level : path.front()[2];
+    const std::vector<TrackPoint>& path = shot.actualPath;
+    const double level = launchPoint.y;
+    double highest = path.empty() ? level : path.front().position.y;
     for (std::size_t i = 1; i < path.size(); ++i)
     {
         // A bird that touched anything on the way flew something else than the formula's flight.
@@ -53,16 +53,16 @@ std::optional<double> measuredAnswer(QuizQuantity quantity, const ShotRecord& sh
             return std::nullopt;
         const auto& before = path[i - 1];
         const auto& after = path[i];
-        highest = std::max(highest, after[2]);
-        if (after[2] > level || before[2] <= level)
+        highest = std::max(highest, after.position.y);
+        if (after.position.y > level || before.position.y <= level)
             continue;
-        const double s = (before[2] - level) / (before[2] - after[2]);
+        const double s = (before.position.y - level) / (before.position.y - after.position.y);
         switch (quantity)
         {
         case QuizQuantity::Range:
-            return before[1] + s * (after[1] - before[1]) - launchPoint[0];
+            return before.position.x + s * (after.position.x - before.position.x) - launchPoint.x;
         case QuizQuantity::FlightTime:
-            return before[0] + s * (after[0] - before[0]);
+            return before.timeS + s * (after.timeS - before.timeS);
         case QuizQuantity::MaxHeight:
             return highest - level;
         }

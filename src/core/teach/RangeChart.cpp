@@ -26,7 +26,7 @@ std::optional<double> rangeAtAngle(const RangeLaunch& launch, double angleDeg)
 {
     const FlightState s0 = launchState(0.0, launch.heightM, launch.speedMps, angleDeg);
     // From the ground, a launch that does not point upwards is in the ground already.
-    if (launch.heightM <= 0.0 && !(s0[3] > 0.0))
+    if (launch.heightM <= 0.0 && !(s0.velocity.y > 0.0))
         return 0.0;
     PredictionLimits limits;
     limits.maxTimeS = launch.maxTimeS;
@@ -35,7 +35,7 @@ std::optional<double> rangeAtAngle(const RangeLaunch& launch, double angleDeg)
     const PredictedFlight flight = predictFlight(launch.model, launch.settings, s0, limits);
     if (flight.end != FlightEnd::Landed)
         return std::nullopt;
-    return flight.path.back().s[0] - s0[0];
+    return flight.path.back().state.position.x - s0.position.x;
 }
 
 RangeChart rangeChart(const RangeLaunch& launch, double fromDeg, double toDeg, double stepDeg)

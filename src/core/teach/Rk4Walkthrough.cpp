@@ -1,7 +1,8 @@
+#include "flight/FlightStateAlgebra.hpp"
+
 #include <abalike/flight/ClosedForm.hpp>
 #include <abalike/flight/FlightRhs.hpp>
 #include <abalike/teach/Rk4Walkthrough.hpp>
-#include <boost/numeric/odeint.hpp>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -15,9 +16,8 @@ Rk4Walkthrough walkRk4Step(const FlightModel& model, double t0S, const FlightSta
         throw std::invalid_argument("the time step must be a finite number > 0");
     if (!std::isfinite(t0S))
         throw std::invalid_argument("the start time must be a finite number");
-    for (const double v : state)
-        if (!std::isfinite(v))
-            throw std::invalid_argument("the state must be finite numbers");
+    if (!isFinite(state))
+        throw std::invalid_argument("the state must be finite numbers");
     if (const std::string problem = validateFlightModel(model); !problem.empty())
         throw std::invalid_argument(problem);
 
@@ -40,12 +40,19 @@ Rk4Walkthrough walkRk4Step(const FlightModel& model, double t0S, const FlightSta
                        FlightState k1{};
                        recorded(state, k1, t0S);
                        walk.next = state;
-                       boost::numeric::odeint::runge_kutta4<FlightState>().do_step(recorded, walk.next, k1, t0S, dtS);
+                       FlightRk4().do_step(recorded, walk.next, k1, t0S, dtS);
                    });
-    for (std::size_t i = 0; i < walk.averageSlope.size(); ++i)
-        walk.averageSlope[i] = (walk.stages[0].slope[i] + 2.0 * walk.stages[1].slope[i] +
-                                2.0 * walk.stages[2].slope[i] + walk.stages[3].slope[i]) /
-                               6.0;
+    // (k1 + 2 k2 + 2 k3 + k4) / 6, number by number.
+    const auto average = [](double k1, double k2, double k3, double k4)
+    {
+        return (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0;
+    };
+    const auto& k = walk.stages;
+    walk.averageSlope = {
+        {average(k[0].slope.position.x, k[1].slope.position.x, k[2].slope.position.x, k[3].slope.position.x),
+         average(k[0].slope.position.y, k[1].slope.position.y, k[2].slope.position.y, k[3].slope.position.y)},
+        {average(k[0].slope.velocity.x, k[1].slope.velocity.x, k[2].slope.velocity.x, k[3].slope.velocity.x),
+         average(k[0].slope.velocity.y, k[1].slope.velocity.y, k[2].slope.velocity.y, k[3].slope.velocity.y)}};
     walk.exact = closedFormState(model, state, dtS);
     return walk;
 }

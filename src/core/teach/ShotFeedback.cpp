@@ -41,7 +41,7 @@ std::string momentumSentence(const FirstImpact& impact, const Catalog& catalog)
     const double carried = impact.birdMassKg * std::hypot(impact.birdBefore.vx, impact.birdBefore.vy);
     // The push between the two (Newton's third law: the bird got the same back), not the body's change of
     // momentum, which also holds what it stands on pushing back (the impact panel's balance).
-    const double push = std::hypot(impact.balance.pushOnBody[0], impact.balance.pushOnBody[1]);
+    const double push = std::hypot(impact.balance.pushOnBody.x, impact.balance.pushOnBody.y);
     std::string text = format("The bird hit %s carrying %.0f kg\u00B7m/s of momentum and pushed it with an impulse "
                               "of %.0f N\u00B7s",
                               hitName(impact, catalog).c_str(), carried, push);
@@ -72,7 +72,7 @@ std::string momentumBrief(const FirstImpact& impact, const Catalog& catalog)
     const std::string name = hitName(impact, catalog);
     if (!impact.broke)
         return format("The bird hit %s with an impulse of %.0f N\u00B7s.", name.c_str(),
-                      std::hypot(impact.balance.pushOnBody[0], impact.balance.pushOnBody[1]));
+                      std::hypot(impact.balance.pushOnBody.x, impact.balance.pushOnBody.y));
     const bool keptDirection = impact.birdAfter.vx * impact.birdBefore.vx > 0.0;
     return format("The bird %s %s %s.", impact.bodyKind == EntityKind::Pig ? "defeated" : "broke", name.c_str(),
                   keptDirection ? "and flew on" : "but was turned back");

@@ -54,7 +54,7 @@ std::string shotTableCsv(const GameSession& session)
             continue;
         // One point per step: the path also holds the moment of first contact, between two steps, whose touch
         // goes to the step it happened in.
-        std::vector<std::array<double, 3>> path;
+        std::vector<TrackPoint> path;
         std::vector<std::vector<BodyRef>> touches;
         std::vector<BodyRef> pending;
         for (std::size_t p = 0; p < shot.actualPath.size(); ++p)
@@ -64,7 +64,7 @@ std::string shotTableCsv(const GameSession& session)
                 for (const BodyRef& ref : shot.actualTouches[p])
                     if (std::find(pending.begin(), pending.end(), ref) == pending.end())
                         pending.push_back(ref);
-            if (std::abs(point[0] / dt - std::round(point[0] / dt)) >= 1e-6)
+            if (std::abs(point.timeS / dt - std::round(point.timeS / dt)) >= 1e-6)
                 continue;
             path.push_back(point);
             touches.push_back(std::move(pending));
@@ -80,13 +80,13 @@ std::string shotTableCsv(const GameSession& session)
         // An ability that changed the flight ends the replay's validity where it fired.
         double replayUntil = -1.0;
         for (const auto& point : shot.actualPath)
-            if (std::abs(point[0] / dt - std::round(point[0] / dt)) >= 1e-6)
+            if (std::abs(point.timeS / dt - std::round(point.timeS / dt)) >= 1e-6)
             {
-                replayUntil = point[0];
+                replayUntil = point.timeS;
                 break;
             }
         if (replayUntil < 0.0 && !shot.actualPath.empty())
-            replayUntil = shot.actualPath.back()[0];
+            replayUntil = shot.actualPath.back().timeS;
         if (shot.ability && shot.ability->changedFlight)
             replayUntil = std::min(replayUntil, shot.ability->tS);
         std::optional<FlightEnergyTracker> replay;
@@ -94,7 +94,7 @@ std::string shotTableCsv(const GameSession& session)
         {
             const double angle = shot.angleDeg * 3.14159265358979323846 / 180.0;
             replay.emplace(flightModel, settings,
-                           FlightState{shot.actualPath.front()[1], shot.actualPath.front()[2],
+                           FlightState{shot.actualPath.front().position.x, shot.actualPath.front().position.y,
                                        shot.speedMps * std::cos(angle), shot.speedMps * std::sin(angle)});
         }
         const double m = bird->massKg;
@@ -106,9 +106,9 @@ std::string shotTableCsv(const GameSession& session)
         {
             const std::size_t a = i == 0 ? 0 : i - 1;
             const std::size_t b = i + 1 < path.size() ? i + 1 : i;
-            const double span = path[b][0] - path[a][0];
-            double vx = span > 0 ? (path[b][1] - path[a][1]) / span : 0.0;
-            double vy = span > 0 ? (path[b][2] - path[a][2]) / span : 0.0;
+            const double span = path[b].timeS - path[a].timeS;
+            double vx = span > 0 ? (path[b].position.x - path[a].position.x) / span : 0.0;
+            double vy = span > 0 ? (path[b].position.y - path[a].position.y) / span : 0.0;
             if (i == 0)
             {
                 // The launch velocity is known exactly.
@@ -122,36 +122,36 @@ std::string shotTableCsv(const GameSession& session)
             double ay = 0.0;
             if (i > 0)
             {
-                const double step = path[i][0] - path[i - 1][0];
+                const double step = path[i].timeS - path[i - 1].timeS;
                 ax = step > 0 ? (vx - lastVx) / step : 0.0;
                 ay = step > 0 ? (vy - lastVy) / step : 0.0;
             }
-            double x = path[i][1];
-            double y = path[i][2];
-            const bool exact = replay && path[i][0] <= replayUntil + 1e-9;
+            double x = path[i].position.x;
+            double y = path[i].position.y;
+            const bool exact = replay && path[i].timeS <= replayUntil + 1e-9;
             if (exact)
             {
-                const FlightEnergy e = replay->at(path[i][0]);
-                x = e.state[0];
-                y = e.state[1];
-                vx = e.state[2];
-                vy = e.state[3];
-                const FlightState rate = model.rightHandSide(path[i][0], e.state);
-                ax = rate[2];
-                ay = rate[3];
+                const FlightEnergy e = replay->at(path[i].timeS);
+                x = e.state.position.x;
+                y = e.state.position.y;
+                vx = e.state.velocity.x;
+                vy = e.state.velocity.y;
+                const FlightState rate = model.rightHandSide(path[i].timeS, e.state);
+                ax = rate.velocity.x;
+                ay = rate.velocity.y;
                 dragWork = e.dragLossJ;
             }
             // The air's force on the bird: the model's acceleration less gravity; its power against the motion.
             const FlightState s{x, y, vx, vy};
-            const FlightState rate = model.rightHandSide(path[i][0], s);
-            const double dragPower = -m * (rate[2] * vx + (rate[3] + g) * vy);
+            const FlightState rate = model.rightHandSide(path[i].timeS, s);
+            const double dragPower = -m * (rate.velocity.x * vx + (rate.velocity.y + g) * vy);
             if (i > 0 && !exact)
-                dragWork += 0.5 * (dragPower + lastDragPower) * (path[i][0] - path[i - 1][0]);
+                dragWork += 0.5 * (dragPower + lastDragPower) * (path[i].timeS - path[i - 1].timeS);
             lastDragPower = dragPower;
             const double speed = std::hypot(vx, vy);
             lastVx = vx;
             lastVy = vy;
-            csv << k + 1 << ',' << path[i][0] << ',' << x << ',' << y << ',' << vx << ',' << vy << ',' << ax << ','
+            csv << k + 1 << ',' << path[i].timeS << ',' << x << ',' << y << ',' << vx << ',' << vy << ',' << ax << ','
                 << ay << ',' << speed << ',' << 0.5 * m * speed * speed << ',' << m * g * y << ',' << dragWork << ','
                 << touchedNames(session.level(), touches[i]) << '\n';
         }

@@ -66,8 +66,8 @@ std::optional<AbilityUse> GameWorld::activateAbility()
     AbilityUse use;
     use.ability = std::string(ability.name());
     use.tS = m_bodies->time() - m_birds->launchTime();
-    use.x = s[0];
-    use.y = s[1];
+    use.x = s.position.x;
+    use.y = s.position.y;
     use.beforeContact = m_birds->inFreeFlight();
     AbilityContext context(*m_birds, *m_damage, *m_bodies);
     ability.use(context, use);

@@ -61,8 +61,8 @@ b2Body* BirdFlight::createBody(int index, double radiusM, double massKg, double 
     b2BodyDef def;
     def.type = b2_dynamicBody;
     def.bullet = true; // continuous collision against everything, so fast birds never pass through
-    def.position.Set(static_cast<float>(s[0]), static_cast<float>(s[1]));
-    def.linearVelocity.Set(static_cast<float>(s[2]), static_cast<float>(s[3]));
+    def.position.Set(static_cast<float>(s.position.x), static_cast<float>(s.position.y));
+    def.linearVelocity.Set(static_cast<float>(s.velocity.x), static_cast<float>(s.velocity.y));
     def.angularDamping = 0.8f;
     def.userData = userDataFor(index);
     b2Body* body = m_bodies.world().CreateBody(&def);
@@ -131,7 +131,7 @@ int BirdFlight::launch(const BirdType& bird, const FlightModel& model, const Fli
     m_contact.reset();
     m_contactKind.reset();
     m_impacts.reset();
-    m_path.assign(1, {0.0, s0[0], s0[1]});
+    m_path.assign(1, {0.0, s0.position.x, s0.position.y});
     m_pathTouches.assign(1, {});
     m_bodies.contacts().watchBird(body);
     return m_birdIndex;
@@ -187,7 +187,7 @@ void BirdFlight::setVelocity(double vx, double vy)
     {
         // Re-seed the flight from the new state: the bird keeps following RK4, from here on along a new path.
         const FlightState s = m_flight->state();
-        m_flight->reset(m_flight->time(), {s[0], s[1], vx, vy});
+        m_flight->reset(m_flight->time(), {s.position.x, s.position.y, vx, vy});
         return;
     }
     m_bodies.entity(m_birdIndex).body->SetLinearVelocity(b2Vec2(static_cast<float>(vx), static_cast<float>(vy)));
@@ -214,9 +214,9 @@ void BirdFlight::addProjectile(const ProjectileSpec& spec)
     m_projectiles.push_back(std::move(projectile));
 }
 
-std::array<double, 2> BirdFlight::beforeStep()
+Vec2 BirdFlight::beforeStep()
 {
-    std::array<double, 2> birdStart{};
+    Vec2 birdStart{};
     if (m_birdIndex >= 0)
     {
         b2Body* body = m_bodies.entity(m_birdIndex).body;
@@ -228,7 +228,7 @@ std::array<double, 2> BirdFlight::beforeStep()
             // exactly, and its bullet time-of-impact sweeps the same chord the preview casts.
             const FlightStep& step = m_flight->step();
             m_stepStart = step.s0;
-            const b2Vec2 target(static_cast<float>(step.s1[0]), static_cast<float>(step.s1[1]));
+            const b2Vec2 target(static_cast<float>(step.s1.position.x), static_cast<float>(step.s1.position.y));
             body->SetLinearVelocity((1.0f / static_cast<float>(m_bodies.settings().dtS)) *
                                     (target - body->GetPosition()));
         }
@@ -252,14 +252,14 @@ void BirdFlight::applyFlightForces(b2Body* body, const FlightIntegrator& model, 
     const FlightState s{p.x, p.y, v.x, v.y};
     const FlightState dsdt = model.rightHandSide(sinceLaunchS, s);
     const FlightModel& m = model.model();
-    double ax = dsdt[2];
-    double ay = dsdt[3] + m.gravity;
+    double ax = dsdt.velocity.x;
+    double ay = dsdt.velocity.y + m.gravity;
     // Drag can at most bring the body to the air's velocity within a step. An explicit force larger than that (a
     // light, wide bird: |lambda| dt > 1) would reverse the relative velocity and grow every step; limiting it is the
     // stiff limit of implicit Euler. Ordinary birds are far from it (|lambda| dt < 0.1) and are not touched.
-    const std::array<double, 2> gust = m.gusts ? m.gusts->windAt(sinceLaunchS) : std::array<double, 2>{0.0, 0.0};
-    const double relX = s[2] - (m.windX + gust[0]);
-    const double relY = s[3] - (m.windY + gust[1]);
+    const Vec2 gust = m.gusts ? m.gusts->windAt(sinceLaunchS) : Vec2{0.0, 0.0};
+    const double relX = s.velocity.x - (m.windX + gust.x);
+    const double relY = s.velocity.y - (m.windY + gust.y);
     const double change = std::hypot(ax, ay) * m_bodies.settings().dtS;
     const double relative = std::hypot(relX, relY);
     if (change > relative && change > 0.0)
@@ -271,7 +271,7 @@ void BirdFlight::applyFlightForces(b2Body* body, const FlightIntegrator& model, 
     body->ApplyForceToCenter(b2Vec2(static_cast<float>(mass * ax), static_cast<float>(mass * ay)), true);
 }
 
-void BirdFlight::afterStep(const std::array<double, 2>& stepStart)
+void BirdFlight::afterStep(const Vec2& stepStart)
 {
     if (m_birdIndex < 0)
         return;
@@ -284,10 +284,10 @@ void BirdFlight::afterStep(const std::array<double, 2>& stepStart)
         // The touch happened on this step's chord (the RK4 chord in free flight, Box2D's move otherwise): its time
         // is the fraction of the chord travelled.
         const b2Vec2 touch = *contacts.birdTouch();
-        const double x0 = m_flight ? m_stepStart[0] : stepStart[0];
-        const double y0 = m_flight ? m_stepStart[1] : stepStart[1];
-        const double dx = (m_flight ? m_flight->state()[0] : body->GetPosition().x) - x0;
-        const double dy = (m_flight ? m_flight->state()[1] : body->GetPosition().y) - y0;
+        const double x0 = m_flight ? m_stepStart.position.x : stepStart.x;
+        const double y0 = m_flight ? m_stepStart.position.y : stepStart.y;
+        const double dx = (m_flight ? m_flight->state().position.x : body->GetPosition().x) - x0;
+        const double dy = (m_flight ? m_flight->state().position.y : body->GetPosition().y) - y0;
         const double length2 = dx * dx + dy * dy;
         double fraction = 1.0;
         if (length2 > 0.0)

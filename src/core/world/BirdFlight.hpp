@@ -41,9 +41,9 @@ public:
 
     /// Before a Box2D step: the bird's velocity aimed at its next RK4 state (or the model's forces after contact),
     /// drag and wind on the split birds and eggs. Returns where the bird was.
-    std::array<double, 2> beforeStep();
+    Vec2 beforeStep();
     /// After a Box2D step: the bird's first contact (and first impact), its path.
-    void afterStep(const std::array<double, 2>& birdStart);
+    void afterStep(const Vec2& birdStart);
     /// Birds that rest, lie on the ground long enough or outlived their time leave with a puff.
     void retire();
 
@@ -55,7 +55,7 @@ public:
     int projectilesInPlay() const { return static_cast<int>(m_projectiles.size()); }
     const std::optional<ContactPoint>& contact() const { return m_contact; }
     const std::optional<EntityKind>& contactKind() const { return m_contactKind; }
-    const std::vector<std::array<double, 3>>& path() const { return m_path; }
+    const std::vector<TrackPoint>& path() const { return m_path; }
     /// Beside each point of path(): what the bird touched in the step that ended there (at the contact point: what
     /// it first touched).
     const std::vector<std::vector<BodyRef>>& pathTouches() const { return m_pathTouches; }
@@ -103,7 +103,7 @@ private:
     FlightState m_stepStart{};
     std::optional<ContactPoint> m_contact;
     std::optional<EntityKind> m_contactKind;
-    std::vector<std::array<double, 3>> m_path;
+    std::vector<TrackPoint> m_path;
     std::vector<std::vector<BodyRef>> m_pathTouches;
     std::optional<double> m_shotContactTimeS;
     std::vector<Projectile> m_projectiles;

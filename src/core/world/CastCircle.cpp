@@ -10,8 +10,8 @@ namespace abalike
 std::optional<double> WorldBodies::castCircle(double radiusM, const FlightState& a, const FlightState& b,
                                               int pieces) const
 {
-    const b2Vec2 pa(static_cast<float>(a[0]), static_cast<float>(a[1]));
-    const b2Vec2 pb(static_cast<float>(b[0]), static_cast<float>(b[1]));
+    const b2Vec2 pa(static_cast<float>(a.position.x), static_cast<float>(a.position.y));
+    const b2Vec2 pb(static_cast<float>(b.position.x), static_cast<float>(b.position.y));
     b2CircleShape circle;
     circle.m_radius = physicsCircleRadius(radiusM);
 
@@ -45,8 +45,10 @@ std::optional<double> WorldBodies::castCircle(double radiusM, const FlightState&
     {
         const double s0 = static_cast<double>(piece) / pieces;
         const double s1 = static_cast<double>(piece + 1) / pieces;
-        const b2Vec2 from(static_cast<float>(a[0] + (b[0] - a[0]) * s0), static_cast<float>(a[1] + (b[1] - a[1]) * s0));
-        const b2Vec2 to(static_cast<float>(a[0] + (b[0] - a[0]) * s1), static_cast<float>(a[1] + (b[1] - a[1]) * s1));
+        const b2Vec2 from(static_cast<float>(a.position.x + (b.position.x - a.position.x) * s0),
+                          static_cast<float>(a.position.y + (b.position.y - a.position.y) * s0));
+        const b2Vec2 to(static_cast<float>(a.position.x + (b.position.x - a.position.x) * s1),
+                        static_cast<float>(a.position.y + (b.position.y - a.position.y) * s1));
         b2TOIInput input;
         input.proxyA.Set(&circle, 0);
         input.sweepA.localCenter.SetZero();

@@ -97,7 +97,7 @@ void Damage::refundBreakingContacts(const std::vector<double>& keptShare, int wa
             body->ApplyLinearImpulse(impulse, hit.point, true);
             givenBack[static_cast<std::size_t>(broken)] += impulse;
             if (broken == watched)
-                m_watchedRefund = {m_watchedRefund[0] + impulse.x, m_watchedRefund[1] + impulse.y};
+                m_watchedRefund = {m_watchedRefund.x + impulse.x, m_watchedRefund.y + impulse.y};
         }
     }
 }

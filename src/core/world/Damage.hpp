@@ -23,7 +23,7 @@ public:
     /// watched: an entity whose refund (the impulse it gave back by breaking) is remembered, -1 for none.
     void applyStep(int watched);
     /// What the watched entity gave back by breaking in the last applyStep (N s; zero when it held).
-    const std::array<double, 2>& watchedRefund() const { return m_watchedRefund; }
+    const Vec2& watchedRefund() const { return m_watchedRefund; }
 
     /// A radial blast at (x, y): impulse impulseNs (1 - d / R) on every block and pig whose centre is within R, taken
     /// as damage too; appends each push to impulses when given.
@@ -53,7 +53,7 @@ private:
     std::vector<BlastEvent> m_blasts;
     std::vector<int> m_cratesToExplode; ///< TNT crates that broke in this step, blasting after damage
     std::vector<int> m_bullets;         ///< blocks and pigs a blast made bullets, until they slow down
-    std::array<double, 2> m_watchedRefund{};
+    Vec2 m_watchedRefund{};
 };
 
 } // namespace abalike

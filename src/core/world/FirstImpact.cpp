@@ -21,21 +21,20 @@ double kinetic(double mass, double inertia, const BodyVelocity& v)
 }
 
 /// Velocity of the material point p of a body moving with v about its centre c: v + omega x (p - c).
-std::array<double, 2> pointVelocity(const BodyVelocity& v, const std::array<double, 2>& centre,
-                                    const std::array<double, 2>& p)
+Vec2 pointVelocity(const BodyVelocity& v, const Vec2& centre, const Vec2& p)
 {
-    return {v.vx - v.omegaRadPerS * (p[1] - centre[1]), v.vy + v.omegaRadPerS * (p[0] - centre[0])};
+    return {v.vx - v.omegaRadPerS * (p.y - centre.y), v.vy + v.omegaRadPerS * (p.x - centre.x)};
 }
 
 } // namespace
 
-std::array<double, 2> FirstImpact::momentumBefore() const
+Vec2 FirstImpact::momentumBefore() const
 {
     return {birdMassKg * birdBefore.vx + bodyMassKg * bodyBefore.vx,
             birdMassKg * birdBefore.vy + bodyMassKg * bodyBefore.vy};
 }
 
-std::array<double, 2> FirstImpact::momentumAfter() const
+Vec2 FirstImpact::momentumAfter() const
 {
     return {birdMassKg * birdAfter.vx + bodyMassKg * bodyAfter.vx,
             birdMassKg * birdAfter.vy + bodyMassKg * bodyAfter.vy};
@@ -51,25 +50,21 @@ double FirstImpact::kineticAfterJ() const
     return kinetic(birdMassKg, birdInertiaKgM2, birdAfter) + kinetic(bodyMassKg, bodyInertiaKgM2, bodyAfter);
 }
 
-std::array<double, 2> FirstImpact::birdChange() const
+Vec2 FirstImpact::birdChange() const
 {
     return {birdMassKg * (birdAfter.vx - birdBefore.vx), birdMassKg * (birdAfter.vy - birdBefore.vy)};
 }
 
-std::array<double, 2> FirstImpact::bodyChange() const
+Vec2 FirstImpact::bodyChange() const
 {
     return {bodyMassKg * (bodyAfter.vx - bodyBefore.vx), bodyMassKg * (bodyAfter.vy - bodyBefore.vy)};
 }
 
-std::array<double, 2> FirstImpact::balanceResidual() const
+Vec2 FirstImpact::balanceResidual() const
 {
     const auto bird = birdChange();
     const auto body = bodyChange();
-    std::array<double, 2> residual{};
-    for (std::size_t i = 0; i < 2; ++i)
-        residual[i] = bird[i] + body[i] - balance.supports[i] - balance.birdOtherContacts[i] - balance.gravity[i] -
-                      balance.breakThrough[i];
-    return residual;
+    return bird + body - balance.supports - balance.birdOtherContacts - balance.gravity - balance.breakThrough;
 }
 
 std::optional<double> FirstImpact::restitution() const
@@ -79,7 +74,7 @@ std::optional<double> FirstImpact::restitution() const
     {
         const auto vb = pointVelocity(bird, birdCentre, point);
         const auto vo = pointVelocity(body, bodyCentre, point);
-        return (vb[0] - vo[0]) * normal[0] + (vb[1] - vo[1]) * normal[1];
+        return (vb.x - vo.x) * normal.x + (vb.y - vo.y) * normal.y;
     };
     const double before = closing(birdBefore, bodyBefore);
     if (!(before > 0.0))
@@ -87,29 +82,29 @@ std::optional<double> FirstImpact::restitution() const
     return std::max(0.0, -closing(birdAfter, bodyAfter) / before);
 }
 
-void ImpactRecorder::finishStep(const std::array<double, 2>& refund, int birdIndex)
+void ImpactRecorder::finishStep(const Vec2& refund, int birdIndex)
 {
     if (m_pending < 0 || !m_impact)
         return;
     const Entity& other = m_bodies.entity(m_pending);
     m_pending = -1;
     m_impact->broke = !other.alive;
-    std::array<double, 2> givenBack{0.0, 0.0};
+    Vec2 givenBack{0.0, 0.0};
     if (m_impact->broke)
     {
         // It absorbed only its remaining strength; the impulse given back to the bird is momentum the broken body
         // did not receive (Damage::refundBreakingContacts).
         m_impact->damageNs = std::min(m_impact->damageNs, m_impact->strengthBeforeNs);
-        m_impact->bodyAfter.vx -= refund[0] / m_impact->bodyMassKg;
-        m_impact->bodyAfter.vy -= refund[1] / m_impact->bodyMassKg;
+        m_impact->bodyAfter.vx -= refund.x / m_impact->bodyMassKg;
+        m_impact->bodyAfter.vy -= refund.y / m_impact->bodyMassKg;
         givenBack = refund;
     }
     if (birdIndex >= 0)
         m_impact->birdAfter = velocityOf(*m_bodies.entity(birdIndex).body);
     // The break rule's share: what it gave the bird (refund, momentum handed on) less what the body gave back.
     const double m = m_impact->birdMassKg;
-    m_impact->balance.breakThrough = {m * (m_impact->birdAfter.vx - m_birdAfterSolver.vx) - givenBack[0],
-                                      m * (m_impact->birdAfter.vy - m_birdAfterSolver.vy) - givenBack[1]};
+    m_impact->balance.breakThrough = {m * (m_impact->birdAfter.vx - m_birdAfterSolver.vx) - givenBack.x,
+                                      m * (m_impact->birdAfter.vy - m_birdAfterSolver.vy) - givenBack.y};
 }
 
 void ImpactRecorder::snapshot()
@@ -154,21 +149,18 @@ void ImpactRecorder::record(int birdIndex, int otherIndex, double tS)
     impact.normal = {contacts.birdTouchNormal().x, contacts.birdTouchNormal().y};
     // The contact point is on the bird's surface along the normal (its designed radius).
     const double radius = 0.5 * bird.widthM;
-    impact.point = {touch.x + radius * impact.normal[0], touch.y + radius * impact.normal[1]};
+    impact.point = {touch.x + radius * impact.normal.x, touch.y + radius * impact.normal.y};
     const auto damage = contacts.impulses().find(otherIndex);
     impact.damageNs = damage == contacts.impulses().end() ? 0.0 : damage->second;
     impact.strengthBeforeNs = other.health;
     const ImpulseLedger& ledger = contacts.ledger();
     const ImpulseLedger::Account onBody = ledger.account(otherIndex);
     const ImpulseLedger::Account onBird = ledger.account(birdIndex);
-    for (std::size_t i = 0; i < 2; ++i)
-    {
-        impact.balance.pushOnBody[i] = onBody.fromBird[i];
-        impact.balance.supports[i] = onBody.contacts[i] - onBody.fromBird[i];
-        // The bird got the opposite of the push it gave; the rest of its contact impulses came from elsewhere.
-        impact.balance.birdOtherContacts[i] = onBird.contacts[i] + onBody.fromBird[i];
-        impact.balance.gravity[i] = onBody.gravity[i] + onBird.gravity[i];
-    }
+    impact.balance.pushOnBody = onBody.fromBird;
+    impact.balance.supports = onBody.contacts - onBody.fromBird;
+    // The bird got the opposite of the push it gave; the rest of its contact impulses came from elsewhere.
+    impact.balance.birdOtherContacts = onBird.contacts + onBody.fromBird;
+    impact.balance.gravity = onBody.gravity + onBird.gravity;
     m_birdAfterSolver = impact.birdAfter;
     m_impact = impact;
     m_pending = otherIndex; // finishStep completes the record once damage is applied

@@ -45,7 +45,7 @@ GameWorld::~GameWorld() = default;
 void GameWorld::step()
 {
     m_bodies->contacts().clearStep();
-    const std::array<double, 2> birdStart = m_birds->beforeStep();
+    const Vec2 birdStart = m_birds->beforeStep();
     // The ledger and the snapshot only while the bird flies free: its next contact may be its first impact.
     m_bodies->contacts().ledger().startStep(m_birds->inFreeFlight());
     if (m_birds->inFreeFlight())
@@ -208,7 +208,7 @@ const std::optional<FirstImpact>& GameWorld::birdImpact() const
     return m_impacts->impact();
 }
 
-const std::vector<std::array<double, 3>>& GameWorld::birdPath() const
+const std::vector<TrackPoint>& GameWorld::birdPath() const
 {
     return m_birds->path();
 }
@@ -220,7 +220,7 @@ const std::vector<std::vector<BodyRef>>& GameWorld::birdPathTouches() const
 
 std::optional<double> GameWorld::castCircle(double radiusM, const FlightState& a, const FlightState& b) const
 {
-    const double chordM = std::hypot(b[0] - a[0], b[1] - a[1]);
+    const double chordM = std::hypot(b.position.x - a.position.x, b.position.y - a.position.y);
     return m_bodies->castCircle(radiusM, a, b, m_stepper->substepsFor(chordM / m_bodies->settings().dtS));
 }
 

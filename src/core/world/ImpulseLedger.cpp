@@ -53,8 +53,8 @@ void ImpulseLedger::endSubstep(const std::vector<Entity>& entities, const b2Vec2
             continue;
         const double weight = static_cast<double>(h) * body->GetGravityScale() * body->GetMass();
         Account& account = accountOf(static_cast<int>(i));
-        account.gravity[0] += weight * gravity.x;
-        account.gravity[1] += weight * gravity.y;
+        account.gravity.x += weight * gravity.x;
+        account.gravity.y += weight * gravity.y;
     }
 }
 
@@ -116,12 +116,12 @@ void ImpulseLedger::postSolve(b2Contact* contact, const b2ContactImpulse* impuls
         if (index < 0)
             continue;
         Account& account = accountOf(index);
-        account.contacts[0] += sign * px;
-        account.contacts[1] += sign * py;
+        account.contacts.x += sign * px;
+        account.contacts.y += sign * py;
         if (other == bird)
         {
-            account.fromBird[0] += sign * px;
-            account.fromBird[1] += sign * py;
+            account.fromBird.x += sign * px;
+            account.fromBird.y += sign * py;
         }
         if (regular && static_cast<std::size_t>(index) < m_solvedInIsland.size())
             m_solvedInIsland[static_cast<std::size_t>(index)] = 1;

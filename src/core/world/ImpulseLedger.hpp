@@ -18,9 +18,9 @@ public:
     /// What one body received during the step (N s = kg m/s).
     struct Account
     {
-        std::array<double, 2> contacts{}; ///< from every contact
-        std::array<double, 2> fromBird{}; ///< the part from contacts with the watched bird
-        std::array<double, 2> gravity{};  ///< weight x the time Box2D integrated the body
+        Vec2 contacts{}; ///< from every contact
+        Vec2 fromBird{}; ///< the part from contacts with the watched bird
+        Vec2 gravity{};  ///< weight x the time Box2D integrated the body
     };
 
     bool active() const { return m_active; }

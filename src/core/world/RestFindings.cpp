@@ -84,16 +84,16 @@ std::string coordinate(double y)
 }
 
 /// The highest point of a polygon's outline straight above or below x; none when x is outside it.
-std::optional<double> topAt(const std::vector<std::array<double, 2>>& polygon, double x)
+std::optional<double> topAt(const std::vector<Vec2>& polygon, double x)
 {
     std::optional<double> top;
     for (std::size_t i = 0; i < polygon.size(); ++i)
     {
         const auto& a = polygon[i];
         const auto& b = polygon[(i + 1) % polygon.size()];
-        if (x < std::min(a[0], b[0]) || x > std::max(a[0], b[0]))
+        if (x < std::min(a.x, b.x) || x > std::max(a.x, b.x))
             continue;
-        const double y = a[0] == b[0] ? std::max(a[1], b[1]) : a[1] + (b[1] - a[1]) * (x - a[0]) / (b[0] - a[0]);
+        const double y = a.x == b.x ? std::max(a.y, b.y) : a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x);
         top = top ? std::max(*top, y) : y;
     }
     return top;

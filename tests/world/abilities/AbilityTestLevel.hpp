@@ -33,11 +33,11 @@ inline void launchAndFly(GameSession& session, double angleDeg, double speedMps,
 }
 
 /// The bird's velocity over the last step, from its recorded path.
-inline std::array<double, 2> pathVelocity(const ShotRecord& shot)
+inline Vec2 pathVelocity(const ShotRecord& shot)
 {
     const auto& a = shot.actualPath[shot.actualPath.size() - 2];
     const auto& b = shot.actualPath.back();
-    return {(b[1] - a[1]) / (b[0] - a[0]), (b[2] - a[2]) / (b[0] - a[0])};
+    return {(b.position.x - a.position.x) / (b.timeS - a.timeS), (b.position.y - a.position.y) / (b.timeS - a.timeS)};
 }
 
 /// One of an ability's numbers as the catalog gives it.

@@ -22,14 +22,14 @@ TEST(Abilities, BoostAddsItsSpeedAlongTheVelocity)
     const auto after = pathVelocity(shot);
     const double gain = numberOf(session.catalog(), "boost", "speed_gain_mps");
     // One step of gravity and RK4 chord apart, the speed grew by the boost and the direction stayed.
-    EXPECT_NEAR(std::hypot(after[0], after[1]) - std::hypot(before[0], before[1]), gain, 0.2);
-    EXPECT_NEAR(angleOf(after[0], after[1]), angleOf(before[0], before[1]), 1.0);
+    EXPECT_NEAR(std::hypot(after.x, after.y) - std::hypot(before.x, before.y), gain, 0.2);
+    EXPECT_NEAR(angleOf(after.x, after.y), angleOf(before.x, before.y), 1.0);
 
     ASSERT_EQ(shot.ability->impulses.size(), 1u);
     const AbilityImpulse& j = shot.ability->impulses[0];
     const double mass = session.catalog().findBird("yellow")->massKg;
     EXPECT_NEAR(std::hypot(j.impulseX, j.impulseY), mass * gain, 1e-9);
-    EXPECT_NEAR(angleOf(j.impulseX, j.impulseY), angleOf(before[0], before[1]), 1.0);
+    EXPECT_NEAR(angleOf(j.impulseX, j.impulseY), angleOf(before.x, before.y), 1.0);
     EXPECT_TRUE(shot.ability->changedFlight);
 
     while (session.phase() == Phase::Flying)

@@ -39,8 +39,8 @@ TEST(Abilities, EggAndBirdGetEqualAndOppositeImpulses)
     EXPECT_NEAR(eggEntity->body->GetMass(), eggMass, 1e-4);
     session.step();
     const auto after = pathVelocity(shot);
-    EXPECT_NEAR(after[1] - before[1], eggMass * pushSpeed / birdMass, 0.5);
-    EXPECT_NEAR(after[0], before[0], 0.01);
+    EXPECT_NEAR(after.y - before.y, eggMass * pushSpeed / birdMass, 0.5);
+    EXPECT_NEAR(after.x, before.x, 0.01);
 
     while (session.phase() == Phase::Flying)
         session.step();

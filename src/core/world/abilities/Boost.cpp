@@ -28,13 +28,13 @@ public:
     {
         const FlightState s = world.birdState();
         const double mass = world.birdType().massKg;
-        const double speed = std::hypot(s[2], s[3]);
-        const double ux = speed > 1e-9 ? s[2] / speed : 1.0;
-        const double uy = speed > 1e-9 ? s[3] / speed : 0.0;
+        const double speed = std::hypot(s.velocity.x, s.velocity.y);
+        const double ux = speed > 1e-9 ? s.velocity.x / speed : 1.0;
+        const double uy = speed > 1e-9 ? s.velocity.y / speed : 0.0;
         const double gain = m_speedGainMps;
-        world.setBirdVelocity(s[2] + gain * ux, s[3] + gain * uy);
+        world.setBirdVelocity(s.velocity.x + gain * ux, s.velocity.y + gain * uy);
         use.changedFlight = use.beforeContact;
-        use.impulses.push_back({use.tS, s[0], s[1], mass * gain * ux, mass * gain * uy, "bird"});
+        use.impulses.push_back({use.tS, s.position.x, s.position.y, mass * gain * ux, mass * gain * uy, "bird"});
     }
 
     double number(std::string_view key) const override

@@ -38,17 +38,18 @@ public:
         egg.typeName = "egg";
         egg.radiusM = m_radiusM;
         egg.massKg = m_massKg;
-        egg.state = {s[0], s[1] - (bird.radiusM + m_radiusM), s[2], s[3] - m_pushSpeedMps};
+        egg.state = {s.position.x, s.position.y - (bird.radiusM + m_radiusM), s.velocity.x,
+                     s.velocity.y - m_pushSpeedMps};
         egg.model = world.birdModel();
         egg.model.massKg = m_massKg;
         egg.model.quadraticDrag = quadraticDragCoefficient(world.airDensity(), kEggDragCoefficient, m_radiusM);
         egg.model.linearDrag *= m_radiusM / bird.radiusM; // Stokes drag grows with the radius
         egg.causeAs = CauseKind::Egg;
         world.addProjectile(egg);
-        world.setBirdVelocity(s[2], s[3] + push / bird.massKg);
+        world.setBirdVelocity(s.velocity.x, s.velocity.y + push / bird.massKg);
         use.changedFlight = use.beforeContact;
-        use.impulses.push_back({use.tS, egg.state[0], egg.state[1], 0.0, -push, "egg"});
-        use.impulses.push_back({use.tS, s[0], s[1], 0.0, push, "bird"});
+        use.impulses.push_back({use.tS, egg.state.position.x, egg.state.position.y, 0.0, -push, "egg"});
+        use.impulses.push_back({use.tS, s.position.x, s.position.y, 0.0, push, "bird"});
     }
 
     double number(std::string_view key) const override

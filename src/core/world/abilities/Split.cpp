@@ -34,10 +34,11 @@ public:
         {
             const double c = std::cos(sign * angle);
             const double d = std::sin(sign * angle);
-            const FlightState fragment{s[0], s[1], c * s[2] - d * s[3], d * s[2] + c * s[3]};
+            const FlightState fragment{s.position.x, s.position.y, c * s.velocity.x - d * s.velocity.y,
+                                       d * s.velocity.x + c * s.velocity.y};
             world.addProjectile({bird.name, bird.radiusM, bird.massKg, fragment, world.birdModel(), CauseKind::Bird});
-            use.impulses.push_back(
-                {use.tS, s[0], s[1], bird.massKg * fragment[2], bird.massKg * fragment[3], "split bird"});
+            use.impulses.push_back({use.tS, s.position.x, s.position.y, bird.massKg * fragment.velocity.x,
+                                    bird.massKg * fragment.velocity.y, "split bird"});
         }
     }
 
