@@ -1,4 +1,4 @@
-#include "../save/TempDir.hpp"
+#include "save/TempDir.hpp"
 
 #include <abalike/edit/Autosave.hpp>
 #include <abalike/edit/Findings.hpp>
@@ -19,13 +19,7 @@ namespace
 const std::filesystem::path kSchema =
     std::filesystem::path(ABALIKE_SOURCE_DIR) / "levels" / "schema" / "level.schema.json";
 
-std::string readText(const std::filesystem::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+using test::readText;
 
 /// A small level built the way a designer builds one: place, drag, set properties.
 void buildLevel(SceneEditor& editor)

@@ -1,6 +1,6 @@
 #include "../SanitizerBuild.hpp"
-#include "../save/TempDir.hpp"
 #include "RandomLevel.hpp"
+#include "save/TempDir.hpp"
 
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/level/LevelWriter.hpp>
@@ -29,13 +29,7 @@ std::vector<std::string> campaignLevels()
     return names;
 }
 
-std::string readText(const std::filesystem::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+using test::readText;
 
 /// Loads what the writer wrote, geometry problems or not (random levels overlap by chance).
 LevelDef reread(const std::string& text, const std::string& name)

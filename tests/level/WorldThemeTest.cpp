@@ -10,7 +10,7 @@ namespace abalike
 namespace
 {
 
-LevelDef levelWith(const std::string& extra)
+LevelDef levelWithTheme(const std::string& extra)
 {
     return parseLevel(R"({"format": 1, "id": "t", "title": "T", "slingshot": {"x": 0, "y": 1.5}, "birds": ["red"],
         "pigs": [{"x": 20, "y": 0.25}])" +
@@ -20,32 +20,32 @@ LevelDef levelWith(const std::string& extra)
 
 TEST(WorldTheme, TheLevelsGravityPicksTheWorldWithinFivePercent)
 {
-    EXPECT_EQ(levelTheme(levelWith("")), WorldTheme::Earth);
-    EXPECT_EQ(levelTheme(levelWith(R"(, "environment": {"gravity": 1.62})")), WorldTheme::Moon);
-    EXPECT_EQ(levelTheme(levelWith(R"(, "environment": {"gravity": 3.8})")), WorldTheme::Mars); // 2.4 % off
-    EXPECT_EQ(levelTheme(levelWith(R"(, "environment": {"gravity": 1.35})")), WorldTheme::Titan);
-    EXPECT_EQ(levelTheme(levelWith(R"(, "environment": {"gravity": 24.0})")), WorldTheme::Jupiter); // 3.2 % off
+    EXPECT_EQ(levelTheme(levelWithTheme("")), WorldTheme::Earth);
+    EXPECT_EQ(levelTheme(levelWithTheme(R"(, "environment": {"gravity": 1.62})")), WorldTheme::Moon);
+    EXPECT_EQ(levelTheme(levelWithTheme(R"(, "environment": {"gravity": 3.8})")), WorldTheme::Mars); // 2.4 % off
+    EXPECT_EQ(levelTheme(levelWithTheme(R"(, "environment": {"gravity": 1.35})")), WorldTheme::Titan);
+    EXPECT_EQ(levelTheme(levelWithTheme(R"(, "environment": {"gravity": 24.0})")), WorldTheme::Jupiter); // 3.2 % off
     // Between worlds, and just outside 5 %: Earth's look.
-    EXPECT_EQ(levelTheme(levelWith(R"(, "environment": {"gravity": 6.0})")), WorldTheme::Earth);
-    EXPECT_EQ(levelTheme(levelWith(R"(, "environment": {"gravity": 3.5})")), WorldTheme::Earth); // 5.7 % off Mars
+    EXPECT_EQ(levelTheme(levelWithTheme(R"(, "environment": {"gravity": 6.0})")), WorldTheme::Earth);
+    EXPECT_EQ(levelTheme(levelWithTheme(R"(, "environment": {"gravity": 3.5})")), WorldTheme::Earth); // 5.7 % off Mars
 }
 
 TEST(WorldTheme, AThemeInTheFileWinsAndRoundTrips)
 {
-    const LevelDef moonOnEarth = levelWith(R"(, "theme": "moon")");
+    const LevelDef moonOnEarth = levelWithTheme(R"(, "theme": "moon")");
     EXPECT_EQ(levelTheme(moonOnEarth), WorldTheme::Moon);
     const std::string written = writeLevelJson(moonOnEarth, "");
     EXPECT_NE(written.find("\"theme\": \"moon\""), std::string::npos) << written;
     EXPECT_EQ(parseLevel(written, "t.json", Catalog::builtin()), moonOnEarth);
     // Without one, nothing is written: format 1 files stay as they were.
-    EXPECT_EQ(writeLevelJson(levelWith(""), "").find("theme"), std::string::npos);
+    EXPECT_EQ(writeLevelJson(levelWithTheme(""), "").find("theme"), std::string::npos);
 }
 
 TEST(WorldTheme, AnUnknownThemeIsAnErrorThatListsTheWorlds)
 {
     try
     {
-        levelWith(R"(, "theme": "venus")");
+        levelWithTheme(R"(, "theme": "venus")");
         FAIL() << "venus was accepted";
     }
     catch (const LevelLoadError& e)
@@ -55,7 +55,7 @@ TEST(WorldTheme, AnUnknownThemeIsAnErrorThatListsTheWorlds)
                   std::string::npos)
             << e.what();
     }
-    EXPECT_THROW(levelWith(R"(, "theme": 3)"), LevelLoadError);
+    EXPECT_THROW(levelWithTheme(R"(, "theme": 3)"), LevelLoadError);
 }
 
 } // namespace

@@ -51,7 +51,7 @@ const std::regex kNumberWord(
     R"(\b(half|twice|double|triple|three|four|five|six|seven|eight|nine|ten|third|quarter|fifth|sixth|sixtieth)\b)",
     std::regex::icase);
 
-LevelDef levelWith(const std::string& json)
+LevelDef levelWithTexts(const std::string& json)
 {
     const std::string slingshot =
         json.find("\"slingshot\"") == std::string::npos ? R"(, "slingshot": {"x": 0, "y": 1.5})" : "";
@@ -99,7 +99,7 @@ TEST(TextValues, EveryBundledTextFillsAndTypesNoPhysicsNumber)
 TEST(TextValues, ValuesAreTheLevelsOwnPhysicsRecomputedFromFirstPrinciples)
 {
     const Catalog& catalog = Catalog::builtin();
-    const LevelDef level = levelWith(R"(, "slingshot": {"x": 0, "y": 2.5, "max_force_n": 1250, "max_pull_m": 1.6},
+    const LevelDef level = levelWithTexts(R"(, "slingshot": {"x": 0, "y": 2.5, "max_force_n": 1250, "max_pull_m": 1.6},
         "environment": {"gravity": 3.71, "air_density": 0.5, "wind": [-3, 4]},
         "materials": {"ice": {"strength_ns": 30, "density_kg_per_m3": 600}}, "time_limit_s": 42)");
     const double energy = 0.5 * 1250.0 * 1.6; // E = 1/2 F x, 1000 J
@@ -139,7 +139,7 @@ TEST(TextValues, VacuumBestAngleFromAHeightMatchesTheClosedForm)
     // From height h at speed v the farthest angle satisfies tan(theta) = v / sqrt(v^2 + 2 g h), and the range is
     // (v / g) sqrt(v^2 + 2 g h).
     const Catalog& catalog = Catalog::builtin();
-    const LevelDef level = levelWith(R"(, "slingshot": {"x": 0, "y": 10.5})");
+    const LevelDef level = levelWithTexts(R"(, "slingshot": {"x": 0, "y": 10.5})");
     const double v = std::sqrt(1800.0 * 2.0 / 4.0);
     const double g = 9.81;
     const double h = 10.5;
@@ -147,7 +147,7 @@ TEST(TextValues, VacuumBestAngleFromAHeightMatchesTheClosedForm)
     EXPECT_NEAR(textValue(level, catalog, "vacuum_best_angle", "red"), angle, 0.01);
     EXPECT_NEAR(textValue(level, catalog, "vacuum_best_range", "red"), v / g * std::sqrt(v * v + 2.0 * g * h), 0.01);
     // Air shortens the best range and lowers the best angle.
-    const LevelDef air = levelWith(R"(, "slingshot": {"x": 0, "y": 10.5}, "environment": {"air_density": 1.2})");
+    const LevelDef air = levelWithTexts(R"(, "slingshot": {"x": 0, "y": 10.5}, "environment": {"air_density": 1.2})");
     EXPECT_LT(textValue(air, catalog, "best_range", "red"), textValue(air, catalog, "vacuum_best_range", "red") - 5.0);
     EXPECT_LT(textValue(air, catalog, "best_angle", "red"), angle - 1.0);
 }
@@ -155,7 +155,7 @@ TEST(TextValues, VacuumBestAngleFromAHeightMatchesTheClosedForm)
 TEST(TextValues, FillFormatsDecimalsAndExpressions)
 {
     const Catalog& catalog = Catalog::builtin();
-    const LevelDef level = levelWith(
+    const LevelDef level = levelWithTexts(
         R"(, "environment": {"gravity": 1.62, "air_density": 0.01, "gusts": [{"t": 1, "wx": -10, "wy": 0}, {"t": 2.5, "wx": 3, "wy": 0}]})");
     EXPECT_EQ(fillText("red {v_max:red} m/s, {p_max:red} N s, {energy} J", level, catalog),
               "red 30.0 m/s, 120 N s, 1800 J");
@@ -172,7 +172,7 @@ TEST(TextValues, ABadPlaceholderIsAReaderErrorThatSaysWhereAndWhat)
     {
         try
         {
-            levelWith(R"(, "concept": ")" + conceptText + R"(", "hints": ["fine {v_max:red}"])");
+            levelWithTexts(R"(, "concept": ")" + conceptText + R"(", "hints": ["fine {v_max:red}"])");
         }
         catch (const LevelLoadError& e)
         {

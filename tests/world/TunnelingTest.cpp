@@ -31,7 +31,7 @@ LevelDef wallLevel(bool staticWall)
 }
 
 /// Stone that cannot break, so whatever gets past the wall went through it.
-const Catalog& unbreakable()
+const Catalog& unbreakableStone()
 {
     static const Catalog catalog =
         test::catalogWith([](nlohmann::json& root) { test::materialIn(root, "stone")["strength_ns"] = 1e9; });
@@ -59,8 +59,8 @@ struct Flight
 Flight flyAtWall(bool staticWall, const std::string& birdName, double speed, const WorldSettings& settings = {})
 {
     const LevelDef level = wallLevel(staticWall);
-    GameWorld world(level, unbreakable(), settings);
-    const BirdType& bird = *unbreakable().findBird(birdName);
+    GameWorld world(level, unbreakableStone(), settings);
+    const BirdType& bird = *unbreakableStone().findBird(birdName);
     FlightModel model;
     model.massKg = bird.massKg;
     world.launchBird(bird, model, {0.0, 1.5, speed, 0.0});
@@ -81,11 +81,11 @@ Flight flyAtWall(bool staticWall, const std::string& birdName, double speed, con
 TEST(Tunneling, EveryBirdAtTheSlingshotsTopSpeedStopsAtTheWall)
 {
     for (const bool staticWall : {false, true})
-        for (const BirdType& bird : unbreakable().birds())
+        for (const BirdType& bird : unbreakableStone().birds())
         {
             LevelDef level = wallLevel(staticWall);
             level.birds = {bird.name};
-            GameSession session(level, unbreakable());
+            GameSession session(level, unbreakableStone());
             const double speed = session.maxLaunchSpeed();
             session.launch(0.0, speed);
             double worst = -1e9;

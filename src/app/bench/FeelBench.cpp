@@ -4,6 +4,7 @@
 #include "bench/BenchSuite.hpp"
 #include "bench/BirdRoles.hpp"
 #include "bench/ReportTable.hpp"
+#include "render/TextFormat.hpp"
 #include "shell/DataPaths.hpp"
 
 #include <abalike/design/Solver.hpp>
@@ -236,17 +237,10 @@ double interpolatedPercentile(std::vector<double> values, double p)
     return values[lo] + (rank - static_cast<double>(lo)) * (values[hi] - values[lo]);
 }
 
-std::string fixed(double value, int decimals)
-{
-    std::ostringstream text;
-    text << std::fixed << std::setprecision(decimals) << value;
-    return text.str();
-}
-
 std::string share(int part, int whole)
 {
     return std::to_string(part) + " of " + std::to_string(whole) +
-           (whole > 0 ? " (" + fixed(100.0 * part / whole, 0) + " %)" : "");
+           (whole > 0 ? " (" + formatFixed(100.0 * part / whole, 0) + " %)" : "");
 }
 
 std::string verdict(bool met)
@@ -286,9 +280,9 @@ int runFeelBench(const BenchOptions& options)
     std::vector<double> readyAfterContact;
     for (const GridShot& g : grid)
     {
-        shots.addRow({g.level, fixed(g.angleDeg, 0), fixed(g.share, 1), fixed(g.speedMps, 3), g.firstTouched,
-                      g.material, g.broke ? "1" : "0", fixed(g.vxBefore, 4), fixed(g.vxAfter, 4), g.won ? "1" : "0",
-                      fixed(g.turnS, 3), g.readyAfterContactS ? fixed(*g.readyAfterContactS, 3) : ""});
+        shots.addRow({g.level, formatFixed(g.angleDeg, 0), formatFixed(g.share, 1), formatFixed(g.speedMps, 3), g.firstTouched,
+                      g.material, g.broke ? "1" : "0", formatFixed(g.vxBefore, 4), formatFixed(g.vxAfter, 4), g.won ? "1" : "0",
+                      formatFixed(g.turnS, 3), g.readyAfterContactS ? formatFixed(*g.readyAfterContactS, 3) : ""});
         if (!g.won)
         {
             turns.push_back(g.turnS);
@@ -321,7 +315,7 @@ int runFeelBench(const BenchOptions& options)
     md << "## Birds and their materials\n\nFull-pull shots at a lone 1 m block on flat ground 10 m away, aims from "
           "-5 to 45 deg in 0.5 deg steps; of the aims whose first contact is the block, the share that broke it. "
           "Each bird's own material and use is marked; the target is >= "
-       << fixed(100 * kRoleTarget, 0) << " % there.\n\n"
+       << formatFixed(100 * kRoleTarget, 0) << " % there.\n\n"
        << "| bird | use | wood | ice | stone | its role | target |\n|---|---|---:|---:|---:|---|---|\n";
     struct Role
     {
@@ -370,14 +364,14 @@ int runFeelBench(const BenchOptions& options)
        << "| before | " << allBefore[0] << " | " << share(allBefore[1], allBefore[0]) << " | "
        << share(allBefore[2], allBefore[0]) << " |\n"
        << "| now | " << all[0] << " | " << share(all[1], all[0]) << " | " << share(all[2], all[0]) << " |\n"
-       << "| now, the bird moving sideways at >= " << fixed(kSidewaysMps, 0) << " m/s before | " << fast[0] << " | "
+       << "| now, the bird moving sideways at >= " << formatFixed(kSidewaysMps, 0) << " m/s before | " << fast[0] << " | "
        << share(fast[1], fast[0]) << " | " << share(fast[2], fast[0]) << " |\n"
        << "| now, the bird slower sideways (rolling, pinned) | " << slow[0] << " | " << share(slow[1], slow[0]) << " | "
        << share(slow[2], slow[0]) << " |\n\n"
-       << "Targets: on first contact keeps its sign >= " << fixed(100 * kKeepSignTarget, 0) << " %: **"
-       << verdict(keepShare >= kKeepSignTarget) << "**; reverses <= " << fixed(100 * kReverseTarget, 0) << " %: **"
+       << "Targets: on first contact keeps its sign >= " << formatFixed(100 * kKeepSignTarget, 0) << " %: **"
+       << verdict(keepShare >= kKeepSignTarget) << "**; reverses <= " << formatFixed(100 * kReverseTarget, 0) << " %: **"
        << verdict(reverseShare <= kReverseTarget)
-       << "**; at any contact keeps its sign >= " << fixed(100 * kKeepSignTarget, 0) << " %: **"
+       << "**; at any contact keeps its sign >= " << formatFixed(100 * kKeepSignTarget, 0) << " %: **"
        << verdict(allKeepShare >= kKeepSignTarget) << "**.\n\n";
 
     const double median = interpolatedPercentile(turns, 0.5);
@@ -390,12 +384,12 @@ int runFeelBench(const BenchOptions& options)
     md << "## Pace of turns\n\nShots of the grid that did not win (" << turns.size()
        << "), in seconds of game time:\n\n"
        << "| | median | 90th percentile | max |\n|---|---:|---:|---:|\n"
-       << "| launch until the next bird is ready or the level ends | " << fixed(median, 2) << " | " << fixed(p90, 2)
-       << " | " << fixed(worst, 2) << " |\n"
-       << "| first contact until then (`ready_after_contact_s`) | " << fixed(readyMedian, 2) << " | "
-       << fixed(readyP90, 2) << " | " << fixed(readyMax, 2) << " |\n\n"
-       << "Targets (first contact until ready): median <= " << fixed(kMedianTurnTargetS, 1) << " s: **"
-       << verdict(readyMedian <= kMedianTurnTargetS) << "**; max <= " << fixed(kMaxTurnTargetS, 1) << " s: **"
+       << "| launch until the next bird is ready or the level ends | " << formatFixed(median, 2) << " | " << formatFixed(p90, 2)
+       << " | " << formatFixed(worst, 2) << " |\n"
+       << "| first contact until then (`ready_after_contact_s`) | " << formatFixed(readyMedian, 2) << " | "
+       << formatFixed(readyP90, 2) << " | " << formatFixed(readyMax, 2) << " |\n\n"
+       << "Targets (first contact until ready): median <= " << formatFixed(kMedianTurnTargetS, 1) << " s: **"
+       << verdict(readyMedian <= kMedianTurnTargetS) << "**; max <= " << formatFixed(kMaxTurnTargetS, 1) << " s: **"
        << verdict(readyMax <= kMaxTurnTargetS) << "**.\n";
 
     const CauseTally tally = tallyWinningShots(levels);
@@ -412,7 +406,7 @@ int runFeelBench(const BenchOptions& options)
     md << "| toppling (block, pig, ground) | " << share(toppledPigs(tally.pigsByCause), pigs) << " |\n";
 
     // Per episode: toppling against every defeat (explosions and eggs are in the total, not in toppling).
-    md << "\nBy episode (target: toppling >= " << fixed(100.0 * kToppleShareTarget, 0)
+    md << "\nBy episode (target: toppling >= " << formatFixed(100.0 * kToppleShareTarget, 0)
        << " % of the pigs defeated in every episode):\n\n"
        << "| episode | pigs | bird | toppling | explosion | egg | toppling share | target |\n"
        << "|---|---:|---:|---:|---:|---:|---:|---|\n";
@@ -423,11 +417,11 @@ int runFeelBench(const BenchOptions& options)
         const double toppledShare = total > 0 ? static_cast<double>(toppled) / total : 0.0;
         md << "| " << (episode.empty() ? "-" : episode) << " | " << total << " | " << countOf(byCause, "bird") << " | "
            << toppled << " | " << countOf(byCause, "explosion") << " | " << countOf(byCause, "egg") << " | "
-           << fixed(100.0 * toppledShare, 0) << " % | " << verdict(toppledShare >= kToppleShareTarget) << " |\n";
+           << formatFixed(100.0 * toppledShare, 0) << " % | " << verdict(toppledShare >= kToppleShareTarget) << " |\n";
     }
 
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    md << "\nWall time " << fixed(seconds, 1) << " s.\n";
+    md << "\nWall time " << formatFixed(seconds, 1) << " s.\n";
     std::cout << md.str();
     const bool written = writeReportFile(options.outDir, "feel.md", md.str()) &&
                          writeReportFile(options.outDir, "feel.csv", shots.csv());

@@ -1,5 +1,6 @@
 #include "bench/BenchSuite.hpp"
 #include "bench/PerfParts.hpp"
+#include "render/TextFormat.hpp"
 #include "shell/DataPaths.hpp"
 
 #include <abalike/level/LevelIO.hpp>
@@ -31,13 +32,6 @@ struct PerfPlan
     double sweepSeconds = 30.0;
     double settleSeconds = 10.0;
 };
-
-std::string fixed(double value, int decimals)
-{
-    std::ostringstream out;
-    out << std::fixed << std::setprecision(decimals) << value;
-    return out.str();
-}
 
 std::string pyramidLabel(const PyramidPerf& p)
 {
@@ -122,9 +116,9 @@ int runPerfBench(const BenchOptions& options)
     {
         const bool ok = l.realTimeFactor >= kMinRealTimeFactor;
         pass = pass && ok;
-        md << "| " << l.file << " | " << fixed(l.angleDeg, 1) << ", " << fixed(l.speedMps, 2) << " | " << l.shotSource
-           << " | " << l.stepsPerRun << " | " << fixed(l.steps.medianUs, 1) << " | " << fixed(l.steps.p95Us, 1) << " | "
-           << fixed(l.realTimeFactor, 0) << " | " << (ok ? "yes" : "NO") << " | " << fixed(l.atOnceFactor, 0) << " |\n";
+        md << "| " << l.file << " | " << formatFixed(l.angleDeg, 1) << ", " << formatFixed(l.speedMps, 2) << " | " << l.shotSource
+           << " | " << l.stepsPerRun << " | " << formatFixed(l.steps.medianUs, 1) << " | " << formatFixed(l.steps.p95Us, 1) << " | "
+           << formatFixed(l.realTimeFactor, 0) << " | " << (ok ? "yes" : "NO") << " | " << formatFixed(l.atOnceFactor, 0) << " |\n";
     }
 
     md << "\n## " << plan.pyramidRows << "-row pyramid (" << pyramids[0].bodies
@@ -145,16 +139,16 @@ int runPerfBench(const BenchOptions& options)
     {
         const bool ok = p.overheadRatio <= kMaxOverhead;
         pass = pass && ok;
-        md << "| " << pyramidLabel(p) << " | " << fixed(p.ours.medianUs, 1) << " | " << fixed(p.ours.p95Us, 1) << " | "
-           << fixed(p.raw.medianUs, 1) << " | " << fixed(p.raw.p95Us, 1) << " | " << fixed(p.firstStepOursMs, 1)
-           << " / " << fixed(p.firstStepRawMs, 1) << " | " << fixed(p.overheadRatio, 3) << " / "
-           << fixed(p.medianRunRatio, 3) << " | " << (p.sameFinalState ? "yes, bit for bit" : "no") << " | "
+        md << "| " << pyramidLabel(p) << " | " << formatFixed(p.ours.medianUs, 1) << " | " << formatFixed(p.ours.p95Us, 1) << " | "
+           << formatFixed(p.raw.medianUs, 1) << " | " << formatFixed(p.raw.p95Us, 1) << " | " << formatFixed(p.firstStepOursMs, 1)
+           << " / " << formatFixed(p.firstStepRawMs, 1) << " | " << formatFixed(p.overheadRatio, 3) << " / "
+           << formatFixed(p.medianRunRatio, 3) << " | " << (p.sameFinalState ? "yes, bit for bit" : "no") << " | "
            << (ok ? "yes" : "NO") << " |\n";
     }
 
     const auto stats = [](const StepStats& st)
     {
-        return fixed(st.medianUs, 1) + " / " + fixed(st.meanUs, 1);
+        return formatFixed(st.medianUs, 1) + " / " + formatFixed(st.meanUs, 1);
     };
     md << "\n## The 1 000-block wall: our world against raw Box2D\n\n"
        << "`wall-20x50-mixed` (" << wall.bodies
@@ -164,7 +158,7 @@ int runPerfBench(const BenchOptions& options)
        << wall.substeps
        << " Box2D sub-steps per step for a stack 51 deep, settle step, contact rule, rolling resistance; the settle "
           "step took "
-       << fixed(wall.settleOursMs, 0)
+       << formatFixed(wall.settleOursMs, 0)
        << " ms), a plain `b2World` with the same iterations, sub-steps and settle step, and a plain `b2World` with "
           "Box2D's defaults (8/3, one step, no settle step). Stepped "
        << plan.wallRestSteps / 2
@@ -180,7 +174,7 @@ int runPerfBench(const BenchOptions& options)
     const auto wallRow = [&](const char* phase, const StepStats& o, const StepStats& r, const StepStats& d)
     {
         md << "| " << phase << " | " << stats(o) << " | " << stats(r) << " | " << stats(d) << " | "
-           << fixed(o.meanUs / r.meanUs, 2) << " |\n";
+           << formatFixed(o.meanUs / r.meanUs, 2) << " |\n";
     };
     wallRow("at rest, sleep off", wall.awakeOurs, wall.awakeRaw, wall.awakeDefault);
     wallRow("at rest, sleep on (as played)", wall.restOurs, wall.restRaw, wall.restDefault);
@@ -206,8 +200,8 @@ int runPerfBench(const BenchOptions& options)
            << (r.settings.settleIterations == WorldSettings::kAutoSettle ? std::string("auto")
                                                                          : std::to_string(r.settings.settleIterations))
            << " | " << (r.settings.maxStackSubsteps > 1 ? "by depth" : std::to_string(r.substeps)) << " | "
-           << (r.settings.allowSleep ? "on" : "off") << " | " << r.failingScenes << " | " << fixed(r.maxDriftMm, 3)
-           << " | " << r.worstScene << " | " << fixed(r.usPerStep, 1) << " | " << fixed(r.pyramidUsPerStep, 1)
+           << (r.settings.allowSleep ? "on" : "off") << " | " << r.failingScenes << " | " << formatFixed(r.maxDriftMm, 3)
+           << " | " << r.worstScene << " | " << formatFixed(r.usPerStep, 1) << " | " << formatFixed(r.pyramidUsPerStep, 1)
            << " |\n";
 
     md << "\n## The automatic settle step and stack sub-steps per scene\n\n"
@@ -219,7 +213,7 @@ int runPerfBench(const BenchOptions& options)
        << "|---|---:|---:|---:|---:|---:|---:|---|\n";
     for (const SettleRow& r : settle)
         md << "| " << r.scene << " | " << r.bodies << " | " << r.depth << " | " << r.substeps << " | " << r.iterations
-           << " | " << fixed(r.firstStepMs, 1) << " | " << fixed(r.maxDriftMm, 3) << " | " << (r.stands ? "yes" : "NO")
+           << " | " << formatFixed(r.firstStepMs, 1) << " | " << formatFixed(r.maxDriftMm, 3) << " | " << (r.stands ? "yes" : "NO")
            << " |\n";
     md << "\nResult: " << (pass ? "every target met" : "a target was MISSED") << ".\n";
 

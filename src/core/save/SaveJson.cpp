@@ -13,7 +13,7 @@ namespace
 {
 
 /// Save files nest three deep; the guard keeps a hostile file from costing deep recursion anywhere.
-constexpr int kMaxNesting = 16;
+constexpr int kMaxSaveNesting = 16;
 
 /// Deepest bracket nesting outside strings; stops counting once past the limit.
 int nestingDepth(std::string_view text)
@@ -21,7 +21,7 @@ int nestingDepth(std::string_view text)
     int depth = 0;
     int deepest = 0;
     bool inString = false;
-    for (std::size_t i = 0; i < text.size() && deepest <= kMaxNesting; ++i)
+    for (std::size_t i = 0; i < text.size() && deepest <= kMaxSaveNesting; ++i)
     {
         const char c = text[i];
         if (inString)
@@ -75,8 +75,8 @@ nlohmann::json parseSaveJson(std::string_view text, int expectedFormat, int olde
                               std::to_string(kMaxSaveBytes));
     if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
         throw SaveFormatError("the file is empty");
-    if (nestingDepth(text) > kMaxNesting)
-        throw SaveFormatError("the JSON nests more than " + std::to_string(kMaxNesting) + " deep");
+    if (nestingDepth(text) > kMaxSaveNesting)
+        throw SaveFormatError("the JSON nests more than " + std::to_string(kMaxSaveNesting) + " deep");
     nlohmann::json root;
     try
     {
