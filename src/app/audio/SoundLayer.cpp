@@ -1,6 +1,7 @@
 #include "audio/SoundLayer.hpp"
 
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/PlayerSettings.hpp"
 
 #include <abalike/save/Settings.hpp>
 #include <algorithm>
@@ -38,7 +39,7 @@ void SoundLayer::onLevelStart(PlayView& view)
 void SoundLayer::afterStep(PlayView& view)
 {
     const GameSession& session = view.session();
-    const Settings& settings = view.app().settings();
+    const Settings& settings = view.app().settings().current();
     if (session.destroyed().size() < m_seen || session.shots().size() < m_shots) // restarted
     {
         remember(session);
@@ -106,7 +107,7 @@ void SoundLayer::frameUpdate(PlayView& view, double frameS)
     // The band creaks while the pull grows, by mouse or keys (not when a bird first sits in the slingshot).
     if (m_lastSpeedMps >= 0.0 && aim->speedMps > m_lastSpeedMps + 0.5 && m_sinceStretchS >= kStretchEveryS)
     {
-        m_board.play(SoundEffect::Stretch, view.app().settings(), 0.6f);
+        m_board.play(SoundEffect::Stretch, view.app().settings().current(), 0.6f);
         m_sinceStretchS = 0.0;
     }
     m_lastSpeedMps = aim->speedMps;

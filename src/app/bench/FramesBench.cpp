@@ -4,6 +4,7 @@
 #include "render/Font.hpp"
 #include "screens/GameScreens.hpp"
 #include "shell/App.hpp"
+#include "shell/AppContext.hpp"
 #include "shell/DataPaths.hpp"
 #include "shell/Display.hpp"
 #include "teach/Guide.hpp"
@@ -185,7 +186,7 @@ SceneFrames playScene(const Scene& scene, FrameSize size, const ScriptedShot& sh
         // The editor on the level: everything selected, then the pointer sweeping the scene (hover, rulers,
         // findings) every frame, as a designer's hand does.
         options.shots.clear();
-        options.firstScreen = [level = scene.level](App& app) -> std::unique_ptr<Screen>
+        options.firstScreen = [level = scene.level](AppContext& app) -> std::unique_ptr<Screen>
         {
             EditorSource source;
             source.level = level;

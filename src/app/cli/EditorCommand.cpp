@@ -68,7 +68,7 @@ int runEditCommand(const EditArgs& a)
     loadWindowScript(a.window, store, options);
     if (!haveDisplay())
         return kUsageExitCode;
-    options.firstScreen = [source = std::move(source)](App& app) -> std::unique_ptr<Screen>
+    options.firstScreen = [source = std::move(source)](AppContext& app) -> std::unique_ptr<Screen>
     {
         return std::make_unique<EditorScreen>(app, source);
     };

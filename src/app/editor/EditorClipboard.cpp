@@ -4,8 +4,9 @@
 #include "editor/EditorSource.hpp"
 #include "editor/SceneTools.hpp"
 
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
 #include "shell/DataPaths.hpp"
+#include "shell/Trace.hpp"
 
 #include <SFML/Window/Clipboard.hpp>
 #include <abalike/level/LevelWriter.hpp>

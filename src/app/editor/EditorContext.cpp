@@ -1,6 +1,7 @@
 #include "editor/EditorContext.hpp"
 
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/UiMetrics.hpp"
 
 #include <algorithm>
 #include <imgui.h>
@@ -8,7 +9,7 @@
 namespace abalike::app
 {
 
-EditorContext::EditorContext(App& owner, const EditorSource& source)
+EditorContext::EditorContext(AppContext& owner, const EditorSource& source)
     : app(owner), editor(std::make_unique<SceneEditor>(source.level))
 {
     editor->setPath(source.path);
@@ -33,8 +34,8 @@ void EditorContext::say(std::string text, bool error)
 
 sf::FloatRect EditorContext::sceneArea() const
 {
-    const sf::Vector2f size(app.windowSize());
-    const float scale = app.uiScale();
+    const sf::Vector2f size(app.ui().windowSize());
+    const float scale = app.ui().scale();
     // The menu bar and the status bar: a line of 16 px text with ImGui's frame and window padding.
     const float top = 22.0f * scale;
     const float bottom = playing ? 0.0f : 38.0f * scale;
@@ -60,7 +61,7 @@ bool EditorContext::pointerOverPanels(sf::Vector2f pixel) const
 
 void EditorContext::fitView()
 {
-    view.fit(scene().level(), Catalog::builtin(), sceneArea(), app.windowSize());
+    view.fit(scene().level(), Catalog::builtin(), sceneArea(), app.ui().windowSize());
     viewFitted = true;
 }
 

@@ -14,13 +14,13 @@
 namespace abalike::app
 {
 
-class App;
+class AppContext;
 
 /// What the editor's parts share: the app, the scene being edited (the core's SceneEditor, which New and Open
 /// replace), the view onto it, the checks, the status line and where the panels were drawn in the last frame.
 struct EditorContext
 {
-    EditorContext(App& app, const EditorSource& source);
+    EditorContext(AppContext& app, const EditorSource& source);
 
     SceneEditor& scene() { return *editor; }
     const SceneEditor& scene() const { return *editor; }
@@ -39,7 +39,7 @@ struct EditorContext
     /// Zooms and pans the view onto the whole scene.
     void fitView();
 
-    App& app;
+    AppContext& app;
     std::unique_ptr<SceneEditor> editor;
     std::uint64_t sceneGeneration = 0; ///< counts replaceScene: a new scene's revisions start again
     EditorView view;

@@ -4,8 +4,12 @@
 #include "editor/PlayTest.hpp"
 #include "editor/SceneTools.hpp"
 
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
 #include "shell/DataPaths.hpp"
+#include "shell/Navigator.hpp"
+#include "shell/RunControl.hpp"
+#include "shell/Trace.hpp"
+#include "shell/UiMetrics.hpp"
 
 #include <abalike/edit/Autosave.hpp>
 #include <abalike/save/DataDirectory.hpp>
@@ -29,7 +33,7 @@ EditorFiles::EditorFiles(EditorContext& context, PlayTest& play, SceneTools& too
     : m_ctx(context), m_play(play), m_tools(tools)
 {
     // An unsaved scene from a run that ended without saving is offered back (never in scripted runs).
-    if (m_ctx.app.scripted())
+    if (m_ctx.app.run().scripted())
         return;
     const auto dir = defaultDataDirectory();
     try
@@ -98,7 +102,7 @@ bool EditorFiles::saveTo(const std::filesystem::path& path)
                                                 " geometry problem(s), marked: `abalike check` will fail it)");
         m_ctx.messageIsError = !geometry.empty();
         m_ctx.app.trace().write("editor-save", {{"path", path.string()}, {"problems", geometry.size()}});
-        if (!m_ctx.app.scripted())
+        if (!m_ctx.app.run().scripted())
             removeAutosave(autosavePath(defaultDataDirectory()));
         return true;
     }
@@ -135,10 +139,10 @@ void EditorFiles::carryOut(Pending action)
     {
     case Pending::Leave:
         m_play.stop();
-        m_ctx.app.screens().pop();
+        m_ctx.app.navigator().screens().pop();
         break;
     case Pending::Quit:
-        m_ctx.app.quit(0);
+        m_ctx.app.navigator().quit(0);
         break;
     case Pending::New:
         resetScene(sandboxSource());
@@ -191,7 +195,7 @@ void EditorFiles::openFile(const std::filesystem::path& path)
 void EditorFiles::autosaveIfDue()
 {
     // Scripted runs never write the player's files.
-    if (m_ctx.app.scripted())
+    if (m_ctx.app.run().scripted())
         return;
     if (!m_ctx.scene().dirty())
     {
@@ -242,8 +246,8 @@ void EditorFiles::dialogs()
 
 void EditorFiles::recoverDialog()
 {
-    const ImVec2 centre(0.5f * static_cast<float>(m_ctx.app.windowSize().x),
-                        0.5f * static_cast<float>(m_ctx.app.windowSize().y));
+    const ImVec2 centre(0.5f * static_cast<float>(m_ctx.app.ui().windowSize().x),
+                        0.5f * static_cast<float>(m_ctx.app.ui().windowSize().y));
     ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     if (!ImGui::BeginPopupModal("Recover an unsaved scene", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
         return;
@@ -279,8 +283,8 @@ void EditorFiles::recoverDialog()
 
 void EditorFiles::unsavedDialog()
 {
-    const ImVec2 centre(0.5f * static_cast<float>(m_ctx.app.windowSize().x),
-                        0.5f * static_cast<float>(m_ctx.app.windowSize().y));
+    const ImVec2 centre(0.5f * static_cast<float>(m_ctx.app.ui().windowSize().x),
+                        0.5f * static_cast<float>(m_ctx.app.ui().windowSize().y));
     ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
         return;
@@ -303,7 +307,7 @@ void EditorFiles::unsavedDialog()
     {
         m_showUnsaved = false;
         ImGui::CloseCurrentPopup();
-        if (!m_ctx.app.scripted())
+        if (!m_ctx.app.run().scripted())
             removeAutosave(autosavePath(defaultDataDirectory()));
         carryOut(m_pending);
     }
@@ -320,9 +324,10 @@ void EditorFiles::unsavedDialog()
 void EditorFiles::fileDialog()
 {
     const char* title = m_fileDialogSaves ? "Save level as" : "Open a level";
-    const sf::Vector2f window(m_ctx.app.windowSize());
+    const sf::Vector2f window(m_ctx.app.ui().windowSize());
     ImGui::SetNextWindowPos(ImVec2(0.5f * window.x, 0.5f * window.y), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(std::min(window.x - 40.0f, 720.0f * m_ctx.app.uiScale()), 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(std::min(window.x - 40.0f, 720.0f * m_ctx.app.ui().scale()), 0.0f),
+                             ImGuiCond_Always);
     if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoResize))
         return;
     ImGui::TextUnformatted("File:");

@@ -6,7 +6,9 @@
 #include "editor/PlayTest.hpp"
 #include "editor/SceneDrawing.hpp"
 
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/PlayerSettings.hpp"
+#include "shell/UiMetrics.hpp"
 
 #include <abalike/edit/Snapping.hpp>
 #include <abalike/flight/GravityPresets.hpp>
@@ -112,7 +114,7 @@ void EditorInspector::panel()
 {
     const float menu = ImGui::GetFrameHeight();
     const float status = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().WindowPadding.y;
-    const sf::Vector2f window(m_ctx.app.windowSize());
+    const sf::Vector2f window(m_ctx.app.ui().windowSize());
     const float width = window.x - m_ctx.sceneArea().left - m_ctx.sceneArea().width;
     ImGui::SetNextWindowPos(ImVec2(window.x - width, menu), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(width, window.y - menu - status), ImGuiCond_Always);
@@ -186,7 +188,7 @@ void EditorInspector::selectionTab()
         ObjectDef def = objectDef(m_ctx.scene().level(), ref);
         bool changed = false;
         const char* key = "";
-        ImGui::PushItemWidth(-110.0f * m_ctx.app.uiScale());
+        ImGui::PushItemWidth(-110.0f * m_ctx.app.ui().scale());
         if (auto* block = std::get_if<BlockDef>(&def))
         {
             int shape = static_cast<int>(block->shape);
@@ -282,7 +284,7 @@ void EditorInspector::environmentTab()
 {
     LevelDef next = m_ctx.scene().level();
     EnvironmentDef& env = next.environment;
-    ImGui::PushItemWidth(-120.0f * m_ctx.app.uiScale());
+    ImGui::PushItemWidth(-120.0f * m_ctx.app.ui().scale());
     heading("Gravity");
     if (sliderDouble("g (m/s\u00B2)", env.gravity, 0.0, 100.0, "%.2f", ImGuiSliderFlags_Logarithmic))
         setProperties(next, "Gravity", "gravity");
@@ -438,7 +440,7 @@ void EditorInspector::environmentTab()
 void EditorInspector::birdTab()
 {
     LevelDef next = m_ctx.scene().level();
-    ImGui::PushItemWidth(-120.0f * m_ctx.app.uiScale());
+    ImGui::PushItemWidth(-120.0f * m_ctx.app.ui().scale());
     if (m_ctx.playing)
     {
         // The world runs or stands still; the panels work either way.
@@ -532,7 +534,7 @@ void EditorInspector::birdTab()
                 m_drawing.session()->world().birdBody(customBirdType(*m_ctx.scene().level().customBird)));
             if (!text.empty())
                 ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.3f, 1.0f), "%s",
-                                   m_ctx.app.universityWording() ? "Box2D:" : "Physics engine:");
+                                   m_ctx.app.settings().universityWording() ? "Box2D:" : "Physics engine:");
             if (!text.empty())
                 ImGui::TextWrapped("%s", text.c_str());
         }
@@ -599,7 +601,7 @@ void EditorInspector::materialsTab()
     const Catalog scene = levelCatalog(next, Catalog::builtin());
     ImGui::TextWrapped("This scene's values; the catalog's are the defaults. Blocks already in the air keep "
                        "theirs until the scene is played again.");
-    ImGui::PushItemWidth(-150.0f * m_ctx.app.uiScale());
+    ImGui::PushItemWidth(-150.0f * m_ctx.app.ui().scale());
     for (const Material& base : Catalog::builtin().materials())
     {
         ImGui::PushID(base.name.c_str());
@@ -649,7 +651,7 @@ void EditorInspector::materialsTab()
 void EditorInspector::levelTab()
 {
     LevelDef next = m_ctx.scene().level();
-    ImGui::PushItemWidth(-110.0f * m_ctx.app.uiScale());
+    ImGui::PushItemWidth(-110.0f * m_ctx.app.ui().scale());
     const auto text = [&](const char* label, std::string& value, const char* undo, bool multiline = false)
     {
         // ImGui edits a buffer of ours; it follows the scene while the field is idle and is applied when let go.
@@ -801,7 +803,7 @@ void EditorInspector::multiSelectionFields(const std::vector<ObjectRef>& selecti
         defs.push_back(std::get<BlockDef>(objectDef(m_ctx.scene().level(), ref)));
     BlockDef first = defs.front();
     ImGui::TextDisabled("For all %zu selected blocks:", blocks.size());
-    ImGui::PushItemWidth(-110.0f * m_ctx.app.uiScale());
+    ImGui::PushItemWidth(-110.0f * m_ctx.app.ui().scale());
     const auto applyToAll = [&](const char* label, const auto& change)
     {
         std::vector<ObjectDef> defs;

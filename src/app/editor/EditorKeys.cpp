@@ -1,8 +1,6 @@
 // The editor's keyboard shortcuts (the help screen and the palette list them).
 #include "editor/EditorScreen.hpp"
 
-#include "shell/App.hpp"
-
 #include <tuple>
 
 namespace abalike::app

@@ -10,7 +10,8 @@
 #include "editor/SceneTools.hpp"
 #include "shell/DataPaths.hpp"
 
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/UiMetrics.hpp"
 
 #include <abalike/world/Catalog.hpp>
 #include <cstdio>
@@ -212,7 +213,8 @@ void EditorPanels::palettePanel()
     const float status = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().WindowPadding.y;
     ImGui::SetNextWindowPos(ImVec2(0.0f, menu), ImGuiCond_Always);
     ImGui::SetNextWindowSize(
-        ImVec2(m_ctx.sceneArea().left, static_cast<float>(m_ctx.app.windowSize().y) - menu - status), ImGuiCond_Always);
+        ImVec2(m_ctx.sceneArea().left, static_cast<float>(m_ctx.app.ui().windowSize().y) - menu - status),
+        ImGuiCond_Always);
     if (!ImGui::Begin("Palette", nullptr, kPanelFlags))
     {
         m_ctx.recordPanel();
@@ -330,7 +332,7 @@ void EditorPanels::palettePanel()
 void EditorPanels::statusBar()
 {
     const float height = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().WindowPadding.y;
-    const sf::Vector2f window(m_ctx.app.windowSize());
+    const sf::Vector2f window(m_ctx.app.ui().windowSize());
     ImGui::SetNextWindowPos(ImVec2(0.0f, window.y - height), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(window.x, height), ImGuiCond_Always);
     ImGui::Begin("##status", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);

@@ -2,7 +2,11 @@
 
 #include "render/Font.hpp"
 #include "render/Palette.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/PlayerSettings.hpp"
+#include "shell/RunControl.hpp"
+#include "shell/Trace.hpp"
+#include "shell/UiMetrics.hpp"
 
 #include <abalike/save/DataDirectory.hpp>
 #include <algorithm>
@@ -16,9 +20,9 @@ namespace abalike::app
 namespace
 {
 /// imgui.ini lives with the player's other files; scripted runs keep none.
-std::string imguiIniPath(const App& app)
+std::string imguiIniPath(const AppContext& app)
 {
-    if (app.scripted())
+    if (app.run().scripted())
         return {};
     const auto dir = defaultDataDirectory();
     std::error_code ec;
@@ -28,8 +32,8 @@ std::string imguiIniPath(const App& app)
 }
 } // namespace
 
-EditorScreen::EditorScreen(App& app, EditorSource source)
-    : m_ctx(app, source), m_imgui(app.window(), imguiIniPath(app), gameFontPath()), m_tools(m_ctx),
+EditorScreen::EditorScreen(AppContext& app, EditorSource source)
+    : m_ctx(app, source), m_imgui(app.ui().window(), imguiIniPath(app), gameFontPath()), m_tools(m_ctx),
       m_drawing(m_ctx, m_tools), m_play(m_ctx), m_clipboard(m_ctx, m_tools), m_files(m_ctx, m_play, m_tools),
       m_inspector(m_ctx, m_play, m_drawing), m_panels(m_ctx, m_tools, m_play, m_files, m_clipboard, m_inspector)
 {
@@ -95,8 +99,8 @@ void EditorScreen::fixedUpdate(double dtS)
 
 void EditorScreen::frameUpdate(double frameS)
 {
-    App& app = m_ctx.app;
-    m_imgui.setStyle(app.uiScale(), app.settings().highContrast);
+    AppContext& app = m_ctx.app;
+    m_imgui.setStyle(app.ui().scale(), app.settings().current().highContrast);
     m_ctx.checks.poll();
     m_files.autosaveIfDue();
     m_drawing.refresh();

@@ -17,7 +17,7 @@
 namespace abalike::app
 {
 
-class App;
+class AppContext;
 
 /// The level editor and sandbox: the scene drawn as the game draws it, Dear ImGui panels around it, mouse and keys
 /// to place, select, move, rotate, resize, duplicate and delete with snapping and undo, a play test that fires at
@@ -29,7 +29,7 @@ class EditorScreen : public Screen
 public:
     static constexpr std::string_view kName = "editor";
 
-    EditorScreen(App& app, EditorSource source);
+    EditorScreen(AppContext& app, EditorSource source);
     ~EditorScreen() override;
 
     std::string_view name() const override { return kName; }

@@ -3,7 +3,8 @@
 #include <algorithm>
 
 #include "editor/EditorScreen.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Navigator.hpp"
 
 #include <abalike/edit/SceneEditor.hpp>
 #include <abalike/world/Catalog.hpp>
@@ -51,9 +52,9 @@ EditorSource editorSourceFor(const std::filesystem::path& path)
     return source;
 }
 
-void openEditor(App& app, EditorSource source)
+void openEditor(AppContext& app, EditorSource source)
 {
-    app.screens().push(std::make_unique<EditorScreen>(app, std::move(source)));
+    app.navigator().screens().push(std::make_unique<EditorScreen>(app, std::move(source)));
 }
 
 } // namespace abalike::app

@@ -8,7 +8,7 @@
 namespace abalike::app
 {
 
-class App;
+class AppContext;
 
 /// What the editor opens: a scene, the file it saves to, and the geometry problems it was opened with.
 struct EditorSource
@@ -31,6 +31,6 @@ std::vector<std::filesystem::path> levelFilesForDialogs(const std::filesystem::p
 EditorSource editorSourceFor(const std::filesystem::path& path);
 
 /// Opens the editor over the screens already there (title menu's Sandbox, level select's Edit).
-void openEditor(App& app, EditorSource source);
+void openEditor(AppContext& app, EditorSource source);
 
 } // namespace abalike::app

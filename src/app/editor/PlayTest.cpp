@@ -1,7 +1,9 @@
 #include "editor/PlayTest.hpp"
 
 #include "editor/EditorContext.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Trace.hpp"
+#include "shell/UiMetrics.hpp"
 
 #include <SFML/Graphics/Sprite.hpp>
 #include <algorithm>
@@ -69,7 +71,7 @@ void PlayTest::followBird()
     const b2Vec2 position = bird->body->GetPosition();
     const sf::Vector2f at = view.toScreen({position.x, position.y});
     const sf::Vector2f size(view.windowSize());
-    const float margin = std::min(60.0f * m_ctx.app.uiScale(), 0.25f * std::min(size.x, size.y));
+    const float margin = std::min(60.0f * m_ctx.app.ui().scale(), 0.25f * std::min(size.x, size.y));
     sf::Vector2f shift(0.0f, 0.0f);
     if (at.x > size.x - margin)
         shift.x = size.x - margin - at.x;

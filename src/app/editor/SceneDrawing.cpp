@@ -3,7 +3,8 @@
 #include "editor/EditorContext.hpp"
 #include "editor/SceneTools.hpp"
 #include "render/Palette.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/UiMetrics.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <algorithm>
@@ -79,7 +80,7 @@ void SceneDrawing::drawGrid(const Camera& camera)
 void SceneDrawing::drawOverlay(sf::RenderTarget& target)
 {
     const Camera camera = m_ctx.view.camera(target.getSize());
-    const float scale = m_ctx.app.uiScale();
+    const float scale = m_ctx.app.ui().scale();
     m_mesh.clear();
     drawGrid(camera);
 

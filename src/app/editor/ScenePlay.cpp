@@ -2,15 +2,19 @@
 
 #include "layers/PlayLayerTable.hpp"
 #include "play/PlayDrawing.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Notices.hpp"
+#include "shell/PlayerSettings.hpp"
+#include "shell/Trace.hpp"
+#include "shell/UiMetrics.hpp"
 
 #include <algorithm>
 
 namespace abalike::app
 {
 
-ScenePlay::ScenePlay(App& app, const LevelDef& level, const Camera& camera)
-    : m_app(app), m_level(level), m_camera(camera), m_overlay(app.font()), m_hud(app.font()),
+ScenePlay::ScenePlay(AppContext& app, const LevelDef& level, const Camera& camera)
+    : m_app(app), m_level(level), m_camera(camera), m_overlay(app.ui().font()), m_hud(app.ui().font()),
       m_layers(makePlayLayers(app))
 {
     restart();
@@ -25,7 +29,7 @@ std::string ScenePlay::levelLabel() const
 
 PlayMode ScenePlay::playMode() const
 {
-    return m_app.mode();
+    return m_app.settings().mode();
 }
 
 void ScenePlay::restart()
@@ -132,7 +136,7 @@ void ScenePlay::physicsStep()
     m_session->step();
     if (!m_session->notice().empty())
     {
-        m_app.notify(m_session->notice());
+        m_app.notices().notify(m_session->notice());
         m_session->clearNotice();
     }
     m_trails.update(*m_session);

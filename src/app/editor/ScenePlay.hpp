@@ -17,7 +17,7 @@
 namespace abalike::app
 {
 
-class App;
+class AppContext;
 
 /// The editor's play mode: the scene as it is in the editor, fired at and watched with the game's own drawing
 /// (preview dots, flown path, contacts, HUD) and the play layers every play screen gets (the teaching overlay).
@@ -26,7 +26,7 @@ class App;
 class ScenePlay : public PlayView
 {
 public:
-    ScenePlay(App& app, const LevelDef& level, const Camera& camera);
+    ScenePlay(AppContext& app, const LevelDef& level, const Camera& camera);
     ~ScenePlay() override;
 
     /// A window event over the scene (the panels have had their chance).
@@ -51,7 +51,7 @@ public:
     double maxSpeedMps() const;
 
     // PlayView
-    App& app() override { return m_app; }
+    AppContext& app() override { return m_app; }
     PlayMode playMode() const override;
     std::string levelLabel() const override;
     const GameSession& session() const override { return *m_session; }
@@ -69,7 +69,7 @@ private:
     void physicsStep();
     void refreshPreview();
 
-    App& m_app;
+    AppContext& m_app;
     LevelDef m_level;
     std::unique_ptr<GameSession> m_session;
     Camera m_camera;

@@ -2,7 +2,10 @@
 
 #include "editor/EditorContext.hpp"
 #include "editor/PlayTest.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/RunControl.hpp"
+#include "shell/Trace.hpp"
+#include "shell/UiMetrics.hpp"
 
 #include <abalike/edit/Snapping.hpp>
 #include <abalike/util/Angles.hpp>
@@ -69,8 +72,8 @@ std::optional<ObjectRef> SceneTools::resizeHandleAt(sf::Vector2f pixel) const
     const auto corner = handleCorner(objectDef(m_ctx.scene().level(), ref));
     if (!corner)
         return std::nullopt;
-    const sf::Vector2f at = m_ctx.view.camera(m_ctx.app.windowSize()).toScreen(*corner);
-    const float reach = (kHandlePx + 3.0f) * m_ctx.app.uiScale();
+    const sf::Vector2f at = m_ctx.view.camera(m_ctx.app.ui().windowSize()).toScreen(*corner);
+    const float reach = (kHandlePx + 3.0f) * m_ctx.app.ui().scale();
     if (std::abs(at.x - pixel.x) <= reach && std::abs(at.y - pixel.y) <= reach)
         return ref;
     return std::nullopt;
@@ -105,8 +108,8 @@ sf::Vector2f SceneTools::vertexHandlePosition(const VertexHandle& handle) const
 
 std::optional<SceneTools::VertexHandle> SceneTools::vertexHandleAt(sf::Vector2f pixel) const
 {
-    const Camera camera = m_ctx.view.camera(m_ctx.app.windowSize());
-    const float reach = (kHandlePx + 3.0f) * m_ctx.app.uiScale();
+    const Camera camera = m_ctx.view.camera(m_ctx.app.ui().windowSize());
+    const float reach = (kHandlePx + 3.0f) * m_ctx.app.ui().scale();
     std::optional<VertexHandle> best;
     float bestDistance = reach;
     for (const VertexHandle& handle : vertexHandles())
@@ -222,7 +225,7 @@ void SceneTools::handleMouse(const sf::Event& event, PlayTest& play)
         return;
     }
     if (event.type == sf::Event::MouseButtonPressed && event.mouseButton.button == sf::Mouse::Left)
-        pressOnScene(pixel, m_ctx.app.input().shift(), m_ctx.app.input().ctrl());
+        pressOnScene(pixel, m_ctx.app.run().input().shift(), m_ctx.app.run().input().ctrl());
     else if (event.type == sf::Event::MouseMoved)
         moveOnScene(pixel);
     else if (event.type == sf::Event::MouseButtonReleased && event.mouseButton.button == sf::Mouse::Left)

@@ -2,7 +2,9 @@
 
 #include "render/AbilityLook.hpp"
 #include "render/Palette.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/PlayerSettings.hpp"
+#include "shell/UiMetrics.hpp"
 
 #include <SFML/Graphics/Text.hpp>
 #include <abalike/save/Settings.hpp>
@@ -78,7 +80,7 @@ void FxLayer::afterStep(PlayView& view)
     const std::vector<DestroyedEvent>& destroyed = view.session().destroyed();
     if (destroyed.size() < m_seen) // the session restarted without telling us
         m_seen = 0;
-    const bool reduced = view.app().settings().reducedMotion;
+    const bool reduced = view.app().settings().current().reducedMotion;
     for (std::size_t i = m_seen; i < destroyed.size(); ++i)
     {
         const DestroyedEvent& event = destroyed[i];
@@ -134,7 +136,7 @@ void FxLayer::afterStep(PlayView& view)
 
 sf::Vector2f FxLayer::worldShakePx(PlayView& view) const
 {
-    return m_shake.offsetPx() * view.app().uiScale();
+    return m_shake.offsetPx() * view.app().ui().scale();
 }
 
 void FxLayer::frameUpdate(PlayView& view, double frameS)
@@ -161,10 +163,10 @@ void FxLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
 {
     // Points over the HUD and the labels, so a panel never hides them.
     const Camera& camera = view.camera();
-    const sf::Font* font = view.app().font();
+    const sf::Font* font = view.app().ui().font();
     if (font == nullptr)
         return;
-    const bool reduced = view.app().settings().reducedMotion;
+    const bool reduced = view.app().settings().current().reducedMotion;
     for (PopUp& popUp : m_popUps)
     {
         const float along = popUp.ageS / kPopUpLifeS;
@@ -173,7 +175,7 @@ void FxLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
             at.y += kPopUpRiseMps * popUp.ageS;
         sf::Text& text = popUp.label;
         text.setFont(*font);
-        text.setCharacterSize(view.app().textSize(popUp.pig ? 26.0f : 18.0f));
+        text.setCharacterSize(view.app().ui().textSize(popUp.pig ? 26.0f : 18.0f));
         const float alpha = std::clamp((1.0f - along) / 0.3f, 0.0f, 1.0f);
         text.setFillColor(faded(popUp.pig ? palette::kStar : palette::kText, alpha));
         text.setOutlineColor(faded(sf::Color(30, 24, 16), alpha));

@@ -1,4 +1,5 @@
 #include "layers/PlayLayerTable.hpp"
+#include "shell/AppContext.hpp"
 
 #include "audio/SoundLayer.hpp"
 #include "fx/FxLayer.hpp"
@@ -8,7 +9,7 @@
 namespace abalike::app
 {
 
-std::vector<std::unique_ptr<PlayLayer>> makePlayLayers(App& app)
+std::vector<std::unique_ptr<PlayLayer>> makePlayLayers(AppContext& app)
 {
     std::vector<std::unique_ptr<PlayLayer>> layers;
     layers.push_back(std::make_unique<SoundLayer>());

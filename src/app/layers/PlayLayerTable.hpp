@@ -8,10 +8,10 @@
 namespace abalike::app
 {
 
-class App;
+class AppContext;
 
 /// The layers every play screen (and the editor's play test) gets, bottom first: drawn first, offered input last.
 /// An explicit table (PlayLayerTable.cpp), so linking the app in any way keeps every layer.
-std::vector<std::unique_ptr<PlayLayer>> makePlayLayers(App& app);
+std::vector<std::unique_ptr<PlayLayer>> makePlayLayers(AppContext& app);
 
 } // namespace abalike::app

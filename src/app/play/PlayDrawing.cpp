@@ -8,7 +8,11 @@
 #include "render/Mesh.hpp"
 #include "render/Palette.hpp"
 #include "render/TrailPainter.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Notices.hpp"
+#include "shell/PlayerSettings.hpp"
+#include "shell/Trace.hpp"
+#include "shell/UiMetrics.hpp"
 
 #include <SFML/Graphics/View.hpp>
 #include <algorithm>
@@ -55,17 +59,17 @@ void drawWorldPicture(sf::RenderTarget& target, PlayView& view, WorldRenderer& w
     world.drawBackground(target, camera, session);
 
     // Earlier shots on this level stay as dimmed trails (unless the player turned flown paths off).
-    if (view.app().settings().showActualPath)
-        drawShotTrails(target, camera, view.trails(), view.app().uiScale());
+    if (view.app().settings().current().showActualPath)
+        drawShotTrails(target, camera, view.trails(), view.app().ui().scale());
     if (lastShot != nullptr)
         overlay.drawShotPaths(target, camera, *lastShot, opacity);
     world.drawForeground(target, camera, session, pullOffset);
     if (view.aim())
-        drawPullLimit(target, camera, session, pulling, view.app().uiScale());
+        drawPullLimit(target, camera, session, pulling, view.app().ui().scale());
     if (lastShot != nullptr)
         overlay.drawShotMarkers(target, camera, *lastShot, opacity);
     // The preview setting: the whole path, its first half second (30 steps of 1/60 s), or none.
-    const PreviewMode previewMode = view.app().settings().previewFor(view.playMode());
+    const PreviewMode previewMode = view.app().settings().current().previewFor(view.playMode());
     if (const PredictedFlight* preview = view.preview();
         preview != nullptr && previewMode != PreviewMode::Off && !previewHidden)
         overlay.drawPreview(target, camera, *preview, previewMode == PreviewMode::Short ? 30 : 0);
@@ -105,19 +109,20 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
 
     target.setView(still);
     hud.draw(target, target.getSize(), session, view.aim(), view.playMode(), view.levelLabel(),
-             static_cast<float>(view.app().settings().textScale),
+             static_cast<float>(view.app().settings().current().textScale),
              PlayToolbar::reservedWidthPx(view.app(), target.getSize()));
     for (const auto& layer : layers)
         layer->drawScreen(target, view);
     // Last, so that it can keep clear of every panel.
     if (lastShot != nullptr)
         overlay.drawShotLabel(target, camera, *lastShot, opacity, structureScreenBoxes(session, camera),
-                              static_cast<float>(view.app().settings().textScale), view.playMode() == PlayMode::Game);
+                              static_cast<float>(view.app().settings().current().textScale),
+                              view.playMode() == PlayMode::Game);
     if (std::vector<ScreenRegion>* keep = keepVisibleSink())
         *keep = keepVisibleBoxes(session, camera);
 }
 
-bool launchRequested(App& app, GameSession& session, const ScriptedShot& shot)
+bool launchRequested(AppContext& app, GameSession& session, const ScriptedShot& shot)
 {
     try
     {
@@ -127,7 +132,7 @@ bool launchRequested(App& app, GameSession& session, const ScriptedShot& shot)
     }
     catch (const LaunchError& error)
     {
-        app.notify(error.what());
+        app.notices().notify(error.what());
         return false;
     }
 }

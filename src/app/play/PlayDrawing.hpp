@@ -20,6 +20,6 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
               sf::Vector2f pullOffset, bool pulling, const std::vector<std::unique_ptr<PlayLayer>>& layers);
 
 /// Launches a requested shot; a launch the rules refuse is told to the player. Returns true when it flew.
-bool launchRequested(App& app, GameSession& session, const ScriptedShot& shot);
+bool launchRequested(AppContext& app, GameSession& session, const ScriptedShot& shot);
 
 } // namespace abalike::app

@@ -20,7 +20,7 @@ namespace abalike::app
 
 class ShotTrails;
 
-class App;
+class AppContext;
 
 /// What a layer on the play screen can see and do. The play screen implements it.
 class PlayView
@@ -28,7 +28,7 @@ class PlayView
 public:
     virtual ~PlayView() = default;
 
-    virtual App& app() = 0;
+    virtual AppContext& app() = 0;
     /// Game or learn: what this level shows (the tutorial and the lessons are always learn).
     virtual PlayMode playMode() const = 0;
     /// What the player calls this level: a campaign level's number ("2-6"), else the level's id.

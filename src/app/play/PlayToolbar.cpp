@@ -3,7 +3,10 @@
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
 #include "render/ScreenRegions.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Navigator.hpp"
+#include "shell/PlayerSettings.hpp"
+#include "shell/UiMetrics.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <algorithm>
@@ -55,17 +58,17 @@ const std::vector<PlayToolbar::Button>& PlayToolbar::buttons()
     return list;
 }
 
-std::vector<const PlayToolbar::Button*> PlayToolbar::shown(const App& app)
+std::vector<const PlayToolbar::Button*> PlayToolbar::shown(const AppContext& app)
 {
     // School wording leaves out the integrator tools (I and K), whose very names are the machinery.
     std::vector<const Button*> list;
     for (const Button& button : buttons())
-        if (app.universityWording() || (button.key != sf::Keyboard::I && button.key != sf::Keyboard::K))
+        if (app.settings().universityWording() || (button.key != sf::Keyboard::I && button.key != sf::Keyboard::K))
             list.push_back(&button);
     return list;
 }
 
-std::vector<sf::FloatRect> PlayToolbar::layout(const App& app, sf::Vector2u windowSize, float scale)
+std::vector<sf::FloatRect> PlayToolbar::layout(const AppContext& app, sf::Vector2u windowSize, float scale)
 {
     const float size = kSizePx * scale;
     const float gap = kGapPx * scale;
@@ -82,14 +85,14 @@ float PlayToolbar::bottomPx(float buttonScale)
     return (kMarginPx + kSizePx) * buttonScale;
 }
 
-float PlayToolbar::buttonScale(const App& app)
+float PlayToolbar::buttonScale(const AppContext& app)
 {
-    const float textScale = static_cast<float>(app.settings().textScale);
-    const float windowScale = app.uiScale() / std::max(textScale, 1e-3f);
+    const float textScale = static_cast<float>(app.settings().current().textScale);
+    const float windowScale = app.ui().scale() / std::max(textScale, 1e-3f);
     return windowScale * std::min(textScale, kMaxButtonGrowth);
 }
 
-float PlayToolbar::reservedWidthPx(const App& app, sf::Vector2u windowSize)
+float PlayToolbar::reservedWidthPx(const AppContext& app, sf::Vector2u windowSize)
 {
     const std::vector<sf::FloatRect> rects = layout(app, windowSize, buttonScale(app));
     return rects.empty() ? 0.0f : static_cast<float>(windowSize.x) - rects.front().left;
@@ -97,7 +100,7 @@ float PlayToolbar::reservedWidthPx(const App& app, sf::Vector2u windowSize)
 
 std::optional<std::size_t> PlayToolbar::buttonAt(sf::Vector2f pixel, PlayView& view) const
 {
-    const std::vector<sf::FloatRect> rects = layout(view.app(), view.app().windowSize(), buttonScale(view.app()));
+    const std::vector<sf::FloatRect> rects = layout(view.app(), view.app().ui().windowSize(), buttonScale(view.app()));
     for (std::size_t i = 0; i < rects.size(); ++i)
         if (rects[i].contains(pixel))
             return i;
@@ -116,7 +119,7 @@ bool PlayToolbar::handleEvent(const sf::Event& event, PlayView& view)
             return false;
         m_pressed = buttonAt({static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y)}, view);
         if (m_pressed && shown(view.app())[*m_pressed]->held)
-            view.app().post(keyEvent(shown(view.app())[*m_pressed]->key, true));
+            view.app().navigator().post(keyEvent(shown(view.app())[*m_pressed]->key, true));
         return m_pressed.has_value(); // a click on a button neither aims nor fires the ability
     case sf::Event::MouseButtonReleased:
     {
@@ -125,12 +128,12 @@ bool PlayToolbar::handleEvent(const sf::Event& event, PlayView& view)
         const std::optional<std::size_t> over =
             buttonAt({static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y)}, view);
         if (const Button& pressed = *shown(view.app())[*m_pressed]; pressed.held)
-            view.app().post(keyEvent(pressed.key, false)); // let go anywhere: the key is up again
+            view.app().navigator().post(keyEvent(pressed.key, false)); // let go anywhere: the key is up again
         else if (over == m_pressed)
         {
             const sf::Keyboard::Key key = shown(view.app())[*over]->key;
-            view.app().post(keyEvent(key, true));
-            view.app().post(keyEvent(key, false));
+            view.app().navigator().post(keyEvent(key, true));
+            view.app().navigator().post(keyEvent(key, false));
         }
         m_pressed.reset();
         return true;
@@ -142,11 +145,11 @@ bool PlayToolbar::handleEvent(const sf::Event& event, PlayView& view)
 
 void PlayToolbar::drawScreen(sf::RenderTarget& target, PlayView& view)
 {
-    App& app = view.app();
+    AppContext& app = view.app();
     const float scale = buttonScale(app);
     const std::vector<sf::FloatRect> rects = layout(app, target.getSize(), scale);
     const std::vector<const Button*> visible = shown(app);
-    const sf::Font* font = app.font();
+    const sf::Font* font = app.ui().font();
     const auto textSize = static_cast<unsigned>(std::round(17.0f * scale));
     for (std::size_t i = 0; i < rects.size(); ++i)
     {
@@ -178,8 +181,8 @@ void PlayToolbar::drawScreen(sf::RenderTarget& target, PlayView& view)
     if (m_hover && font != nullptr)
     {
         // The action under the pointer, right-aligned under the row, on a panel so it reads over any sky.
-        const unsigned tipSize = app.textSize(15.0f);
-        const float tipScale = app.uiScale();
+        const unsigned tipSize = app.ui().textSize(15.0f);
+        const float tipScale = app.ui().scale();
         const sf::String tip = utf8(visible[std::min(*m_hover, visible.size() - 1)]->action);
         const sf::Vector2f extent = measureText(*font, tip, tipSize);
         const float pad = 6.0f * tipScale;

@@ -34,15 +34,15 @@ public:
     static const std::vector<Button>& buttons();
     /// Where each button sits in a window of this size at this button scale.
     /// The buttons this run shows (the wording decides on the integrator tools).
-    static std::vector<const Button*> shown(const App& app);
-    static std::vector<sf::FloatRect> layout(const App& app, sf::Vector2u windowSize, float buttonScale);
+    static std::vector<const Button*> shown(const AppContext& app);
+    static std::vector<sf::FloatRect> layout(const AppContext& app, sf::Vector2u windowSize, float buttonScale);
     /// The toolbar's bottom edge in window pixels: panels in the top right start below it.
     static float bottomPx(float buttonScale);
     /// How large the buttons are drawn: with the window and the text scale, but at most 125 % of the window's own
     /// scale, so that at a 200 % text scale the row still fits beside the aim readout (tooltips take the full scale).
-    static float buttonScale(const App& app);
+    static float buttonScale(const AppContext& app);
     /// How much of the top right the toolbar takes, from its left edge to the window's right (pixels).
-    static float reservedWidthPx(const App& app, sf::Vector2u windowSize);
+    static float reservedWidthPx(const AppContext& app, sf::Vector2u windowSize);
 
 private:
     std::optional<std::size_t> buttonAt(sf::Vector2f pixel, PlayView& view) const;

@@ -4,20 +4,23 @@
 #include "screens/EndlessWaitScreen.hpp"
 #include "screens/Navigation.hpp"
 #include "screens/PlayScreen.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Navigator.hpp"
+#include "shell/PlayerProgress.hpp"
+#include "shell/Trace.hpp"
 
 namespace abalike::app
 {
 
-std::unique_ptr<Screen> endlessLevelScreen(App& app)
+std::unique_ptr<Screen> endlessLevelScreen(AppContext& app)
 {
-    EndlessGame& endless = app.endless();
+    EndlessGame& endless = app.progress().endless();
     if (endless.playing())
     {
         // The player left the last castle unfinished (to the title, level select): the run ends as with a loss.
         const EndlessRun::Result run = endless.lost();
         app.trace().write("endless-left", {{"levels_won", run.levelsWon}, {"score", run.score}});
-        app.recordEndless(run.levelsWon, run.score, true);
+        app.progress().recordEndless(run.levelsWon, run.score, true);
     }
     if (std::optional<EndlessLevel> level = endless.nextLevel())
     {
@@ -34,17 +37,17 @@ std::unique_ptr<Screen> endlessLevelScreen(App& app)
     return nullptr;
 }
 
-std::unique_ptr<Screen> nextEndlessScreen(App& app)
+std::unique_ptr<Screen> nextEndlessScreen(AppContext& app)
 {
     if (std::unique_ptr<Screen> level = endlessLevelScreen(app))
         return level;
     return std::make_unique<EndlessWaitScreen>(app);
 }
 
-void playNextEndlessLevel(App& app)
+void playNextEndlessLevel(AppContext& app)
 {
     openTitle(app);
-    app.screens().push(nextEndlessScreen(app));
+    app.navigator().screens().push(nextEndlessScreen(app));
 }
 
 } // namespace abalike::app

@@ -5,7 +5,10 @@
 #include "screens/EndlessNavigation.hpp"
 #include "screens/Navigation.hpp"
 #include "screens/PlayScreen.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Navigator.hpp"
+#include "shell/PlayerProgress.hpp"
+#include "shell/UiMetrics.hpp"
 #include "ui/ProgressCard.hpp"
 
 #include <abalike/level/LevelWriter.hpp>
@@ -29,32 +32,32 @@ void EndlessWaitScreen::handleEvent(const sf::Event& event)
     }
 }
 
-EndlessWaitScreen::EndlessWaitScreen(App& app) : m_app(app)
+EndlessWaitScreen::EndlessWaitScreen(AppContext& app) : m_app(app)
 {
     // Nothing else runs while the player waits: the level in progress gets every core.
-    m_app.endless().hurry(true);
+    m_app.progress().endless().hurry(true);
 }
 
 EndlessWaitScreen::~EndlessWaitScreen()
 {
-    m_app.endless().hurry(false);
+    m_app.progress().endless().hurry(false);
 }
 
 void EndlessWaitScreen::frameUpdate(double frameS)
 {
     m_waitedS += frameS;
-    if (m_leaving || !m_app.endless().problem().empty())
+    if (m_leaving || !m_app.progress().endless().problem().empty())
         return;
     if (std::unique_ptr<Screen> next = endlessLevelScreen(m_app))
     {
         m_leaving = true;
-        m_app.screens().replace(std::move(next));
+        m_app.navigator().screens().replace(std::move(next));
     }
 }
 
 void EndlessWaitScreen::draw(sf::RenderTarget& target)
 {
-    const EndlessGame& endless = m_app.endless();
+    const EndlessGame& endless = m_app.progress().endless();
     const GeneratedLevelQueue::Status status = endless.generation();
     Progress progress;
     progress.title = "Building the next castle";
@@ -73,7 +76,8 @@ void EndlessWaitScreen::draw(sf::RenderTarget& target)
                           formatFixed(m_waitedS, 0) + " s; Esc: title)";
     // The generator does not know how long it will take: the bar fills towards a typical wait and then creeps.
     progress.fraction = static_cast<float>(1.0 - std::exp(-m_waitedS / kTypicalWaitS));
-    drawProgressCard(target, m_app.font(), progress, m_app.textSize(22.0f), m_app.textSize(15.0f), m_app.uiScale());
+    drawProgressCard(target, m_app.ui().font(), progress, m_app.ui().textSize(22.0f), m_app.ui().textSize(15.0f),
+                     m_app.ui().scale());
 }
 
 } // namespace abalike::app

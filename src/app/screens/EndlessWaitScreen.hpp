@@ -5,7 +5,7 @@
 namespace abalike::app
 {
 
-class App;
+class AppContext;
 
 /// The card shown while the endless run's next level is still being generated (every shipped level played, none
 /// generated ahead yet): what the worker is doing, then the level as soon as it is ready. Esc goes to the title.
@@ -14,7 +14,7 @@ class EndlessWaitScreen : public Screen
 public:
     static constexpr std::string_view kName = "endless-wait";
 
-    explicit EndlessWaitScreen(App& app);
+    explicit EndlessWaitScreen(AppContext& app);
     ~EndlessWaitScreen() override;
 
     std::string_view name() const override { return kName; }
@@ -23,7 +23,7 @@ public:
     void draw(sf::RenderTarget& target) override;
 
 private:
-    App& m_app;
+    AppContext& m_app;
     double m_waitedS = 0.0;
     bool m_leaving = false;
 };

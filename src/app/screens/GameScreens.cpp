@@ -5,7 +5,9 @@
 #include "screens/HelpScreen.hpp"
 #include "screens/PlayScreen.hpp"
 #include "screens/TitleScreen.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/PlayerProgress.hpp"
+#include "shell/RunControl.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -36,10 +38,10 @@ bool sameLevelFile(const std::string& campaignPath, const std::string& givenPath
 
 } // namespace
 
-std::unique_ptr<Screen> openingScreen(App& app)
+std::unique_ptr<Screen> openingScreen(AppContext& app)
 {
-    const AppOptions& options = app.options();
-    const Campaign& campaign = app.campaign();
+    const AppOptions& options = app.run().options();
+    const Campaign& campaign = app.progress().campaign();
     if (options.endless)
         return nextEndlessScreen(app);
     if (options.level)
@@ -65,7 +67,7 @@ void useGameScreens(AppOptions& options)
 {
     if (!options.firstScreen)
         options.firstScreen = openingScreen;
-    options.helpScreen = [](App& app) -> std::unique_ptr<Screen>
+    options.helpScreen = [](AppContext& app) -> std::unique_ptr<Screen>
     {
         return std::make_unique<HelpScreen>(app);
     };

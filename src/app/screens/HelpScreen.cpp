@@ -3,7 +3,10 @@
 #include "input/Controls.hpp"
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Navigator.hpp"
+#include "shell/PlayerSettings.hpp"
+#include "shell/UiMetrics.hpp"
 #include "ui/Card.hpp"
 
 #include <algorithm>
@@ -65,25 +68,25 @@ void HelpScreen::handleEvent(const sf::Event& event)
         default:
             break;
         }
-        m_app.screens().pop();
+        m_app.navigator().screens().pop();
     }
     else if (event.type == sf::Event::MouseButtonReleased)
     {
         if (m_page + 1 < m_pages)
             turnPage(+1);
         else
-            m_app.screens().pop();
+            m_app.navigator().screens().pop();
     }
 }
 
 std::vector<std::vector<HelpScreen::Line>> HelpScreen::paginate(const sf::Font& font, float usableHeight,
                                                                 const std::vector<float>& rowHeights) const
 {
-    const float headHeight = font.getLineSpacing(m_app.textSize(kHeadNominal)) * 1.3f;
+    const float headHeight = font.getLineSpacing(m_app.ui().textSize(kHeadNominal)) * 1.3f;
     // School wording leaves out the integrator tools, as the toolbar does.
     std::vector<ControlBinding> table;
     for (const ControlBinding& row : controlTable())
-        if (m_app.universityWording() ||
+        if (m_app.settings().universityWording() ||
             (row.action.find("RK4") == std::string::npos && row.action.find("Integrator") == std::string::npos))
             table.push_back(row);
     std::vector<std::vector<Line>> pages(1);
@@ -113,19 +116,19 @@ std::vector<std::vector<HelpScreen::Line>> HelpScreen::paginate(const sf::Font& 
 void HelpScreen::draw(sf::RenderTarget& target)
 {
     drawScrim(target);
-    const sf::Font* font = m_app.font();
+    const sf::Font* font = m_app.ui().font();
     if (font == nullptr)
         return;
-    const float scale = m_app.uiScale();
+    const float scale = m_app.ui().scale();
     const sf::Vector2f window(target.getSize());
-    const unsigned titleSize = m_app.textSize(kTitleNominal);
-    const unsigned headSize = m_app.textSize(kHeadNominal);
-    const unsigned rowSize = m_app.textSize(kRowNominal);
+    const unsigned titleSize = m_app.ui().textSize(kTitleNominal);
+    const unsigned headSize = m_app.ui().textSize(kHeadNominal);
+    const unsigned rowSize = m_app.ui().textSize(kRowNominal);
     const float rowHeight = font->getLineSpacing(rowSize);
     // School wording leaves out the integrator tools, as the toolbar does.
     std::vector<ControlBinding> table;
     for (const ControlBinding& row : controlTable())
-        if (m_app.universityWording() ||
+        if (m_app.settings().universityWording() ||
             (row.action.find("RK4") == std::string::npos && row.action.find("Integrator") == std::string::npos))
             table.push_back(row);
 

@@ -9,7 +9,7 @@
 namespace abalike::app
 {
 
-class App;
+class AppContext;
 
 /// The help overlay (F1 or ? anywhere): every control, by keyboard, mouse and gamepad, from the one controls table.
 /// It lays the table out as columns when they fit the window and as stacked rows when they do not (large text
@@ -20,7 +20,7 @@ class HelpScreen : public Screen
 public:
     static constexpr std::string_view kName = kHelpScreenName;
 
-    explicit HelpScreen(App& app) : m_app(app) {}
+    explicit HelpScreen(AppContext& app) : m_app(app) {}
 
     std::string_view name() const override { return kName; }
     bool isOverlay() const override { return true; }
@@ -40,7 +40,7 @@ private:
                                             const std::vector<float>& rowHeights) const;
     void turnPage(int delta);
 
-    App& m_app;
+    AppContext& m_app;
     int m_page = 0;
     int m_pages = 1; ///< as last drawn
 };

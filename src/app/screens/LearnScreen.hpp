@@ -6,7 +6,7 @@
 namespace abalike::app
 {
 
-class App;
+class AppContext;
 
 /// The title's Learn: the campaign with its physics shown (learn mode), the tutorial and the lessons. Arrows and
 /// Enter, or hover and click; Esc goes back.
@@ -15,7 +15,7 @@ class LearnScreen : public Screen
 public:
     static constexpr std::string_view kName = "learn";
 
-    explicit LearnScreen(App& app);
+    explicit LearnScreen(AppContext& app);
 
     std::string_view name() const override { return kName; }
     void handleEvent(const sf::Event& event) override;
@@ -24,7 +24,7 @@ public:
 private:
     void activate(const std::string& id);
 
-    App& m_app;
+    AppContext& m_app;
     MenuList m_menu;
 };
 

@@ -7,7 +7,10 @@
 #include "render/Palette.hpp"
 #include "render/TextFormat.hpp"
 #include "screens/Navigation.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Navigator.hpp"
+#include "shell/PlayerProgress.hpp"
+#include "shell/UiMetrics.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <algorithm>
@@ -30,11 +33,11 @@ const std::string& filledConcept(const LevelDef& level)
 }
 } // namespace
 
-LevelSelectScreen::LevelSelectScreen(App& app) : m_app(app), m_selected(continueLevel(app)) {}
+LevelSelectScreen::LevelSelectScreen(AppContext& app) : m_app(app), m_selected(continueLevel(app)) {}
 
 std::pair<std::size_t, std::size_t> LevelSelectScreen::place(std::size_t index) const
 {
-    const Campaign& campaign = m_app.campaign();
+    const Campaign& campaign = m_app.progress().campaign();
     const std::size_t episode = campaign.levels[index].episode;
     std::size_t first = index;
     while (first > 0 && campaign.levels[first - 1].episode == episode)
@@ -44,7 +47,7 @@ std::pair<std::size_t, std::size_t> LevelSelectScreen::place(std::size_t index) 
 
 void LevelSelectScreen::move(int dx, int dy)
 {
-    const Campaign& campaign = m_app.campaign();
+    const Campaign& campaign = m_app.progress().campaign();
     if (campaign.levels.empty())
         return;
     const auto [episode, position] = place(m_selected);
@@ -70,7 +73,7 @@ void LevelSelectScreen::move(int dx, int dy)
 void LevelSelectScreen::play(std::size_t index)
 {
     m_selected = index;
-    if (m_app.isUnlocked(m_app.campaign().levels[index].key))
+    if (m_app.progress().isUnlocked(m_app.progress().campaign().levels[index].key))
         playCampaignLevel(m_app, index);
 }
 
@@ -91,7 +94,7 @@ void LevelSelectScreen::handleEvent(const sf::Event& event)
         {
         case sf::Keyboard::Escape:
         case sf::Keyboard::Backspace:
-            m_app.screens().pop();
+            m_app.navigator().screens().pop();
             break;
         case sf::Keyboard::Left:
         case sf::Keyboard::A:
@@ -111,14 +114,14 @@ void LevelSelectScreen::handleEvent(const sf::Event& event)
             break;
         case sf::Keyboard::Enter:
         case sf::Keyboard::Space:
-            if (!m_app.campaign().levels.empty())
+            if (!m_app.progress().campaign().levels.empty())
                 play(m_selected);
             break;
         case sf::Keyboard::E:
             // The level editor on the selected level (issue 12), whether or not it is unlocked.
-            if (!m_app.campaign().levels.empty())
+            if (!m_app.progress().campaign().levels.empty())
             {
-                const CampaignLevel& level = m_app.campaign().levels[m_selected];
+                const CampaignLevel& level = m_app.progress().campaign().levels[m_selected];
                 openEditor(m_app, EditorSource{level.level, level.path, {}, false});
             }
             break;
@@ -150,19 +153,19 @@ void LevelSelectScreen::handleEvent(const sf::Event& event)
 
 void LevelSelectScreen::draw(sf::RenderTarget& target)
 {
-    const Campaign& campaign = m_app.campaign();
-    const sf::Font* font = m_app.font();
-    const float scale = m_app.uiScale();
+    const Campaign& campaign = m_app.progress().campaign();
+    const sf::Font* font = m_app.ui().font();
+    const float scale = m_app.ui().scale();
     const sf::Vector2f window(target.getSize());
     Mesh sky;
     sky.addGradientRect({0.0f, 0.0f}, window, palette::kMenuTop, palette::kMenuBottom);
     sky.draw(target);
 
-    const unsigned titleSize = m_app.textSize(34.0f);
-    const unsigned episodeSize = m_app.textSize(18.0f);
-    const unsigned tileSize = m_app.textSize(22.0f);
-    const unsigned smallSize = m_app.textSize(14.0f);
-    const unsigned detailSize = m_app.textSize(18.0f);
+    const unsigned titleSize = m_app.ui().textSize(34.0f);
+    const unsigned episodeSize = m_app.ui().textSize(18.0f);
+    const unsigned tileSize = m_app.ui().textSize(22.0f);
+    const unsigned smallSize = m_app.ui().textSize(14.0f);
+    const unsigned detailSize = m_app.ui().textSize(18.0f);
     const float margin = 24.0f * scale;
     float y = margin;
     if (font != nullptr)
@@ -216,7 +219,7 @@ void LevelSelectScreen::draw(sf::RenderTarget& target)
     {
         const sf::FloatRect& tile = m_tiles[i];
         const std::string& id = campaign.levels[i].key;
-        const bool unlocked = m_app.isUnlocked(id);
+        const bool unlocked = m_app.progress().isUnlocked(id);
         const bool selected = i == m_selected;
         sf::RectangleShape box({tile.width, tile.height});
         box.setPosition(tile.left, tile.top);
@@ -225,8 +228,8 @@ void LevelSelectScreen::draw(sf::RenderTarget& target)
         box.setOutlineColor(selected ? palette::kStar : palette::kButtonOutline);
         target.draw(box);
 
-        const auto record = m_app.progress().levels.find(id);
-        const int stars = record == m_app.progress().levels.end() ? 0 : record->second.stars;
+        const auto record = m_app.progress().current().levels.find(id);
+        const int stars = record == m_app.progress().current().levels.end() ? 0 : record->second.stars;
         const float starRadius = std::min(9.0f * scale, 0.1f * tile.width);
         const float starsY = tile.top + tile.height - starRadius - 6.0f * scale;
         for (int s = 0; s < 3 && unlocked; ++s)
@@ -253,11 +256,11 @@ void LevelSelectScreen::draw(sf::RenderTarget& target)
     if (font == nullptr || campaign.levels.empty())
         return;
     const CampaignLevel& chosen = campaign.levels[m_selected];
-    const bool unlocked = m_app.isUnlocked(chosen.key);
+    const bool unlocked = m_app.progress().isUnlocked(chosen.key);
     float detailY = window.y - margin - detailHeight;
-    const auto record = m_app.progress().levels.find(chosen.key);
+    const auto record = m_app.progress().current().levels.find(chosen.key);
     std::string heading = chosen.number + "  " + chosen.level.title;
-    if (record != m_app.progress().levels.end())
+    if (record != m_app.progress().current().levels.end())
         heading += "   best " + formatPoints(record->second.bestScore);
     else if (!unlocked)
         heading += "   (win the level before it to unlock)";

@@ -11,7 +11,7 @@
 namespace abalike::app
 {
 
-class App;
+class AppContext;
 
 /// Episodes and their levels as tiles: stars and best score from the saved progress, locked levels dimmed, and
 /// the selected level's title and the concept it teaches. Arrows and Enter, or hover and click; Esc goes back.
@@ -20,7 +20,7 @@ class LevelSelectScreen : public Screen
 public:
     static constexpr std::string_view kName = "level-select";
 
-    explicit LevelSelectScreen(App& app);
+    explicit LevelSelectScreen(AppContext& app);
 
     std::string_view name() const override { return kName; }
     void handleEvent(const sf::Event& event) override;
@@ -37,7 +37,7 @@ private:
     /// (episode, position in episode) of a campaign index.
     std::pair<std::size_t, std::size_t> place(std::size_t index) const;
 
-    App& m_app;
+    AppContext& m_app;
     std::size_t m_selected = 0;
     std::vector<sf::FloatRect> m_tiles; ///< where each level's tile was drawn, by campaign index
     std::optional<std::size_t> m_pressed;

@@ -3,44 +3,46 @@
 #include "screens/LevelSelectScreen.hpp"
 #include "screens/PlayScreen.hpp"
 #include "screens/TitleScreen.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Navigator.hpp"
+#include "shell/PlayerProgress.hpp"
 
 namespace abalike::app
 {
 
-void openTitle(App& app)
+void openTitle(AppContext& app)
 {
-    app.screens().clear();
-    app.screens().push(std::make_unique<TitleScreen>(app));
+    app.navigator().screens().clear();
+    app.navigator().screens().push(std::make_unique<TitleScreen>(app));
 }
 
-void openLevelSelect(App& app)
+void openLevelSelect(AppContext& app)
 {
     openTitle(app);
-    app.screens().push(std::make_unique<LevelSelectScreen>(app));
+    app.navigator().screens().push(std::make_unique<LevelSelectScreen>(app));
 }
 
-std::size_t continueLevel(const App& app)
+std::size_t continueLevel(const AppContext& app)
 {
-    const Campaign& campaign = app.campaign();
+    const Campaign& campaign = app.progress().campaign();
     std::size_t lastUnlocked = 0;
     for (std::size_t i = 0; i < campaign.levels.size(); ++i)
     {
         const std::string& id = campaign.levels[i].key;
-        if (!app.isUnlocked(id))
+        if (!app.progress().isUnlocked(id))
             continue;
         lastUnlocked = i;
-        const auto record = app.progress().levels.find(id);
-        if (record == app.progress().levels.end() || record->second.stars == 0)
+        const auto record = app.progress().current().levels.find(id);
+        if (record == app.progress().current().levels.end() || record->second.stars == 0)
             return i;
     }
     return lastUnlocked;
 }
 
-void playCampaignLevel(App& app, std::size_t index)
+void playCampaignLevel(AppContext& app, std::size_t index)
 {
-    const CampaignLevel& level = app.campaign().levels.at(index);
-    app.screens().push(std::make_unique<PlayScreen>(app, PlaySource{level.level, level.path, index}));
+    const CampaignLevel& level = app.progress().campaign().levels.at(index);
+    app.navigator().screens().push(std::make_unique<PlayScreen>(app, PlaySource{level.level, level.path, index}));
 }
 
 } // namespace abalike::app

@@ -6,7 +6,7 @@
 namespace abalike::app
 {
 
-class App;
+class AppContext;
 class PlayScreen;
 
 /// The pause menu over a level (Esc or P): resume, restart, settings, controls, level select, quit. The level stands
@@ -16,7 +16,7 @@ class PauseScreen : public Screen
 public:
     static constexpr std::string_view kName = "pause";
 
-    PauseScreen(App& app, PlayScreen& play);
+    PauseScreen(AppContext& app, PlayScreen& play);
 
     std::string_view name() const override { return kName; }
     bool isOverlay() const override { return true; }
@@ -28,7 +28,7 @@ private:
     /// The pause menu, or the question whether to quit the game from a running level.
     void showMenu(bool confirmQuit);
 
-    App& m_app;
+    AppContext& m_app;
     PlayScreen& m_play;
     MenuList m_menu;
     bool m_confirmingQuit = false;

@@ -8,8 +8,15 @@
 #include "screens/EndlessNavigation.hpp"
 #include "screens/PauseScreen.hpp"
 #include "screens/ResultsScreen.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Navigator.hpp"
+#include "shell/Notices.hpp"
+#include "shell/PlayerProgress.hpp"
+#include "shell/PlayerSettings.hpp"
+#include "shell/RunControl.hpp"
 #include "shell/SessionJson.hpp"
+#include "shell/Trace.hpp"
+#include "shell/UiMetrics.hpp"
 #include "ui/ProgressCard.hpp"
 
 #include <abalike/level/LevelIO.hpp>
@@ -32,9 +39,9 @@ sf::Vector2f toVector(const Vec2& p)
 }
 } // namespace
 
-PlayScreen::PlayScreen(App& app, PlaySource source)
-    : m_app(app), m_source(std::move(source)), m_script(app.takeScriptedShots()), m_overlay(app.font()),
-      m_hud(app.font()), m_reloadNotice(app.font()), m_layers(makePlayLayers(app))
+PlayScreen::PlayScreen(AppContext& app, PlaySource source)
+    : m_app(app), m_source(std::move(source)), m_script(app.run().takeScriptedShots()), m_overlay(app.ui().font()),
+      m_hud(app.ui().font()), m_reloadNotice(app.ui().font()), m_layers(makePlayLayers(app))
 {
     // On top of the shared layers: the toolbar sees clicks first, so a click on a button neither aims nor fires an
     // ability. (The editor's play mode has its own panels instead.)
@@ -50,7 +57,7 @@ PlayScreen::~PlayScreen() = default;
 void PlayScreen::startSession(bool withOpening)
 {
     m_session = std::make_unique<GameSession>(m_source.level, Catalog::builtin());
-    m_rig.reset(cameraFocus(), m_app.windowSize());
+    m_rig.reset(cameraFocus(), m_app.ui().windowSize());
     // A level wider than the aiming view opens with a pan over it to the slingshot (restarts do not).
     if (withOpening && m_rig.startOpening(cameraFocus()))
         m_app.trace().write("camera-opening", {{"seconds", CameraRig::kOpeningS}});
@@ -75,7 +82,7 @@ void PlayScreen::startSession(bool withOpening)
 void PlayScreen::startSettling()
 {
     // A scripted run settles in its first physics step as it always has, so its frames are the same on every run.
-    if (m_app.scripted())
+    if (m_app.run().scripted())
         return;
     // The settle step is the world's first step; on a worker thread, so that a large level (seconds for the
     // 1 000-block wall) shows its progress instead of a window that does not answer. Until it ends, nothing else
@@ -99,7 +106,7 @@ void PlayScreen::finishSettling(bool wait)
 void PlayScreen::restartLevel()
 {
     m_session->restart();
-    m_rig.reset(cameraFocus(), m_app.windowSize());
+    m_rig.reset(cameraFocus(), m_app.ui().windowSize());
     m_finishHandled = false;
     m_destroyedTraced = 0;
     m_frozen = false;
@@ -113,7 +120,7 @@ void PlayScreen::restartLevel()
 
 std::optional<std::size_t> PlayScreen::nextLevelIndex() const
 {
-    if (!m_source.campaignIndex || *m_source.campaignIndex + 1 >= m_app.campaign().levels.size())
+    if (!m_source.campaignIndex || *m_source.campaignIndex + 1 >= m_app.progress().campaign().levels.size())
         return std::nullopt;
     return *m_source.campaignIndex + 1;
 }
@@ -123,12 +130,13 @@ std::string PlayScreen::levelLabel() const
     // A generated level's title says it all: its kind and the seed that replays it ("Castle 4711").
     if (m_source.endless || (!m_source.campaignIndex && m_source.level.id.starts_with("generated-")))
         return "";
-    return m_source.campaignIndex ? m_app.campaign().levels[*m_source.campaignIndex].number : m_source.level.id;
+    return m_source.campaignIndex ? m_app.progress().campaign().levels[*m_source.campaignIndex].number
+                                  : m_source.level.id;
 }
 
 PlayMode PlayScreen::playMode() const
 {
-    return m_source.mode.value_or(m_app.mode());
+    return m_source.mode.value_or(m_app.settings().mode());
 }
 
 void PlayScreen::goToNextLevel()
@@ -142,8 +150,8 @@ void PlayScreen::goToNextLevel()
     const std::optional<std::size_t> next = nextLevelIndex();
     if (!next || m_session->phase() != Phase::Won)
         return;
-    const CampaignLevel& level = m_app.campaign().levels[*next];
-    m_app.screens().replace(
+    const CampaignLevel& level = m_app.progress().campaign().levels[*next];
+    m_app.navigator().screens().replace(
         std::make_unique<PlayScreen>(m_app, PlaySource{level.level, level.path, next, m_source.mode}));
 }
 
@@ -236,7 +244,7 @@ void PlayScreen::handleEvent(const sf::Event& event)
     const bool click = event.type == sf::Event::MouseButtonPressed && event.mouseButton.button == sf::Mouse::Left;
     const bool key = event.type == sf::Event::KeyPressed &&
                      (event.key.code == sf::Keyboard::Space || event.key.code == sf::Keyboard::Enter) &&
-                     !m_app.input().lastPressRepeated();
+                     !m_app.run().input().lastPressRepeated();
     const bool ability = (click || key) && m_session->canActivateAbility() && !m_scriptAbilityAtS;
     if (ability)
         m_abilityRequested = true;
@@ -264,7 +272,7 @@ void PlayScreen::handleKey(const sf::Event::KeyEvent& key)
     {
     case sf::Keyboard::Escape:
     case sf::Keyboard::P:
-        m_app.screens().push(std::make_unique<PauseScreen>(m_app, *this));
+        m_app.navigator().screens().push(std::make_unique<PauseScreen>(m_app, *this));
         break;
     case sf::Keyboard::R:
         restartLevel();
@@ -342,7 +350,7 @@ void PlayScreen::physicsStep()
     if (!m_session->notice().empty())
     {
         // The session reset itself (a body escaped to NaN): tell the player.
-        m_app.notify(m_session->notice());
+        m_app.notices().notify(m_session->notice());
         m_session->clearNotice();
     }
     traceDefeats();
@@ -379,7 +387,7 @@ void PlayScreen::fireScriptedShot()
     catch (const LaunchError& error)
     {
         std::cerr << "abalike: shot " << m_scriptShotNumber << ": " << error.what() << "\n";
-        m_app.quit(2);
+        m_app.navigator().quit(2);
         return;
     }
     m_scriptAbilityAtS = shot.abilityAtS;
@@ -398,23 +406,23 @@ void PlayScreen::finishIfDone()
                                      {"stars", session.stars()}});
     // Only campaign levels count towards progress; a scene from a file or the editor is not the player's record.
     if (m_source.campaignIndex)
-        m_app.recordResult(m_app.campaign().levels[*m_source.campaignIndex].key, session.score().total(),
-                           session.stars());
+        m_app.progress().recordResult(m_app.progress().campaign().levels[*m_source.campaignIndex].key,
+                                      session.score().total(), session.stars());
     if (m_source.endless)
     {
-        EndlessGame& endless = m_app.endless();
+        EndlessGame& endless = m_app.progress().endless();
         if (session.phase() == Phase::Won)
         {
             endless.won(session.score().total());
-            m_app.recordEndless(endless.run().levelsWon(), endless.run().score(), false);
+            m_app.progress().recordEndless(endless.run().levelsWon(), endless.run().score(), false);
         }
         else
         {
             const EndlessRun::Result run = endless.lost();
-            m_app.recordEndless(run.levelsWon, run.score, true);
+            m_app.progress().recordEndless(run.levelsWon, run.score, true);
         }
     }
-    m_app.screens().push(std::make_unique<ResultsScreen>(m_app, *this));
+    m_app.navigator().screens().push(std::make_unique<ResultsScreen>(m_app, *this));
 }
 
 void PlayScreen::syncScriptedAim()
@@ -465,7 +473,7 @@ void PlayScreen::refreshPreview()
         // A preview the core cannot compute is not worth stopping the game for.
         m_preview.reset();
     }
-    m_app.frameTimes().previewS += static_cast<double>(clock.getElapsedTime().asMicroseconds()) * 1e-6;
+    m_app.run().frameTimes().previewS += static_cast<double>(clock.getElapsedTime().asMicroseconds()) * 1e-6;
 }
 
 void PlayScreen::frameUpdate(double frameS)
@@ -486,15 +494,15 @@ CameraFocus PlayScreen::cameraFocus() const
 {
     CameraFocus focus = cameraFocusOf(*m_session);
     // The teaching overlay's panels reach down about 40 % of the window: keep the flight below them.
-    if (m_app.settings().teachingOverlay)
+    if (m_app.settings().current().teachingOverlay)
         focus.topReserved = kTeachingTopReserved;
     // At large text the keys and the hint at the bottom reach above the ground line's usual place: the ground goes
     // above them, so that they cover neither the slingshot nor the birds waiting by it.
-    const sf::Vector2u size = m_app.windowSize();
+    const sf::Vector2u size = m_app.ui().windowSize();
     if (size.y > 0)
     {
         const float text =
-            m_hud.bottomTextHeight(size, m_session->level(), static_cast<float>(m_app.settings().textScale));
+            m_hud.bottomTextHeight(size, m_session->level(), static_cast<float>(m_app.settings().current().textScale));
         const float lifted = (text + 4.0f * hudScale(size)) / static_cast<float>(size.y);
         focus.groundFromBottom = std::clamp(lifted, camera_limits::kGroundFromBottom, kMostGroundFromBottom);
     }
@@ -515,10 +523,11 @@ void PlayScreen::draw(sf::RenderTarget& target)
     }
     drawPlay(target, *this, m_world, m_overlay, m_hud, m_aim.pullOffset(), m_aim.dragging(), m_layers);
     if (!m_reloadErrors.empty())
-        m_reloadNotice.draw(target, target.getSize(), m_reloadErrors, static_cast<float>(m_app.settings().textScale));
+        m_reloadNotice.draw(target, target.getSize(), m_reloadErrors,
+                            static_cast<float>(m_app.settings().current().textScale));
     else
-        m_reloadNotice.draw(target, target.getSize(), m_restFindings, static_cast<float>(m_app.settings().textScale),
-                            ReloadNotice::kDoesNotStand);
+        m_reloadNotice.draw(target, target.getSize(), m_restFindings,
+                            static_cast<float>(m_app.settings().current().textScale), ReloadNotice::kDoesNotStand);
 }
 
 void PlayScreen::drawSettleProgress(sf::RenderTarget& target) const
@@ -533,7 +542,8 @@ void PlayScreen::drawSettleProgress(sf::RenderTarget& target) const
                       std::to_string(std::min(done + 1, planned)) + " of " + std::to_string(planned) +
                       ") so that they stand from the first frame";
     progress.fraction = static_cast<float>(done) / static_cast<float>(planned);
-    drawProgressCard(target, m_app.font(), progress, m_app.textSize(22.0f), m_app.textSize(15.0f), m_app.uiScale());
+    drawProgressCard(target, m_app.ui().font(), progress, m_app.ui().textSize(22.0f), m_app.ui().textSize(15.0f),
+                     m_app.ui().scale());
 }
 
 } // namespace abalike::app

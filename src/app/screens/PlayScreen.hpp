@@ -29,7 +29,7 @@
 namespace abalike::app
 {
 
-class App;
+class AppContext;
 
 /// The level a play screen plays and where it came from.
 struct PlaySource
@@ -48,7 +48,7 @@ class PlayScreen : public Screen, public PlayView
 public:
     static constexpr std::string_view kName = "play";
 
-    PlayScreen(App& app, PlaySource source);
+    PlayScreen(AppContext& app, PlaySource source);
     ~PlayScreen() override;
 
     std::string_view name() const override { return kName; }
@@ -71,7 +71,7 @@ public:
     // PlayView
     void finishBackgroundWork() override;
     bool changesWhileCovered() const override { return settling(); }
-    App& app() override { return m_app; }
+    AppContext& app() override { return m_app; }
     PlayMode playMode() const override;
     std::string levelLabel() const override;
     const GameSession& session() const override { return *m_session; }
@@ -132,7 +132,7 @@ private:
     /// Live reload: a saved edit of the level file restarts the level; an invalid one keeps the last good version.
     void pollLevelFile();
 
-    App& m_app;
+    AppContext& m_app;
     PlaySource m_source;
     std::unique_ptr<GameSession> m_session;
     int m_generation = 0;

@@ -4,7 +4,11 @@
 #include "render/TextFormat.hpp"
 #include "screens/Navigation.hpp"
 #include "screens/PlayScreen.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Navigator.hpp"
+#include "shell/PlayerProgress.hpp"
+#include "shell/RunControl.hpp"
+#include "shell/UiMetrics.hpp"
 
 namespace abalike::app
 {
@@ -18,10 +22,10 @@ std::string castles(int n)
 
 /// The endless run's lines on the card: where the run stands (or what it achieved), the bests, and how to play this
 /// level again.
-std::vector<std::string> endlessNotes(App& app, const PlayScreen& play, bool won)
+std::vector<std::string> endlessNotes(AppContext& app, const PlayScreen& play, bool won)
 {
-    const EndlessGame& endless = app.endless();
-    const EndlessRecord& best = app.progress().endless;
+    const EndlessGame& endless = app.progress().endless();
+    const EndlessRecord& best = app.progress().current().endless;
     std::vector<std::string> notes;
     if (won)
         notes.push_back("Run: " + castles(endless.run().levelsWon()) + " won, " + formatPoints(endless.run().score()) +
@@ -35,7 +39,7 @@ std::vector<std::string> endlessNotes(App& app, const PlayScreen& play, bool won
 }
 } // namespace
 
-ResultsScreen::ResultsScreen(App& app, PlayScreen& play) : m_app(app), m_play(play), m_panel(app.font())
+ResultsScreen::ResultsScreen(AppContext& app, PlayScreen& play) : m_app(app), m_play(play), m_panel(app.ui().font())
 {
     const bool won = play.session().phase() == Phase::Won;
     std::vector<MenuItem> items;
@@ -51,11 +55,11 @@ ResultsScreen::ResultsScreen(App& app, PlayScreen& play) : m_app(app), m_play(pl
         if (won && play.nextLevelIndex().has_value())
             items.push_back({"next", "Next level", true});
         items.push_back({"retry", "Retry", true});
-        items.push_back({"levels", "Level select", !app.campaign().levels.empty()});
+        items.push_back({"levels", "Level select", !app.progress().campaign().levels.empty()});
     }
     m_menu.setItems(std::move(items));
     for (int key = 0; key < sf::Keyboard::KeyCount; ++key)
-        m_heldAtOpen[static_cast<std::size_t>(key)] = app.input().keyDown(static_cast<sf::Keyboard::Key>(key));
+        m_heldAtOpen[static_cast<std::size_t>(key)] = app.run().input().keyDown(static_cast<sf::Keyboard::Key>(key));
 }
 
 void ResultsScreen::handleEvent(const sf::Event& event)
@@ -109,25 +113,25 @@ void ResultsScreen::activate(const std::string& id)
     if (id == "retry")
     {
         m_play.restartLevel();
-        m_app.screens().pop();
+        m_app.navigator().screens().pop();
     }
     else if (id == "next" && m_play.nextLevelIndex() && m_play.session().phase() == Phase::Won)
     {
-        m_app.screens().pop();
+        m_app.navigator().screens().pop();
         m_play.goToNextLevel();
     }
-    else if (id == "levels" && !m_app.campaign().levels.empty())
+    else if (id == "levels" && !m_app.progress().campaign().levels.empty())
         openLevelSelect(m_app);
 }
 
 void ResultsScreen::draw(sf::RenderTarget& target)
 {
-    const float scale = m_app.uiScale();
-    const unsigned itemSize = m_app.textSize(20.0f);
-    const float lineHeight = m_app.font() != nullptr ? m_app.font()->getLineSpacing(itemSize) : 20.0f;
+    const float scale = m_app.ui().scale();
+    const unsigned itemSize = m_app.ui().textSize(20.0f);
+    const float lineHeight = m_app.ui().font() != nullptr ? m_app.ui().font()->getLineSpacing(itemSize) : 20.0f;
     const float menuHeight = static_cast<float>(m_menu.items().size()) * (lineHeight + 22.0f * scale) + 12.0f * scale;
     const sf::FloatRect card = m_panel.draw(target, target.getSize(), m_play.session(), scale, menuHeight, m_notes);
-    m_menu.draw(target, m_app.font(), card.left + 0.5f * card.width, card.top + card.height + 12.0f * scale,
+    m_menu.draw(target, m_app.ui().font(), card.left + 0.5f * card.width, card.top + card.height + 12.0f * scale,
                 std::min(card.width, 300.0f * scale), itemSize, scale);
 }
 

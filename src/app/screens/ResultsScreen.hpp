@@ -12,7 +12,7 @@
 namespace abalike::app
 {
 
-class App;
+class AppContext;
 class PlayScreen;
 
 /// The end-of-level card over the finished level: won or lost, the score breakdown and stars, then retry, next
@@ -23,7 +23,7 @@ class ResultsScreen : public Screen
 public:
     static constexpr std::string_view kName = "results";
 
-    ResultsScreen(App& app, PlayScreen& play);
+    ResultsScreen(AppContext& app, PlayScreen& play);
 
     std::string_view name() const override { return kName; }
     bool isOverlay() const override { return true; }
@@ -36,7 +36,7 @@ public:
 private:
     void activate(const std::string& id);
 
-    App& m_app;
+    AppContext& m_app;
     PlayScreen& m_play;
     ResultsPanel m_panel;
     MenuList m_menu;

@@ -2,7 +2,11 @@
 
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Navigator.hpp"
+#include "shell/Notices.hpp"
+#include "shell/PlayerSettings.hpp"
+#include "shell/UiMetrics.hpp"
 #include "ui/Card.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
@@ -91,19 +95,19 @@ const std::vector<std::string>& SettingsScreen::rowIds()
 
 std::string SettingsScreen::valueText(const std::string& id) const
 {
-    const Settings& s = m_app.settings();
+    const Settings& s = m_app.settings().current();
     if (id == "effects")
         return percent(s.effectsVolume);
     if (id == "mute")
         return s.mute ? "muted" : "on";
     if (id == "size")
     {
-        if (m_app.sizeFromCommandLine())
+        if (m_app.settings().sizeFromCommandLine())
             return "set by --size";
         return std::to_string(s.windowWidth) + " \u00D7 " + std::to_string(s.windowHeight);
     }
     if (id == "fullscreen")
-        return m_app.sizeFromCommandLine() ? "set by --size" : onOff(s.fullscreen);
+        return m_app.settings().sizeFromCommandLine() ? "set by --size" : onOff(s.fullscreen);
     if (id == "text")
         return percent(s.textScale);
     if (id == "palette")
@@ -121,8 +125,8 @@ std::string SettingsScreen::valueText(const std::string& id) const
     if (id == "preview")
     {
         // Each mode keeps its own preview: the row sets the one of the mode the player is in.
-        const PreviewMode preview = s.previewFor(m_app.mode());
-        const std::string mode = m_app.mode() == PlayMode::Game ? " (in Play)" : " (in Learn)";
+        const PreviewMode preview = s.previewFor(m_app.settings().mode());
+        const std::string mode = m_app.settings().mode() == PlayMode::Game ? " (in Play)" : " (in Learn)";
         return (preview == PreviewMode::Full    ? "full path"
                 : preview == PreviewMode::Short ? "first dots"
                                                 : "off") +
@@ -133,7 +137,7 @@ std::string SettingsScreen::valueText(const std::string& id) const
 
 void SettingsScreen::change(const std::string& id, int direction)
 {
-    Settings s = m_app.settings();
+    Settings s = m_app.settings().current();
     const auto volume = [direction](double v)
     {
         return std::clamp(std::round(v * 10.0) + direction, 0.0, 10.0) / 10.0;
@@ -144,9 +148,9 @@ void SettingsScreen::change(const std::string& id, int direction)
         s.mute = !s.mute;
     else if (id == "size" || id == "fullscreen")
     {
-        if (m_app.sizeFromCommandLine())
+        if (m_app.settings().sizeFromCommandLine())
         {
-            m_app.notify("The window is set by --size on the command line for this run.");
+            m_app.notices().notify("The window is set by --size on the command line for this run.");
             return;
         }
         if (id == "fullscreen")
@@ -184,12 +188,12 @@ void SettingsScreen::change(const std::string& id, int direction)
     else if (id == "preview")
     {
         // full -> first dots -> off, and back the other way.
-        PreviewMode& preview = s.previewFor(m_app.mode());
+        PreviewMode& preview = s.previewFor(m_app.settings().mode());
         preview = static_cast<PreviewMode>((static_cast<int>(preview) + (direction < 0 ? 2 : 1)) % 3);
     }
     else
         return;
-    m_app.updateSettings(s);
+    m_app.settings().update(s);
 }
 
 void SettingsScreen::move(int direction)
@@ -215,7 +219,7 @@ void SettingsScreen::handleEvent(const sf::Event& event)
         switch (event.key.code)
         {
         case sf::Keyboard::Escape:
-            m_app.screens().pop();
+            m_app.navigator().screens().pop();
             break;
         case sf::Keyboard::Up:
             move(-1);
@@ -235,7 +239,7 @@ void SettingsScreen::handleEvent(const sf::Event& event)
         case sf::Keyboard::Enter:
         case sf::Keyboard::Space:
             if (id == "back")
-                m_app.screens().pop();
+                m_app.navigator().screens().pop();
             else
                 change(id, +1);
             break;
@@ -256,7 +260,7 @@ void SettingsScreen::handleEvent(const sf::Event& event)
                 m_selected = *row;
                 const sf::FloatRect& rect = m_rects[*row];
                 if (rowIds()[*row] == "back")
-                    m_app.screens().pop();
+                    m_app.navigator().screens().pop();
                 else // the value's left half steps down, the rest up
                     change(rowIds()[*row], at.x < rect.left + 0.75f * rect.width ? -1 : +1);
             }
@@ -273,12 +277,12 @@ void SettingsScreen::handleEvent(const sf::Event& event)
 void SettingsScreen::draw(sf::RenderTarget& target)
 {
     drawScrim(target);
-    const sf::Font* font = m_app.font();
-    const float scale = m_app.uiScale();
+    const sf::Font* font = m_app.ui().font();
+    const float scale = m_app.ui().scale();
     const sf::Vector2f window(target.getSize());
-    const unsigned titleSize = m_app.textSize(34.0f);
-    const unsigned rowSize = m_app.textSize(20.0f);
-    const unsigned hintSize = m_app.textSize(15.0f);
+    const unsigned titleSize = m_app.ui().textSize(34.0f);
+    const unsigned rowSize = m_app.ui().textSize(20.0f);
+    const unsigned hintSize = m_app.ui().textSize(15.0f);
     const float lineHeight = font != nullptr ? font->getLineSpacing(rowSize) : 24.0f;
     const float rowHeight = lineHeight + 14.0f * scale;
     const float titleHeight = font != nullptr ? font->getLineSpacing(titleSize) : 0.0f;

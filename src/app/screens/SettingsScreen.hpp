@@ -11,7 +11,7 @@
 namespace abalike::app
 {
 
-class App;
+class AppContext;
 
 /// The settings (from the title and the pause menu): music and effects volume, mute, window size and full screen,
 /// text size, colours (standard or colour-blind safe), high contrast, reduced motion and the teaching overlay. Every
@@ -23,7 +23,7 @@ class SettingsScreen : public Screen
 public:
     static constexpr std::string_view kName = "settings";
 
-    explicit SettingsScreen(App& app) : m_app(app) {}
+    explicit SettingsScreen(AppContext& app) : m_app(app) {}
 
     std::string_view name() const override { return kName; }
     bool isOverlay() const override { return true; }
@@ -41,7 +41,7 @@ private:
     void move(int direction);
     std::optional<std::size_t> rowAt(sf::Vector2f pixel) const;
 
-    App& m_app;
+    AppContext& m_app;
     std::size_t m_selected = 0;
     std::size_t m_first = 0;            ///< first row shown (the list scrolls at large text sizes)
     std::vector<sf::FloatRect> m_rects; ///< where each shown row was drawn, by row index; empty rect: not shown

@@ -10,7 +10,11 @@
 #include "screens/LevelSelectScreen.hpp"
 #include "screens/Navigation.hpp"
 #include "screens/SettingsScreen.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Navigator.hpp"
+#include "shell/PlayerProgress.hpp"
+#include "shell/PlayerSettings.hpp"
+#include "shell/UiMetrics.hpp"
 #include "ui/Card.hpp"
 
 namespace abalike::app
@@ -18,22 +22,23 @@ namespace abalike::app
 
 namespace
 {
-LevelDef sceneryLevel(const App& app)
+LevelDef sceneryLevel(const AppContext& app)
 {
-    if (!app.campaign().levels.empty())
-        return app.campaign().levels.front().level;
+    if (!app.progress().campaign().levels.empty())
+        return app.progress().campaign().levels.front().level;
     LevelDef empty;
     empty.id = "title";
     return empty;
 }
 } // namespace
 
-TitleScreen::TitleScreen(App& app)
+TitleScreen::TitleScreen(AppContext& app)
     : m_app(app), m_scenery(std::make_unique<GameSession>(sceneryLevel(app), Catalog::builtin())),
-      m_camera(Camera::fitLevel(m_scenery->level(), Catalog::builtin(), app.windowSize()))
+      m_camera(Camera::fitLevel(m_scenery->level(), Catalog::builtin(), app.ui().windowSize()))
 {
-    const bool hasCampaign = !app.campaign().levels.empty();
-    const bool started = hasCampaign && app.progress().levels.count(app.campaign().levels.front().key) > 0;
+    const bool hasCampaign = !app.progress().campaign().levels.empty();
+    const bool started =
+        hasCampaign && app.progress().current().levels.count(app.progress().campaign().levels.front().key) > 0;
     m_menu.setItems({
         {"play", started ? "Play: continue" : "Play", hasCampaign},
         {"levels", "Level select", hasCampaign},
@@ -56,26 +61,26 @@ void TitleScreen::activate(const std::string& id)
 {
     if (id == "play")
     {
-        m_app.setMode(PlayMode::Game);
+        m_app.settings().setMode(PlayMode::Game);
         playCampaignLevel(m_app, continueLevel(m_app));
     }
     else if (id == "endless")
     {
-        m_app.setMode(PlayMode::Game);
-        m_app.screens().push(nextEndlessScreen(m_app));
+        m_app.settings().setMode(PlayMode::Game);
+        m_app.navigator().screens().push(nextEndlessScreen(m_app));
     }
     else if (id == "levels")
-        m_app.screens().push(std::make_unique<LevelSelectScreen>(m_app));
+        m_app.navigator().screens().push(std::make_unique<LevelSelectScreen>(m_app));
     else if (id == "learn")
-        m_app.screens().push(std::make_unique<LearnScreen>(m_app));
+        m_app.navigator().screens().push(std::make_unique<LearnScreen>(m_app));
     else if (id == "sandbox")
         openEditor(m_app, sandboxSource());
     else if (id == "settings")
-        m_app.screens().push(std::make_unique<SettingsScreen>(m_app));
+        m_app.navigator().screens().push(std::make_unique<SettingsScreen>(m_app));
     else if (id == "help")
-        m_app.screens().push(std::make_unique<HelpScreen>(m_app));
+        m_app.navigator().screens().push(std::make_unique<HelpScreen>(m_app));
     else if (id == "quit")
-        m_app.quit(0);
+        m_app.navigator().quit(0);
 }
 
 void TitleScreen::onResize(sf::Vector2u size)
@@ -88,27 +93,27 @@ void TitleScreen::draw(sf::RenderTarget& target)
     m_world.drawBackground(target, m_camera, *m_scenery);
     m_world.drawForeground(target, m_camera, *m_scenery, {0.0f, 0.0f});
     drawScrim(target);
-    drawTitleArt(target, m_app.uiScale());
+    drawTitleArt(target, m_app.ui().scale());
 
-    const float scale = m_app.uiScale();
+    const float scale = m_app.ui().scale();
     const sf::Vector2f window(target.getSize());
     const float centre = 0.5f * window.x;
     float y = 0.12f * window.y;
-    if (const sf::Font* font = m_app.font())
+    if (const sf::Font* font = m_app.ui().font())
     {
-        const unsigned titleSize = m_app.textSize(64.0f);
-        const unsigned subtitleSize = m_app.textSize(22.0f);
+        const unsigned titleSize = m_app.ui().textSize(64.0f);
+        const unsigned subtitleSize = m_app.ui().textSize(22.0f);
         drawLabel(target, *font, utf8("Angry Birds Alike"), {centre, y}, titleSize, palette::kStar, Align::Centre);
         y += font->getLineSpacing(titleSize);
         drawLabel(target, *font, utf8("A slingshot physics game, and a physics lesson"), {centre, y}, subtitleSize,
                   palette::kText, Align::Centre);
         y += font->getLineSpacing(subtitleSize) + 30.0f * scale;
     }
-    m_menu.draw(target, m_app.font(), centre, y, std::min(window.x - 40.0f, 360.0f * scale), m_app.textSize(24.0f),
-                scale);
-    if (const sf::Font* font = m_app.font())
+    m_menu.draw(target, m_app.ui().font(), centre, y, std::min(window.x - 40.0f, 360.0f * scale),
+                m_app.ui().textSize(24.0f), scale);
+    if (const sf::Font* font = m_app.ui().font())
     {
-        const unsigned hintSize = m_app.textSize(16.0f);
+        const unsigned hintSize = m_app.ui().textSize(16.0f);
         drawLabel(target, *font, utf8("F1 or ?: controls   \u00B7   arrows and Enter, or the mouse"),
                   {centre, window.y - 36.0f * scale}, hintSize, palette::kText, Align::Centre);
     }

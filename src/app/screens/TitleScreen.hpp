@@ -11,7 +11,7 @@
 namespace abalike::app
 {
 
-class App;
+class AppContext;
 
 /// The title: the game's name over the first level's scenery, and the main menu (play, level select, controls,
 /// quit; lessons, sandbox and settings join it as they exist).
@@ -20,7 +20,7 @@ class TitleScreen : public Screen
 public:
     static constexpr std::string_view kName = "title";
 
-    explicit TitleScreen(App& app);
+    explicit TitleScreen(AppContext& app);
 
     std::string_view name() const override { return kName; }
     void handleEvent(const sf::Event& event) override;
@@ -30,7 +30,7 @@ public:
 private:
     void activate(const std::string& id);
 
-    App& m_app;
+    AppContext& m_app;
     MenuList m_menu;
     std::unique_ptr<GameSession> m_scenery; ///< the first level, drawn still behind the menu
     Camera m_camera;

@@ -31,32 +31,29 @@ namespace abalike::app
 namespace
 {
 constexpr double kMaxFrameS = 0.25; // a slow frame cannot start a spiral of death
-constexpr double kNoticeS = 6.0;
 /// A live frame done this early was not paced by vsync (Xvfb, drivers without it): it waits out the rest of a 60 Hz
 /// frame instead of spinning, which leaves the CPU to the endless mode's worker. A frame vsync paces takes the whole
 /// period and never waits.
 constexpr double kUnpacedFrameS = 0.012;
-constexpr std::size_t kMaxNotices = 4;
 } // namespace
 
 App::App(AppOptions options, Campaign campaign, SaveStore store, std::unique_ptr<sf::Font> font)
-    : m_options(std::move(options)), m_campaign(std::move(campaign)), m_font(std::move(font)),
-      m_window(m_options.window != nullptr ? *m_options.window : m_ownWindow), m_script(m_options.script),
-      m_store(std::move(store))
+    : m_options(std::move(options)), m_font(std::move(font)),
+      m_window(m_options.window != nullptr ? *m_options.window : m_ownWindow), m_store(std::move(store)),
+      m_notices(m_trace), m_settings(m_options, &*m_store, m_trace, m_notices),
+      m_progress(std::move(campaign), m_options, &*m_store, m_settings, m_trace, m_notices),
+      m_ui(m_window, m_font.get(), m_settings), m_run(m_options),
+      m_context(m_navigator, m_ui, m_settings, m_progress, m_notices, m_trace, m_run), m_script(m_options.script)
 {
     // Scripted runs read the player's files (tests point ABALIKE_DATA_DIR at a fixture) but never write them.
-    m_settings = m_store->settings();
-    setActiveLook(lookFor(m_settings.palette, m_settings.highContrast));
-    m_progress = m_store->progress();
-    if (unlockCampaign(m_progress, m_campaign.levelIds()) && !scripted())
-        m_store->saveProgress(m_progress);
-    takeStoreMessages();
+    m_notices.takeMessagesOf(*m_store);
     if (!m_options.tracePath.empty() && !m_trace.open(m_options.tracePath))
         std::cerr << "abalike: cannot write the trace to " << escapeForTerminal(m_options.tracePath) << "\n";
-    m_screens.setObserver(
+    screens().setObserver(
         [this](std::string_view change, std::string_view screen) {
             m_trace.write(std::string(change), {{"screen", std::string(screen)}});
         });
+    m_settings.onApplied([this](const Settings& before, const Settings& after) { settingsApplied(before, after); });
 }
 
 App::~App() = default;
@@ -71,9 +68,9 @@ void App::openWindow()
     }
     // --size wins over the saved size, and a size asked for on the command line is a window, not full screen.
     const bool sizeGiven = m_options.width.has_value();
-    const unsigned width = sizeGiven ? *m_options.width : m_settings.windowWidth;
-    const unsigned height = sizeGiven ? *m_options.height : m_settings.windowHeight;
-    if (m_settings.fullscreen && !sizeGiven)
+    const unsigned width = sizeGiven ? *m_options.width : m_settings.current().windowWidth;
+    const unsigned height = sizeGiven ? *m_options.height : m_settings.current().windowHeight;
+    if (m_settings.current().fullscreen && !sizeGiven)
         m_window.create(sf::VideoMode::getDesktopMode(), "Angry Birds Alike", sf::Style::Fullscreen);
     else
     {
@@ -98,16 +95,16 @@ void App::reopenWindow()
     openWindow();
     const sf::Vector2u size = m_window.getSize();
     m_window.setView(sf::View(sf::FloatRect(0.0f, 0.0f, static_cast<float>(size.x), static_cast<float>(size.y))));
-    m_input.releaseAll(); // the old window's releases will not arrive
-    m_screens.resize(size);
+    m_run.input().releaseAll(); // the old window's releases will not arrive
+    screens().resize(size);
 }
 
 void App::openFirstScreen()
 {
     if (!m_options.firstScreen)
         throw std::logic_error("AppOptions::firstScreen is not set (screens/GameScreens.hpp sets the game's)");
-    m_screens.push(m_options.firstScreen(*this));
-    m_screens.applyPending();
+    screens().push(m_options.firstScreen(m_context));
+    screens().applyPending();
 }
 
 int App::run()
@@ -118,17 +115,17 @@ int App::run()
     FrameObserver* observer = m_options.observer;
     const int layoutEvery = observer != nullptr ? observer->layoutEvery() : 0;
     sf::Clock clock;
-    while (!m_exitCode)
+    while (!m_navigator.exitCode())
     {
         const bool lastFrame = runFrame(clock, layoutEvery);
-        if (observer != nullptr && m_frame == 1)
+        if (observer != nullptr && m_run.frame() == 1)
             observer->firstFrame(static_cast<double>(loadClock.getElapsedTime().asMicroseconds()) * 1e-6);
-        if (m_screens.empty())
-            quit(m_exitCode.value_or(0));
+        if (screens().empty())
+            m_navigator.quit(m_navigator.exitCode().value_or(0));
         if (lastFrame)
             break;
     }
-    const int exitCode = finishRun(m_exitCode.value_or(0), layoutEvery > 0);
+    const int exitCode = finishRun(m_navigator.exitCode().value_or(0), layoutEvery > 0);
     if (m_options.window == nullptr)
         m_window.close();
     return exitCode;
@@ -144,12 +141,12 @@ bool App::runFrame(sf::Clock& clock, int layoutEvery)
         return static_cast<double>(partClock.restart().asMicroseconds()) * 1e-6;
     };
     const bool offline = m_options.frames.has_value();
-    m_frameTimes = FrameTimes{};
-    ++m_frame;
-    m_trace.setFrame(m_frame);
-    for (const sf::Event& event : m_script.eventsForFrame(static_cast<int>(m_frame)))
+    m_run.startFrame();
+    FrameTimes& times = m_run.frameTimes();
+    m_trace.setFrame(m_run.frame());
+    for (const sf::Event& event : m_script.eventsForFrame(static_cast<int>(m_run.frame())))
         dispatch(event);
-    for (const sf::Event& posted : std::exchange(m_posted, {}))
+    for (const sf::Event& posted : m_navigator.takePosted())
         dispatch(posted);
     sf::Event event{};
     while (m_window.pollEvent(event))
@@ -158,38 +155,36 @@ bool App::runFrame(sf::Clock& clock, int layoutEvery)
     const double frameS = offline ? kStepS : std::min(static_cast<double>(clock.restart().asSeconds()), kMaxFrameS);
     for (const sf::Event& repeat : m_gamepad.tick(frameS))
         dispatch(repeat);
-    m_frameTimes.updateS += lap();
+    times.updateS += lap();
     const int steps = stepsForFrame(frameS);
-    for (int i = 0; i < steps && !m_exitCode && m_screens.top() != nullptr; ++i)
-        m_screens.top()->fixedUpdate(kStepS);
-    m_frameTimes.physicsS += lap();
-    if (Screen* top = m_screens.top())
+    for (int i = 0; i < steps && !m_navigator.exitCode() && screens().top() != nullptr; ++i)
+        screens().top()->fixedUpdate(kStepS);
+    times.physicsS += lap();
+    if (Screen* top = screens().top())
         top->frameUpdate(frameS);
-    for (Notice& notice : m_notices)
-        notice.shownS += frameS;
-    std::erase_if(m_notices, [](const Notice& n) { return n.shownS > kNoticeS; });
-    m_frameTimes.updateS += lap() - m_frameTimes.previewS;
+    m_notices.age(frameS);
+    times.updateS += lap() - times.previewS;
 
-    const bool lastFrame = offline && m_frame >= *m_options.frames;
+    const bool lastFrame = offline && m_run.frame() >= *m_options.frames;
     if (layoutEvery > 0)
     {
-        if (!lastFrame && m_frame % layoutEvery == 0)
+        if (!lastFrame && m_run.frame() % layoutEvery == 0)
             m_options.observer->laidOut(recordFrame(false));
     }
     else if (!lastFrame)
     {
         drawFrame(true);
-        m_frameTimes.drawS += lap();
+        times.drawS += lap();
         m_window.display();
-        m_frameTimes.displayS += lap();
+        times.displayS += lap();
     }
-    m_screens.applyPending();
-    m_frameTimes.updateS += lap();
-    m_frameTimes.totalS = static_cast<double>(frameClock.getElapsedTime().asMicroseconds()) * 1e-6;
+    screens().applyPending();
+    times.updateS += lap();
+    times.totalS = static_cast<double>(frameClock.getElapsedTime().asMicroseconds()) * 1e-6;
     if (m_options.observer != nullptr && !lastFrame)
-        m_options.observer->frameTimed(m_frameTimes);
-    if (!offline && m_frameTimes.totalS < kUnpacedFrameS)
-        sf::sleep(sf::seconds(static_cast<float>(kStepS - m_frameTimes.totalS)));
+        m_options.observer->frameTimed(times);
+    if (!offline && times.totalS < kUnpacedFrameS)
+        sf::sleep(sf::seconds(static_cast<float>(kStepS - times.totalS)));
     return lastFrame;
 }
 
@@ -199,12 +194,12 @@ int App::finishRun(int exitCode, bool layoutOnly)
     // to the observer; a trace lists its texts (so a scripted run can check what a screen says) and its layout.
     if (layoutOnly)
     {
-        m_screens.finishBackgroundWork();
+        screens().finishBackgroundWork();
         m_options.observer->laidOut(recordFrame(false));
     }
     else if (!m_options.screenshotPath.empty() || !m_options.tracePath.empty())
     {
-        m_screens.finishBackgroundWork();
+        screens().finishBackgroundWork();
         const FrameLayout layout = recordFrame(true);
         std::vector<std::string> texts;
         std::vector<std::string> kinds;
@@ -231,7 +226,7 @@ int App::finishRun(int exitCode, bool layoutOnly)
         if (!m_options.screenshotPath.empty() && !saveScreenshot(m_window, m_options.screenshotPath))
             exitCode = exitCode == 0 ? 2 : exitCode;
     }
-    m_trace.write("exit", {{"code", exitCode}, {"screens", m_screens.names()}});
+    m_trace.write("exit", {{"code", exitCode}, {"screens", screens().names()}});
     return exitCode;
 }
 
@@ -242,7 +237,7 @@ int App::stepsForFrame(double frameS)
         // Exactly 1/60 s of game time per frame, whatever the wall clock says; counted in whole steps so rounding
         // cannot drift.
         const auto target =
-            static_cast<long long>(std::floor(static_cast<double>(m_frame) * (1.0 / 60.0) / kStepS + 1e-9));
+            static_cast<long long>(std::floor(static_cast<double>(m_run.frame()) * (1.0 / 60.0) / kStepS + 1e-9));
         const auto steps = static_cast<int>(target - m_offlineSteps);
         m_offlineSteps = target;
         return steps;
@@ -270,10 +265,10 @@ void App::dispatch(const sf::Event& event)
         if (gamepad)
             return;
     }
-    m_input.apply(event);
+    m_run.input().apply(event);
     if (handleGlobal(event))
         return;
-    if (Screen* top = m_screens.top())
+    if (Screen* top = screens().top())
         top->handleEvent(event);
 }
 
@@ -282,27 +277,27 @@ bool App::handleGlobal(const sf::Event& event)
     switch (event.type)
     {
     case sf::Event::Closed:
-        if (Screen* top = m_screens.top(); top == nullptr || !top->onCloseRequest())
-            quit(0);
+        if (Screen* top = screens().top(); top == nullptr || !top->onCloseRequest())
+            m_navigator.quit(0);
         return true;
     case sf::Event::Resized:
     {
         const sf::Vector2u size(event.size.width, event.size.height);
         m_window.setView(sf::View(sf::FloatRect(0.0f, 0.0f, static_cast<float>(size.x), static_cast<float>(size.y))));
-        m_screens.resize(size);
+        screens().resize(size);
         return true;
     }
     case sf::Event::MouseButtonReleased:
-        if (Screen* top = m_screens.top();
+        if (Screen* top = screens().top();
             event.mouseButton.button == sf::Mouse::Right && top != nullptr && top->rightClickIsBack())
         {
             // The mouse's way back out of a menu: the same Escape the keyboard and the pad's B press.
             sf::Event back{};
             back.type = sf::Event::KeyPressed;
             back.key.code = sf::Keyboard::Escape;
-            post(back);
+            m_navigator.post(back);
             back.type = sf::Event::KeyReleased;
-            post(back);
+            m_navigator.post(back);
             return true;
         }
         return false;
@@ -315,7 +310,7 @@ bool App::handleGlobal(const sf::Event& event)
         return false;
     case sf::Event::TextEntered:
     {
-        const Screen* top = m_screens.top();
+        const Screen* top = screens().top();
         if (event.text.unicode == '?' && (top == nullptr || !top->wantsTextInput()))
         {
             toggleHelp();
@@ -332,28 +327,28 @@ void App::toggleHelp()
 {
     if (!m_options.helpScreen)
         return;
-    const Screen* top = m_screens.top();
+    const Screen* top = screens().top();
     if (top != nullptr && top->name() == kHelpScreenName)
-        m_screens.pop();
+        screens().pop();
     else
-        m_screens.push(m_options.helpScreen(*this));
+        screens().push(m_options.helpScreen(m_context));
 }
 
 void App::drawFrame(bool reuseCovered)
 {
     m_window.clear(palette::kSkyBottom);
     if (reuseCovered)
-        m_screens.drawWithSnapshot(m_window);
+        screens().drawWithSnapshot(m_window);
     else
-        m_screens.draw(m_window);
-    drawNotices();
+        screens().draw(m_window);
+    m_notices.draw(m_window, m_ui);
 }
 
 FrameLayout App::recordFrame(bool pixels)
 {
     FrameLayout layout;
-    layout.frame = m_frame;
-    layout.window = windowSize();
+    layout.frame = m_run.frame();
+    layout.window = m_ui.windowSize();
     setScreenRegionSink(&layout.panels);
     setKeepVisibleSink(&layout.keepVisible);
     setDrawnTextSink(&layout.texts);
@@ -377,167 +372,12 @@ FrameLayout App::recordFrame(bool pixels)
     return layout;
 }
 
-void App::drawNotices()
+void App::settingsApplied(const Settings& before, const Settings& after)
 {
-    if (m_font == nullptr || m_notices.empty())
-        return;
-    const unsigned size = textSize(17.0f);
-    const float pad = 8.0f * uiScale();
-    const float lineHeight = m_font->getLineSpacing(size);
-    const float centre = 0.5f * static_cast<float>(windowSize().x);
-    // Each notice wrapped to the window (a long file name must not run off its edges), stacked upwards from above
-    // the level's hint.
-    const float maxWidth = std::max(100.0f, static_cast<float>(windowSize().x) - 4.0f * pad);
-    std::vector<std::vector<std::string>> wrapped;
-    std::size_t lines = 0;
-    for (const Notice& notice : m_notices)
-    {
-        wrapped.push_back(wrapText(*m_font, notice.text, size, maxWidth - 2.0f * pad));
-        lines += wrapped.back().size();
-    }
-    float y = static_cast<float>(windowSize().y) - 70.0f * uiScale() - lineHeight * static_cast<float>(lines) -
-              pad * static_cast<float>(m_notices.size() - 1);
-    for (const std::vector<std::string>& notice : wrapped)
-    {
-        float width = 0.0f;
-        for (const std::string& line : notice)
-            width = std::max(width, measureText(*m_font, utf8(line), size).x);
-        width += 2.0f * pad;
-        const float height = lineHeight * static_cast<float>(notice.size()) + pad;
-        sf::RectangleShape box({width, height});
-        box.setPosition(centre - 0.5f * width, y - 0.5f * pad);
-        recordScreenRegion("notice", {box.getPosition(), box.getSize()});
-        box.setFillColor(palette::kPanel);
-        m_window.draw(box);
-        for (const std::string& line : notice)
-        {
-            drawLabel(m_window, *m_font, utf8(line), {centre, y}, size, palette::kText, Align::Centre);
-            y += lineHeight;
-        }
-        y += pad;
-    }
-}
-
-void App::updateSettings(const Settings& settings)
-{
-    const Settings before = m_settings;
-    m_settings = settings;
-    m_screens.invalidateSnapshot(); // the screens under the settings show the new look at once
-    setActiveLook(lookFor(settings.palette, settings.highContrast));
-    if (settings.fullscreen != before.fullscreen || settings.windowWidth != before.windowWidth ||
-        settings.windowHeight != before.windowHeight)
+    screens().invalidateSnapshot(); // the screens under the settings show the new look at once
+    if (after.fullscreen != before.fullscreen || after.windowWidth != before.windowWidth ||
+        after.windowHeight != before.windowHeight)
         reopenWindow();
-    m_trace.write("settings", nlohmann::json::parse(settingsToJson(settings)));
-    if (!scripted() && m_store)
-        m_store->saveSettings(settings);
-    takeStoreMessages();
-}
-
-void App::setMode(PlayMode mode)
-{
-    m_mode = mode;
-    if (m_settings.mode != mode)
-    {
-        Settings settings = m_settings;
-        settings.mode = mode;
-        updateSettings(settings);
-    }
-}
-
-void App::recordResult(const std::string& levelId, int score, int stars)
-{
-    const bool improved = m_progress.record(levelId, score, stars);
-    const bool unlocked = unlockCampaign(m_progress, m_campaign.levelIds());
-    m_trace.write("result", {{"level", levelId}, {"score", score}, {"stars", stars}});
-    if ((improved || unlocked) && !scripted() && m_store)
-        m_store->saveProgress(m_progress);
-    takeStoreMessages();
-}
-
-EndlessGame& App::endless()
-{
-    if (!m_endless)
-    {
-        // Seeds from the clock, so that every session generates castles of its own; --seed makes a run repeatable.
-        const auto clock = static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
-        const std::uint64_t seed = m_options.endlessSeed.value_or(1000 + clock % 90000);
-        m_endless = std::make_unique<EndlessGame>(std::filesystem::path(levelsDirectory()),
-                                                  defaultCacheDirectory() / "generated", seed, m_progress.endless.runs,
-                                                  scripted());
-    }
-    return *m_endless;
-}
-
-void App::recordEndless(int levelsWon, int score, bool ended)
-{
-    bool changed = m_progress.endless.offer(levelsWon, score);
-    if (ended)
-    {
-        ++m_progress.endless.runs;
-        changed = true;
-    }
-    m_trace.write("endless-record", {{"levels_won", levelsWon},
-                                     {"score", score},
-                                     {"ended", ended},
-                                     {"best_score", m_progress.endless.bestScore},
-                                     {"longest_run", m_progress.endless.longestRun}});
-    if (changed && !scripted() && m_store)
-        m_store->saveProgress(m_progress);
-    takeStoreMessages();
-}
-
-bool App::isUnlocked(const std::string& levelId) const
-{
-    // A teacher may open every level for a class; progress is kept as it is.
-    return m_settings.openAllLevels || m_progress.isUnlocked(levelId);
-}
-
-std::vector<ScriptedShot> App::takeScriptedShots()
-{
-    if (m_shotsTaken)
-        return {};
-    m_shotsTaken = true;
-    return m_options.shots;
-}
-
-void App::notify(const std::string& message)
-{
-    notify(message, "");
-}
-
-void App::notify(const std::string& message, const std::string& topic)
-{
-    std::cerr << "abalike: " << message << '\n';
-    m_trace.write("notice", {{"text", message}});
-    if (!topic.empty())
-        std::erase_if(m_notices, [&topic](const Notice& notice) { return notice.topic == topic; });
-    m_notices.push_back({message, 0.0, topic});
-    if (m_notices.size() > kMaxNotices)
-        m_notices.erase(m_notices.begin());
-}
-
-void App::quit(int exitCode)
-{
-    if (!m_exitCode)
-        m_exitCode = exitCode;
-}
-
-float App::uiScale() const
-{
-    return hudScale(m_window.getSize()) * static_cast<float>(m_settings.textScale);
-}
-
-unsigned App::textSize(float nominal) const
-{
-    return static_cast<unsigned>(std::max(9.0f, std::round(nominal * uiScale())));
-}
-
-void App::takeStoreMessages()
-{
-    if (!m_store)
-        return;
-    for (const std::string& message : m_store->takeMessages())
-        notify(message);
 }
 
 } // namespace abalike::app

@@ -22,7 +22,7 @@ class RenderWindow;
 namespace abalike::app
 {
 
-class App;
+class AppContext;
 class Screen;
 
 /// What `abalike play` was asked to do.
@@ -52,9 +52,9 @@ struct AppOptions
 
     /// The screen the run opens with (the title, a level, the editor): the layers above the shell choose it
     /// (screens/GameScreens.hpp; `abalike edit` opens the editor this way).
-    std::function<std::unique_ptr<Screen>(App&)> firstScreen;
+    std::function<std::unique_ptr<Screen>(AppContext&)> firstScreen;
     /// The help screen F1 and '?' open over any screen (none: the keys do nothing).
-    std::function<std::unique_ptr<Screen>(App&)> helpScreen;
+    std::function<std::unique_ptr<Screen>(AppContext&)> helpScreen;
 
     /// A scripted run (frames, input script or shots) reads the player's files but never writes them.
     bool scripted() const { return frames.has_value() || hasScript || !shots.empty(); }

@@ -3,7 +3,9 @@
 #include "render/Label.hpp"
 #include "render/Palette.hpp"
 #include "render/ScreenRegions.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Trace.hpp"
+#include "shell/UiMetrics.hpp"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <abalike/world/BirdBody.hpp>
@@ -33,11 +35,11 @@ void BirdBodyNotice::frameUpdate(PlayView& view, double frameS)
 
 void BirdBodyNotice::drawScreen(sf::RenderTarget& target, PlayView& view)
 {
-    const sf::Font* font = view.app().font();
+    const sf::Font* font = view.app().ui().font();
     if (m_text.empty() || font == nullptr)
         return;
-    const float scale = view.app().uiScale();
-    const unsigned size = view.app().textSize(15.0f);
+    const float scale = view.app().ui().scale();
+    const unsigned size = view.app().ui().textSize(15.0f);
     const float width = std::min(static_cast<float>(target.getSize().x) * 0.5f, 560.0f * scale);
     const std::vector<std::string> lines = wrapText(*font, m_text, size, width);
     const float lineHeight = font->getLineSpacing(size);

@@ -4,7 +4,11 @@
 
 #include "play/PlayToolbar.hpp"
 #include "render/LabelPlacement.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Notices.hpp"
+#include "shell/PlayerProgress.hpp"
+#include "shell/PlayerSettings.hpp"
+#include "shell/UiMetrics.hpp"
 #include "teach/BandGraph.hpp"
 #include "teach/ForceArrows.hpp"
 #include "teach/ImpactPanel.hpp"
@@ -23,16 +27,16 @@ namespace abalike::app
 
 bool TeachLayer::overlayOn() const
 {
-    return m_app.settings().teachingOverlay;
+    return m_app.settings().current().teachingOverlay;
 }
 
 void TeachLayer::toggleOverlay()
 {
-    Settings settings = m_app.settings();
+    Settings settings = m_app.settings().current();
     settings.teachingOverlay = !settings.teachingOverlay;
-    m_app.updateSettings(settings); // a scripted run changes it for this run only
-    m_app.notify(settings.teachingOverlay ? "Teaching overlay on (T to hide)" : "Teaching overlay off (T to show)",
-                 "overlay");
+    m_app.settings().update(settings); // a scripted run changes it for this run only
+    m_app.notices().notify(
+        settings.teachingOverlay ? "Teaching overlay on (T to hide)" : "Teaching overlay off (T to show)", "overlay");
 }
 
 void TeachLayer::exportShots(const PlayView& view)
@@ -40,13 +44,13 @@ void TeachLayer::exportShots(const PlayView& view)
     const GameSession& session = view.session();
     if (session.shots().empty())
     {
-        m_app.notify("No shot to export yet: launch a bird first (E exports every shot of this level)");
+        m_app.notices().notify("No shot to export yet: launch a bird first (E exports every shot of this level)");
         return;
     }
     const std::filesystem::path dataDir = defaultDataDirectory();
     if (dataDir.empty())
     {
-        m_app.notify("Cannot export: no data folder (set HOME or ABALIKE_DATA_DIR)");
+        m_app.notices().notify("Cannot export: no data folder (set HOME or ABALIKE_DATA_DIR)");
         return;
     }
     // exports/LEVEL-shots-N.csv with the first free N: an export never overwrites an earlier one.
@@ -67,21 +71,23 @@ void TeachLayer::exportShots(const PlayView& view)
     try
     {
         writeFileAtomically(path, shotTableCsv(session));
-        m_app.notify("Exported " + std::to_string(session.shots().size()) + " shot(s) to " + path.string());
+        m_app.notices().notify("Exported " + std::to_string(session.shots().size()) + " shot(s) to " + path.string());
     }
     catch (const std::exception& e)
     {
-        m_app.notify(std::string("Cannot export the shots: ") + e.what());
+        m_app.notices().notify(std::string("Cannot export the shots: ") + e.what());
     }
 }
 
 bool TeachLayer::handleEvent(const sf::Event& event, PlayView& view)
 {
     // The integrator tools show the numerical machinery itself: university wording only.
-    if (!m_app.universityWording() && event.type == sf::Event::KeyPressed && !event.key.control && !event.key.alt &&
-        (event.key.code == sf::Keyboard::K || event.key.code == sf::Keyboard::I) && !m_walkthrough.active())
+    if (!m_app.settings().universityWording() && event.type == sf::Event::KeyPressed && !event.key.control &&
+        !event.key.alt && (event.key.code == sf::Keyboard::K || event.key.code == sf::Keyboard::I) &&
+        !m_walkthrough.active())
     {
-        m_app.notify("The step-by-step method tools come with the university wording (Settings \u2192 Wording)");
+        m_app.notices().notify(
+            "The step-by-step method tools come with the university wording (Settings \u2192 Wording)");
         return true;
     }
     if (m_quiz.handleEvent(event, view))
@@ -104,13 +110,13 @@ bool TeachLayer::handleEvent(const sf::Event& event, PlayView& view)
             return true;
         case sf::Keyboard::V:
             m_components = !m_components;
-            m_app.notify(m_components ? "Velocity components vx and vy shown (V to hide)"
-                                      : "Velocity components hidden (V to show)",
-                         "components");
+            m_app.notices().notify(m_components ? "Velocity components vx and vy shown (V to hide)"
+                                                : "Velocity components hidden (V to show)",
+                                   "components");
             return true;
         case sf::Keyboard::Z:
             view.slowMotion().cycle();
-            m_app.notify(
+            m_app.notices().notify(
                 std::string("Speed ") + view.slowMotion().label() +
                     (view.slowMotion().divisor() == 1 ? " (real time)" : " (slow motion; the physics is unchanged)"),
                 "speed");
@@ -178,8 +184,9 @@ void TeachLayer::frameUpdate(PlayView& view, double frameS)
     m_guide.update(context);
     // The tutorial, once finished, is kept in the progress (as "tutorial", which no campaign level is): the title's
     // Learn menu marks it done, and nothing starts it again.
-    if (m_guide.finished() && session.level().id == kTutorialId && !m_app.progress().levels.contains(kTutorialId))
-        m_app.recordResult(kTutorialId, 0, 1);
+    if (m_guide.finished() && session.level().id == kTutorialId &&
+        !m_app.progress().current().levels.contains(kTutorialId))
+        m_app.progress().recordResult(kTutorialId, 0, 1);
     if (m_showChart)
         m_chart.update(session, view.aim());
 }
@@ -187,29 +194,29 @@ void TeachLayer::frameUpdate(PlayView& view, double frameS)
 void TeachLayer::drawWorld(sf::RenderTarget& target, PlayView& view)
 {
     const TextKindScope physics(TextKind::Physics);
-    const float scale = m_app.uiScale();
+    const float scale = m_app.ui().scale();
     if (overlayOn())
         PathHistory::drawDots(target, view.trails(), view.camera(), scale);
-    const sf::Font* font = m_app.font();
+    const sf::Font* font = m_app.ui().font();
     m_comparison.drawWorld(target, view.camera(), scale);
     if (m_walkthrough.active())
         m_walkthrough.drawWorld(target, view.camera(), scale);
     else if (overlayOn() && font != nullptr)
         if (const std::optional<BirdReadout> bird = m_follower.current(view.session()))
-            drawForceArrows(target, *font, view.camera(), *bird, m_components, m_app.textSize(13.0f), scale);
+            drawForceArrows(target, *font, view.camera(), *bird, m_components, m_app.ui().textSize(13.0f), scale);
 }
 
 void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
 {
-    const sf::Font* font = m_app.font();
+    const sf::Font* font = m_app.ui().font();
     if (font == nullptr)
         return;
     // The overlay's panels are physics with their numbers; a lesson's step is a hint (below).
     const TextKindScope physics(TextKind::Physics);
     const GameSession& session = view.session();
-    const float scale = m_app.uiScale();
-    const unsigned titleSize = m_app.textSize(15.0f);
-    const unsigned rowSize = m_app.textSize(13.0f);
+    const float scale = m_app.ui().scale();
+    const unsigned titleSize = m_app.ui().textSize(15.0f);
+    const unsigned rowSize = m_app.ui().textSize(13.0f);
     const float margin = 12.0f * scale;
     const float gap = 6.0f * scale;
     const sf::Vector2f window(target.getSize());
@@ -265,8 +272,8 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
                                             ? (pig ? pig->healthNs : 0.0)
                                             : (material ? material->strengthNs : 0.0);
                 // The impact panel is as wide as its numbers need, its right edge on the column's.
-                below(drawImpactPanel(target, *font, right, *shot.impact, strength, m_app.universityWording(),
-                                      titleSize, rowSize, scale));
+                below(drawImpactPanel(target, *font, right, *shot.impact, strength,
+                                      m_app.settings().universityWording(), titleSize, rowSize, scale));
             }
         }
     }
@@ -309,7 +316,7 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
         const TextKindScope hint(TextKind::Hint);
         const sf::FloatRect card =
             m_guide.draw(target, *font, {margin, left}, std::min(440.0f * scale, window.x - 2.0f * margin),
-                         m_app.textSize(17.0f), m_app.textSize(15.0f), scale);
+                         m_app.ui().textSize(17.0f), m_app.ui().textSize(15.0f), scale);
         if (card.height > 0.0f) // left out when it had no room
             left = card.top + card.height + gap;
         clearLeft();
@@ -317,8 +324,8 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     // A panel with no room left under the others is left out rather than drawn over them or off the window.
     const bool roomLeft = left + minHeight <= window.y;
     if (overlayOn() && !m_walkthrough.active() && roomLeft)
-        drawWhyPanel(target, *font, {margin, left}, session, view.preview(), m_app.universityWording(), titleSize,
-                     rowSize, scale);
+        drawWhyPanel(target, *font, {margin, left}, session, view.preview(), m_app.settings().universityWording(),
+                     titleSize, rowSize, scale);
 
     if (m_walkthrough.active())
         m_walkthrough.drawPanel(target, *font, 152.0f * scale, titleSize, rowSize, scale);
@@ -328,7 +335,7 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     if (!m_walkthrough.active() && feedbackShown(view))
         m_feedback.draw(target, *font, window.y - 96.0f * scale, 160.0f * scale,
                         structureScreenBoxes(session, view.camera()), keep, std::min(window.x - 40.0f, 900.0f * scale),
-                        m_app.textSize(16.0f), scale);
+                        m_app.ui().textSize(16.0f), scale);
 
     // The measuring tools last: what the player points at reads over everything.
     if (overlayOn() || m_guide.active())

@@ -21,7 +21,7 @@ namespace abalike::app
 class TeachLayer : public PlayLayer
 {
 public:
-    explicit TeachLayer(App& app) : m_app(app) {}
+    explicit TeachLayer(AppContext& app) : m_app(app) {}
 
     std::string_view name() const override { return "teach"; }
     bool handleEvent(const sf::Event& event, PlayView& view) override;
@@ -43,7 +43,7 @@ private:
     /// Writes every shot of this level so far as CSV (key E) into the data folder's exports/ and says where.
     void exportShots(const PlayView& view);
 
-    App& m_app;
+    AppContext& m_app;
     ShotFollower m_follower;
     PathHistory m_paths;
     ComparisonView m_comparison;

@@ -4,7 +4,8 @@
 #include "render/Mesh.hpp"
 #include "render/Palette.hpp"
 #include "render/TextFormat.hpp"
-#include "shell/App.hpp"
+#include "shell/AppContext.hpp"
+#include "shell/Notices.hpp"
 #include "teach/TeachDraw.hpp"
 
 #include <abalike/flight/ClosedForm.hpp>
@@ -115,7 +116,7 @@ void WalkthroughView::start(PlayView& view, ShotFollower& follower)
     }
     else
     {
-        view.app().notify("The RK4 walkthrough needs a bird in free flight or one being aimed.");
+        view.app().notices().notify("The RK4 walkthrough needs a bird in free flight or one being aimed.");
         return;
     }
     view.setFrozen(true);
