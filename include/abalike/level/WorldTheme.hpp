@@ -3,6 +3,7 @@
 #include <abalike/level/LevelDef.hpp>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 namespace abalike
 {
@@ -20,6 +21,10 @@ enum class WorldTheme
 
 /// "earth", "moon", "mars", "titan", "jupiter": the names of the level format's "theme".
 const char* worldThemeName(WorldTheme theme);
+/// "Earth", "Moon", ...: the world's name as a person writes it (the gravity preset's).
+const char* worldThemeTitle(WorldTheme theme);
+/// Every theme, in the order the editor lists them.
+std::vector<WorldTheme> allWorldThemes();
 /// The theme of that name; nullopt for any other text.
 std::optional<WorldTheme> parseWorldTheme(std::string_view name);
 

@@ -14,6 +14,7 @@
 #include <abalike/flight/GravityPresets.hpp>
 #include <abalike/flight/StandardAtmosphere.hpp>
 #include <abalike/level/LevelCatalog.hpp>
+#include <abalike/level/LevelLimits.hpp>
 #include <abalike/level/WorldTheme.hpp>
 #include <abalike/world/BirdBody.hpp>
 #include <box2d/b2_body.h>
@@ -286,7 +287,7 @@ void EditorInspector::environmentTab()
     EnvironmentDef& env = next.environment;
     ImGui::PushItemWidth(-120.0f * m_ctx.app.ui().scale());
     heading("Gravity");
-    if (sliderDouble("g (m/s\u00B2)", env.gravity, 0.0, 100.0, "%.2f", ImGuiSliderFlags_Logarithmic))
+    if (sliderDouble("g (m/s\u00B2)", env.gravity, 0.0, limits::kMaxGravity, "%.2f", ImGuiSliderFlags_Logarithmic))
         setProperties(next, "Gravity", "gravity");
     endGestureIfReleased();
     for (const GravityPreset& preset : gravityPresets())
@@ -311,14 +312,21 @@ void EditorInspector::environmentTab()
     ImGui::NewLine();
     // The scenery's world: automatic follows the gravity (levelTheme), or one named in the file.
     {
-        const char* names[] = {"automatic (from g)", "Earth", "Moon", "Mars", "Titan", "Jupiter"};
-        int current = next.theme ? static_cast<int>(*next.theme) + 1 : 0;
-        if (ImGui::Combo("Scenery", &current, names, IM_ARRAYSIZE(names)))
+        const std::vector<WorldTheme> themes = allWorldThemes();
+        std::vector<const char*> names{"automatic (from g)"};
+        int current = 0;
+        for (std::size_t i = 0; i < themes.size(); ++i)
+        {
+            names.push_back(worldThemeTitle(themes[i]));
+            if (next.theme == themes[i])
+                current = static_cast<int>(i) + 1;
+        }
+        if (ImGui::Combo("Scenery", &current, names.data(), static_cast<int>(names.size())))
         {
             if (current == 0)
                 next.theme.reset();
             else
-                next.theme = static_cast<WorldTheme>(current - 1);
+                next.theme = themes[static_cast<std::size_t>(current) - 1];
             setProperties(next, "Scenery", "");
         }
     }
@@ -506,7 +514,7 @@ void EditorInspector::birdTab()
         {
             next.customBird = CustomBirdDef{};
             next.birds.insert(next.birds.begin(), kCustomBirdName);
-            if (next.birds.size() > 20)
+            if (next.birds.size() > limits::kMaxBirds)
                 next.birds.pop_back();
         }
         else
@@ -521,9 +529,12 @@ void EditorInspector::birdTab()
     if (next.customBird)
     {
         CustomBirdDef& bird = *next.customBird;
-        bool changed = sliderDouble("Mass (kg)", bird.massKg, 0.01, 5000.0, "%.4g", ImGuiSliderFlags_Logarithmic);
-        changed |= sliderDouble("Diameter (m)", bird.diameterM, 0.01, 3.0, "%.3g", ImGuiSliderFlags_Logarithmic);
-        changed |= sliderDouble("Drag coeff. Cd", bird.dragCoefficient, 0.04, 1.2, "%.2f");
+        bool changed = sliderDouble("Mass (kg)", bird.massKg, limits::kMinBirdMassKg, limits::kMaxBirdMassKg, "%.4g",
+                                    ImGuiSliderFlags_Logarithmic);
+        changed |= sliderDouble("Diameter (m)", bird.diameterM, limits::kMinBirdDiameterM, limits::kMaxBirdDiameterM,
+                                "%.3g", ImGuiSliderFlags_Logarithmic);
+        changed |= sliderDouble("Drag coeff. Cd", bird.dragCoefficient, limits::kMinDragCoefficient,
+                                limits::kMaxDragCoefficient, "%.2f");
         if (changed)
             setProperties(next, "Custom bird", "custom-bird");
         endGestureIfReleased();
@@ -573,7 +584,7 @@ void EditorInspector::birdListAndSlingshot(LevelDef& next)
         }
         ImGui::PopID();
     }
-    if (next.birds.size() < 20 && ImGui::Button("Add a bird"))
+    if (next.birds.size() < limits::kMaxBirds && ImGui::Button("Add a bird"))
     {
         next.birds.push_back(next.birds.back());
         setProperties(next, "Add a bird", "");
@@ -581,13 +592,14 @@ void EditorInspector::birdListAndSlingshot(LevelDef& next)
 
     heading("Slingshot");
     double force = next.slingshot.maxForceN;
-    if (sliderDouble("Force at full pull (N)", force, 1.0, 1.0e6, "%.0f", ImGuiSliderFlags_Logarithmic))
+    if (sliderDouble("Force at full pull (N)", force, limits::kMinForceN, limits::kMaxForceN, "%.0f",
+                     ImGuiSliderFlags_Logarithmic))
     {
         next.slingshot.maxForceN = force;
         setProperties(next, "Slingshot force", "force");
     }
     double pull = next.slingshot.maxPullM;
-    if (sliderDouble("Full pull (m)", pull, 0.1, 10.0, "%.2f"))
+    if (sliderDouble("Full pull (m)", pull, limits::kMinPullM, limits::kMaxPullM, "%.2f"))
     {
         next.slingshot.maxPullM = pull;
         setProperties(next, "Slingshot pull", "pull");
@@ -624,16 +636,18 @@ void EditorInspector::materialsTab()
             (*it).*field = value;
             changed = true;
         };
-        if (sliderDouble("Density (kg/m\u00B3)", density, 50.0, 25000.0, "%.0f", ImGuiSliderFlags_Logarithmic))
+        if (sliderDouble("Density (kg/m\u00B3)", density, limits::kMinMaterialDensity, limits::kMaxMaterialDensity,
+                         "%.0f", ImGuiSliderFlags_Logarithmic))
             edit(&MaterialOverrideDef::densityKgPerM3, density);
         endGestureIfReleased();
-        if (sliderDouble("Friction \u03BC", friction, 0.0, 2.0, "%.2f"))
+        if (sliderDouble("Friction \u03BC", friction, 0.0, limits::kMaxFriction, "%.2f"))
             edit(&MaterialOverrideDef::friction, friction);
         endGestureIfReleased();
         if (sliderDouble("Restitution e", restitution, 0.0, 1.0, "%.2f"))
             edit(&MaterialOverrideDef::restitution, restitution);
         endGestureIfReleased();
-        if (sliderDouble("Strength (N s)", strength, 1.0, 1.0e6, "%.0f", ImGuiSliderFlags_Logarithmic))
+        if (sliderDouble("Strength (N s)", strength, limits::kMinStrengthNs, limits::kMaxStrengthNs, "%.0f",
+                         ImGuiSliderFlags_Logarithmic))
             edit(&MaterialOverrideDef::strengthNs, strength);
         endGestureIfReleased();
         if (changed)
@@ -689,7 +703,7 @@ void EditorInspector::levelTab()
         }
         ImGui::PopID();
     }
-    if (next.hints.size() < 20 && ImGui::Button("Add a hint"))
+    if (next.hints.size() < limits::kMaxHints && ImGui::Button("Add a hint"))
     {
         next.hints.emplace_back("A hint for the player.");
         setProperties(next, "Add a hint", "");

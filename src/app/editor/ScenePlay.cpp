@@ -1,12 +1,9 @@
 #include "editor/ScenePlay.hpp"
 
 #include "layers/PlayLayerTable.hpp"
-#include "play/PlayDrawing.hpp"
 #include "shell/AppContext.hpp"
-#include "shell/Notices.hpp"
 #include "shell/PlayerSettings.hpp"
 #include "shell/Trace.hpp"
-#include "shell/UiMetrics.hpp"
 
 #include <algorithm>
 
@@ -14,9 +11,10 @@ namespace abalike::app
 {
 
 ScenePlay::ScenePlay(AppContext& app, const LevelDef& level, const Camera& camera)
-    : m_app(app), m_level(level), m_camera(camera), m_overlay(app.ui().font()), m_hud(app.ui().font()),
-      m_layers(makePlayLayers(app))
+    : PlayField(app, makePlayLayers(app)), m_level(level), m_camera(camera)
 {
+    // The scene starts live, with no settle step: bodies may still move while the first bird is aimed.
+    setPreviewFollowsTheWorld(true);
     restart();
 }
 
@@ -34,61 +32,47 @@ PlayMode ScenePlay::playMode() const
 
 void ScenePlay::restart()
 {
-    m_session = std::make_unique<GameSession>(m_level, Catalog::builtin());
-    m_aim.reset();
-    m_requestedLaunch.reset();
-    m_abilityRequested = false;
-    m_frozen = false;
-    m_previewStale = true;
+    startLevel(std::make_unique<GameSession>(m_level, Catalog::builtin()));
+    resetAim();
     m_app.trace().write("level", {{"id", m_level.id}, {"title", m_level.title}, {"editor", true}});
-    m_trails.onLevelStart(*m_session);
-    for (const auto& layer : m_layers)
-        layer->onLevelStart(*this);
+    levelStarted();
 }
 
 void ScenePlay::setEnvironment(const EnvironmentDef& environment)
 {
     m_level.environment = environment;
-    m_session->setEnvironment(environment);
-    m_previewStale = true;
+    mutableSession().setEnvironment(environment);
+    invalidatePreview();
 }
 
 void ScenePlay::setCustomBird(const CustomBirdDef& bird)
 {
     m_level.customBird = bird;
-    m_session->setCustomBird(bird);
-    m_previewStale = true;
+    mutableSession().setCustomBird(bird);
+    invalidatePreview();
 }
 
 double ScenePlay::maxSpeedMps() const
 {
-    return m_session->currentBird() != nullptr ? m_session->maxLaunchSpeed() : 0.0;
-}
-
-double ScenePlay::aimSpeedMps() const
-{
-    const auto band = m_session->band();
-    return band ? band->atFraction(m_aim.powerFraction()).speedMps : 0.0;
+    return session().currentBird() != nullptr ? session().maxLaunchSpeed() : 0.0;
 }
 
 void ScenePlay::aimAt(double angleDeg, double speedMps)
 {
-    const auto band = m_session->band();
+    const auto band = session().band();
     m_aim.set(std::clamp(angleDeg, -90.0, 90.0), band ? band->forSpeed(speedMps).fraction : 0.0);
-    m_previewStale = true;
 }
 
 void ScenePlay::fire()
 {
-    if (m_session->phase() == Phase::Aiming && m_session->currentBird() != nullptr)
-        m_requestedLaunch = ScriptedShot(m_aim.angleDeg(), aimSpeedMps());
+    if (session().phase() == Phase::Aiming && session().currentBird() != nullptr)
+        requestLaunch();
 }
 
 void ScenePlay::handleEvent(const sf::Event& event)
 {
-    for (auto it = m_layers.rbegin(); it != m_layers.rend(); ++it)
-        if ((*it)->handleEvent(event, *this))
-            return;
+    if (offerToLayers(event))
+        return;
     if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::R)
     {
         restart();
@@ -96,20 +80,19 @@ void ScenePlay::handleEvent(const sf::Event& event)
     }
     const bool click = event.type == sf::Event::MouseButtonPressed && event.mouseButton.button == sf::Mouse::Left;
     const bool space = event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::Space;
-    if ((click || space) && m_session->canActivateAbility())
-        m_abilityRequested = true;
-    if (m_session->phase() != Phase::Aiming || m_session->currentBird() == nullptr || m_requestedLaunch)
+    if ((click || space) && session().canActivateAbility())
+        requestAbility();
+    if (session().phase() != Phase::Aiming || session().currentBird() == nullptr || launchPending())
         return;
-    const auto pouch = m_session->launchPoint();
+    const Vec2 pouch = session().launchPoint();
     const sf::Vector2f pouchPoint(static_cast<float>(pouch.x), static_cast<float>(pouch.y));
     if (m_aim.handleEvent(event, m_camera, pouchPoint))
         fire();
-    m_previewStale = true;
 }
 
 void ScenePlay::fixedUpdate()
 {
-    if (!m_frozen && m_slowMotion.takeStep())
+    if (!frozen() && slowMotion().takeStep())
         physicsStep();
 }
 
@@ -120,70 +103,22 @@ void ScenePlay::stepOnce()
 
 void ScenePlay::physicsStep()
 {
-    if (m_requestedLaunch)
-    {
-        const ScriptedShot shot = *m_requestedLaunch;
-        m_requestedLaunch.reset();
-        launchRequested(m_app, *m_session, shot);
-    }
-    if (m_abilityRequested)
-    {
-        m_abilityRequested = false;
-        m_session->activateAbility();
-    }
-    if (m_session->finished())
+    applyRequests();
+    if (session().finished())
         return;
-    m_session->step();
-    if (!m_session->notice().empty())
-    {
-        m_app.notices().notify(m_session->notice());
-        m_session->clearNotice();
-    }
-    m_trails.update(*m_session);
-    for (const auto& layer : m_layers)
-        layer->afterStep(*this);
-    if (m_session->phase() == Phase::Aiming)
-        m_previewStale = true;
-}
-
-void ScenePlay::refreshPreview()
-{
-    if (m_session->phase() != Phase::Aiming || m_session->currentBird() == nullptr)
-    {
-        m_preview.reset();
-        return;
-    }
-    if (!m_previewStale && m_preview)
-        return;
-    m_previewStale = false;
-    try
-    {
-        m_preview = m_session->preview(m_aim.angleDeg(), aimSpeedMps());
-    }
-    catch (const std::exception&)
-    {
-        m_preview.reset();
-    }
+    mutableSession().step();
+    afterStep();
 }
 
 void ScenePlay::frameUpdate(double frameS)
 {
     refreshPreview();
-    for (const auto& layer : m_layers)
-        layer->frameUpdate(*this, frameS);
-}
-
-std::optional<AimReadout> ScenePlay::aim() const
-{
-    const auto band = m_session->band();
-    if (m_session->phase() != Phase::Aiming || !band)
-        return std::nullopt;
-    return aimReadout(*band, m_aim.angleDeg(), band->atFraction(m_aim.powerFraction()));
+    updateLayers(frameS);
 }
 
 void ScenePlay::draw(sf::RenderTarget& target)
 {
-    drawPlay(target, *this, m_world, m_overlay, m_hud, m_aim.pullOffset(), m_aim.dragging(), m_layers);
+    drawField(target);
 }
 
 } // namespace abalike::app

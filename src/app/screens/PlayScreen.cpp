@@ -40,12 +40,12 @@ sf::Vector2f toVector(const Vec2& p)
 } // namespace
 
 PlayScreen::PlayScreen(AppContext& app, PlaySource source)
-    : m_app(app), m_source(std::move(source)), m_script(app.run().takeScriptedShots()), m_overlay(app.ui().font()),
-      m_hud(app.ui().font()), m_reloadNotice(app.ui().font()), m_layers(makePlayLayers(app))
+    : PlayField(app, makePlayLayers(app)), m_source(std::move(source)), m_script(app.run().takeScriptedShots()),
+      m_reloadNotice(app.ui().font())
 {
     // On top of the shared layers: the toolbar sees clicks first, so a click on a button neither aims nor fires an
     // ability. (The editor's play mode has its own panels instead.)
-    m_layers.push_back(std::make_unique<PlayToolbar>());
+    addLayer(std::make_unique<PlayToolbar>());
     findRestProblems();
     startSession(true);
     if (!m_source.path.empty())
@@ -56,15 +56,14 @@ PlayScreen::~PlayScreen() = default;
 
 void PlayScreen::startSession(bool withOpening)
 {
-    m_session = std::make_unique<GameSession>(m_source.level, Catalog::builtin());
+    startLevel(std::make_unique<GameSession>(m_source.level, Catalog::builtin()));
     m_rig.reset(cameraFocus(), m_app.ui().windowSize());
     // A level wider than the aiming view opens with a pan over it to the slingshot (restarts do not).
     if (withOpening && m_rig.startOpening(cameraFocus()))
         m_app.trace().write("camera-opening", {{"seconds", CameraRig::kOpeningS}});
     m_finishHandled = false;
     m_destroyedTraced = 0;
-    m_frozen = false;
-    resetAim();
+    resetShot();
     m_reloadErrors.clear();
     nlohmann::json event{{"id", m_source.level.id}, {"title", m_source.level.title}};
     if (m_source.campaignIndex)
@@ -73,9 +72,7 @@ void PlayScreen::startSession(bool withOpening)
         event["number"] = levelLabel();
     }
     m_app.trace().write("level", event);
-    m_trails.onLevelStart(*m_session);
-    for (const auto& layer : m_layers)
-        layer->onLevelStart(*this);
+    levelStarted();
     startSettling();
 }
 
@@ -109,12 +106,9 @@ void PlayScreen::restartLevel()
     m_rig.reset(cameraFocus(), m_app.ui().windowSize());
     m_finishHandled = false;
     m_destroyedTraced = 0;
-    m_frozen = false;
-    resetAim();
+    resetShot();
     m_app.trace().write("restart", {{"id", m_source.level.id}});
-    m_trails.onLevelStart(*m_session);
-    for (const auto& layer : m_layers)
-        layer->onLevelStart(*this);
+    levelStarted();
     startSettling();
 }
 
@@ -155,15 +149,11 @@ void PlayScreen::goToNextLevel()
         std::make_unique<PlayScreen>(m_app, PlaySource{level.level, level.path, next, m_source.mode}));
 }
 
-void PlayScreen::resetAim()
+void PlayScreen::resetShot()
 {
-    ++m_generation;
-    m_aim.reset();
+    resetAim();
     m_aimedBird = 0;
-    m_requestedLaunch.reset();
-    m_abilityRequested = false;
     m_scriptAbilityAtS.reset();
-    m_preview.reset();
 }
 
 void PlayScreen::findRestProblems()
@@ -230,9 +220,8 @@ void PlayScreen::handleEvent(const sf::Event& event)
     if (event.type == sf::Event::KeyPressed || event.type == sf::Event::MouseButtonPressed ||
         event.type == sf::Event::MouseWheelScrolled)
         m_rig.skipOpening();
-    for (auto it = m_layers.rbegin(); it != m_layers.rend(); ++it)
-        if ((*it)->handleEvent(event, *this))
-            return;
+    if (offerToLayers(event))
+        return;
     // The problems banner: B or a click on it opens or folds it.
     if (event.type == sf::Event::MouseButtonPressed && event.mouseButton.button == sf::Mouse::Left &&
         m_reloadNotice.handleClick(static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y)))
@@ -247,7 +236,7 @@ void PlayScreen::handleEvent(const sf::Event& event)
                      !m_app.run().input().lastPressRepeated();
     const bool ability = (click || key) && m_session->canActivateAbility() && !m_scriptAbilityAtS;
     if (ability)
-        m_abilityRequested = true;
+        requestAbility();
 
     // A left press that neither fires an ability nor takes hold of the bird pans the camera (empty sky).
     const bool mayAim = playerMayAim();
@@ -263,7 +252,7 @@ void PlayScreen::handleEvent(const sf::Event& event)
     if (!mayAim)
         return;
     if (m_aim.handleEvent(event, m_rig.camera(), pouch))
-        m_requestedLaunch = ScriptedShot(m_aim.angleDeg(), aimSpeedMps());
+        requestLaunch();
 }
 
 void PlayScreen::handleKey(const sf::Event::KeyEvent& key)
@@ -292,7 +281,7 @@ void PlayScreen::handleKey(const sf::Event::KeyEvent& key)
 bool PlayScreen::playerMayAim() const
 {
     return m_session->phase() == Phase::Aiming && !m_session->winPending() && m_session->currentBird() != nullptr &&
-           m_script.pending() == nullptr && !m_requestedLaunch;
+           m_script.pending() == nullptr && !launchPending();
 }
 
 void PlayScreen::fixedUpdate(double dtS)
@@ -300,11 +289,11 @@ void PlayScreen::fixedUpdate(double dtS)
     (void)dtS; // the session steps at its own fixed rate, which is the app's
     if (settling())
         return;
-    if (m_frozen || !m_slowMotion.takeStep())
+    if (frozen() || !slowMotion().takeStep())
         return;
     physicsStep();
     // Holding F: more steps of the free flight in this tick, never past the first contact.
-    for (int extra = 1; extra < m_fastForward.stepsPerTick(m_slowMotion.divisor()) &&
+    for (int extra = 1; extra < m_fastForward.stepsPerTick(slowMotion().divisor()) &&
                         m_session->phase() == Phase::Flying && m_session->world().birdInFreeFlight();
          ++extra)
         physicsStep();
@@ -317,18 +306,7 @@ void PlayScreen::stepOnce()
 
 void PlayScreen::physicsStep()
 {
-    if (m_requestedLaunch)
-    {
-        const ScriptedShot shot = *m_requestedLaunch;
-        m_requestedLaunch.reset();
-        launchRequested(m_app, *m_session, shot);
-    }
-    if (m_abilityRequested)
-    {
-        m_abilityRequested = false;
-        if (m_session->activateAbility())
-            m_app.trace().write("ability", {{"t", m_session->timeSinceLaunch()}});
-    }
+    applyRequests();
     // A scripted ability fires at the first step boundary at or after its time, as in `abalike simulate`.
     if (m_scriptAbilityAtS && m_session->phase() == Phase::Flying &&
         m_session->timeSinceLaunch() >= *m_scriptAbilityAtS - 1e-9)
@@ -347,16 +325,8 @@ void PlayScreen::physicsStep()
         m_aim.rest();
         m_aimedBird = m_session->birdsUsed();
     }
-    if (!m_session->notice().empty())
-    {
-        // The session reset itself (a body escaped to NaN): tell the player.
-        m_app.notices().notify(m_session->notice());
-        m_session->clearNotice();
-    }
     traceDefeats();
-    m_trails.update(*m_session);
-    for (const auto& layer : m_layers)
-        layer->afterStep(*this);
+    afterStep();
     finishIfDone();
 }
 
@@ -433,47 +403,11 @@ void PlayScreen::syncScriptedAim()
     m_aim.set(shot->angleDeg, m_session->band()->forSpeed(shot->speedMps).fraction);
 }
 
-double PlayScreen::aimSpeedMps() const
+std::optional<double> PlayScreen::scriptedSpeedMps() const
 {
     if (const ScriptedShot* shot = m_script.pending())
         return shot->speedMps;
-    const auto band = m_session->band();
-    return band ? band->atFraction(m_aim.powerFraction()).speedMps : 0.0;
-}
-
-std::optional<AimReadout> PlayScreen::aim() const
-{
-    const auto band = m_session->band();
-    if (m_session->phase() != Phase::Aiming || !band)
-        return std::nullopt;
-    // A scripted shot is given as a speed: show the pull that gives it.
-    const BandPull pull = m_script.pending() != nullptr ? band->forSpeed(m_script.pending()->speedMps)
-                                                        : band->atFraction(m_aim.powerFraction());
-    return aimReadout(*band, m_aim.angleDeg(), pull);
-}
-
-void PlayScreen::refreshPreview()
-{
-    if (m_session->phase() != Phase::Aiming || m_session->currentBird() == nullptr)
-    {
-        m_preview.reset();
-        return;
-    }
-    const PreviewKey key{m_aim.angleDeg(), aimSpeedMps(), m_session->birdsUsed(), m_generation};
-    if (m_preview && key == m_previewKey)
-        return;
-    m_previewKey = key;
-    const sf::Clock clock;
-    try
-    {
-        m_preview = m_session->preview(key.angleDeg, key.speedMps);
-    }
-    catch (const std::exception&)
-    {
-        // A preview the core cannot compute is not worth stopping the game for.
-        m_preview.reset();
-    }
-    m_app.run().frameTimes().previewS += static_cast<double>(clock.getElapsedTime().asMicroseconds()) * 1e-6;
+    return std::nullopt;
 }
 
 void PlayScreen::frameUpdate(double frameS)
@@ -486,8 +420,7 @@ void PlayScreen::frameUpdate(double frameS)
     refreshPreview();
     collectRestProblems(false);
     m_rig.update(cameraFocus(), frameS);
-    for (const auto& layer : m_layers)
-        layer->frameUpdate(*this, frameS);
+    updateLayers(frameS);
 }
 
 CameraFocus PlayScreen::cameraFocus() const
@@ -521,7 +454,7 @@ void PlayScreen::draw(sf::RenderTarget& target)
         drawSettleProgress(target);
         return;
     }
-    drawPlay(target, *this, m_world, m_overlay, m_hud, m_aim.pullOffset(), m_aim.dragging(), m_layers);
+    drawField(target);
     if (!m_reloadErrors.empty())
         m_reloadNotice.draw(target, target.getSize(), m_reloadErrors,
                             static_cast<float>(m_app.settings().current().textScale));

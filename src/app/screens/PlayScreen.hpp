@@ -1,19 +1,14 @@
 #pragma once
 
 #include "endless/EndlessGame.hpp"
-#include "input/AimController.hpp"
 #include "input/ShotScript.hpp"
 #include "play/FastForward.hpp"
-#include "play/PlayLayer.hpp"
+#include "play/PlayField.hpp"
 #include "render/Camera.hpp"
 #include "render/CameraControls.hpp"
 #include "render/CameraFocus.hpp"
 #include "render/CameraRig.hpp"
-#include "render/Hud.hpp"
-#include "render/OverlayRenderer.hpp"
 #include "render/ReloadNotice.hpp"
-#include "render/ShotTrails.hpp"
-#include "render/WorldRenderer.hpp"
 #include "shell/Screen.hpp"
 
 #include <abalike/game/GameSession.hpp>
@@ -42,8 +37,10 @@ struct PlaySource
 };
 
 /// Playing one level: aim, launch, watch. Physics runs in the App's fixed steps; input becomes aim and launch
-/// requests to the GameSession, which decides everything else. Layers (PlayLayer) add what is drawn on top.
-class PlayScreen : public Screen, public PlayView
+/// requests to the GameSession, which decides everything else. Layers (PlayLayer) add what is drawn on top. The
+/// aim, the preview and the steps are shared with the editor's play test (PlayField); this screen adds the camera,
+/// scripted shots, results, live reload of the level file and the rest check's banner.
+class PlayScreen : public Screen, public PlayField
 {
 public:
     static constexpr std::string_view kName = "play";
@@ -71,32 +68,16 @@ public:
     // PlayView
     void finishBackgroundWork() override;
     bool changesWhileCovered() const override { return settling(); }
-    AppContext& app() override { return m_app; }
     PlayMode playMode() const override;
     std::string levelLabel() const override;
-    const GameSession& session() const override { return *m_session; }
     const Camera& camera() const override { return m_rig.camera(); }
     const CameraRig& cameraRig() const { return m_rig; }
-    const PredictedFlight* preview() const override { return m_preview ? &*m_preview : nullptr; }
-    std::optional<AimReadout> aim() const override;
-    const ShotTrails& trails() const override { return m_trails; }
-    void clearTrails() override { m_trails.clear(); }
-    bool frozen() const override { return m_frozen; }
-    void setFrozen(bool frozen) override { m_frozen = frozen; }
     void stepOnce() override;
-    SlowMotion& slowMotion() override { return m_slowMotion; }
+
+protected:
+    std::optional<double> scriptedSpeedMps() const override;
 
 private:
-    /// What the preview was computed for; a new key means the aim or the bird changed.
-    struct PreviewKey
-    {
-        double angleDeg = 0.0;
-        double speedMps = 0.0;
-        int birdsUsed = -1;
-        int generation = -1;
-        bool operator==(const PreviewKey&) const = default;
-    };
-
     /// A new session of the level; withOpening: a level wider than the aiming view opens with the camera's pan.
     void startSession(bool withOpening);
     /// What the camera should keep in view now, below the panels on screen.
@@ -104,8 +85,8 @@ private:
     static constexpr float kTeachingTopReserved = 0.4f;
     /// The ground line never rises above this fraction of the window, however large the text at the bottom.
     static constexpr float kMostGroundFromBottom = 0.3f;
-    /// Forgets the aim, any pending launch and the preview (new level or restart).
-    void resetAim();
+    /// Forgets the aim, any pending launch, the scripted ability and the preview (new level or restart).
+    void resetShot();
     void handleKey(const sf::Event::KeyEvent& key);
     bool playerMayAim() const;
     /// One physics step: pending launches and abilities, scripted shots, then the world.
@@ -125,39 +106,23 @@ private:
     bool settling() const { return m_settling.valid(); }
     void drawSettleProgress(sf::RenderTarget& target) const;
     void syncScriptedAim();
-    double aimSpeedMps() const;
-    void refreshPreview();
     /// Once the level is decided: record the result and show the results card.
     void finishIfDone();
     /// Live reload: a saved edit of the level file restarts the level; an invalid one keeps the last good version.
     void pollLevelFile();
 
-    AppContext& m_app;
     PlaySource m_source;
-    std::unique_ptr<GameSession> m_session;
-    int m_generation = 0;
     bool m_finishHandled = false;
     std::size_t m_destroyedTraced = 0; ///< events of session.destroyed() already written to the trace
-    bool m_frozen = false;
-    SlowMotion m_slowMotion;
     FastForward m_fastForward;
     CameraRig m_rig; ///< fitted at start, follows the shot, returns when the world settles; the player pans and zooms
     CameraControls m_cameraControls;
-    ShotTrails m_trails;
 
-    AimController m_aim;
     ShotScript m_script;
-    std::optional<ScriptedShot> m_requestedLaunch;
-    bool m_abilityRequested = false;
     int m_aimedBird = 0;                      ///< the bird the aim belongs to (game mode pulls each bird afresh)
     std::optional<double> m_scriptAbilityAtS; ///< when the scripted shot in flight uses its bird's ability
     int m_scriptShotNumber = 0;
-    std::optional<PredictedFlight> m_preview;
-    PreviewKey m_previewKey;
 
-    WorldRenderer m_world;
-    OverlayRenderer m_overlay;
-    Hud m_hud;
     std::optional<LevelWatcher> m_watcher;
     std::vector<std::string> m_reloadErrors;           ///< problems of the last edit that did not load
     std::vector<std::string> m_restFindings;           ///< bodies of the level file that move with no shot fired
@@ -166,7 +131,6 @@ private:
     /// A load shorter than this shows nothing; a longer one shows its progress.
     static constexpr std::chrono::milliseconds kQuietLoad{300};
     ReloadNotice m_reloadNotice;
-    std::vector<std::unique_ptr<PlayLayer>> m_layers;
 };
 
 } // namespace abalike::app

@@ -1,6 +1,6 @@
 #include "edit/EditHelpers.hpp"
 
-#include "level/LevelLimits.hpp"
+#include <abalike/level/LevelLimits.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 #include "edit/EditCommand.hpp"
 #include "edit/EditHelpers.hpp"
 #include "edit/History.hpp"
-#include "level/LevelLimits.hpp"
+#include <abalike/level/LevelLimits.hpp>
 
 #include <abalike/edit/SceneEditor.hpp>
 #include <abalike/level/LevelCatalog.hpp>

@@ -1,6 +1,6 @@
 #include "level/JsonLocator.hpp"
 #include "level/JsonText.hpp"
-#include "level/LevelLimits.hpp"
+#include <abalike/level/LevelLimits.hpp>
 #include "level/LevelReader.hpp"
 
 #include <abalike/level/LevelIO.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "level/LevelLimits.hpp"
+#include <abalike/level/LevelLimits.hpp>
 
 #include <cstddef>
 #include <nlohmann/json.hpp>

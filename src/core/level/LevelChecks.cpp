@@ -1,4 +1,4 @@
-#include "level/LevelLimits.hpp"
+#include <abalike/level/LevelLimits.hpp>
 #include "level/LevelSections.hpp"
 #include "level/Outline.hpp"
 #include "level/Reach.hpp"

@@ -1,4 +1,4 @@
-#include "level/LevelLimits.hpp"
+#include <abalike/level/LevelLimits.hpp>
 #include "level/LevelSections.hpp"
 
 #include <abalike/world/Catalog.hpp>

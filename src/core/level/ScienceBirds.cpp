@@ -4,7 +4,7 @@
 #include <abalike/world/Catalog.hpp>
 #include <abalike/world/RestFindings.hpp>
 
-#include "level/LevelLimits.hpp"
+#include <abalike/level/LevelLimits.hpp>
 #include "level/XmlText.hpp"
 
 #include <algorithm>

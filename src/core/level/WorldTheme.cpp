@@ -35,6 +35,22 @@ const char* worldThemeName(WorldTheme theme)
     return "earth";
 }
 
+const char* worldThemeTitle(WorldTheme theme)
+{
+    for (const ThemeName& t : kThemes)
+        if (t.theme == theme)
+            return t.preset;
+    return "Earth";
+}
+
+std::vector<WorldTheme> allWorldThemes()
+{
+    std::vector<WorldTheme> themes;
+    for (const ThemeName& t : kThemes)
+        themes.push_back(t.theme);
+    return themes;
+}
+
 std::optional<WorldTheme> parseWorldTheme(std::string_view name)
 {
     for (const ThemeName& t : kThemes)
