@@ -46,6 +46,24 @@ TEST(IntegratorComparison, RealRk4AgainstItselfIsExact)
     EXPECT_EQ(same.flight.path.size(), p.real.path.size());
 }
 
+TEST(IntegratorComparison, WhatEachMethodCostsComesWithTheResultWhenAskedFor)
+{
+    // The teaching overlay asks the core once for the paths and their costs; a caller that does not ask waits for no
+    // timing.
+    const Problem p;
+    const IntegratorComparison plain = p.compare(StepperKind::Euler, 1.0 / 120.0);
+    EXPECT_FALSE(plain.costUs.has_value());
+    EXPECT_FALSE(plain.realCostUs.has_value());
+    const IntegratorComparison timed =
+        compareIntegrator(p.model, p.s0, ComparisonMethod{StepperKind::Euler, 1.0 / 120.0}, kPhysicsDt, p.real,
+                          p.limits, ComparisonCost::Measure);
+    ASSERT_TRUE(timed.costUs && timed.realCostUs);
+    EXPECT_GT(*timed.costUs, 0.0);
+    EXPECT_GT(*timed.realCostUs, 0.0);
+    EXPECT_EQ(timed.flight.path.size(), plain.flight.path.size()); // timing does not change what is compared
+    EXPECT_EQ(timed.maxErrorM, plain.maxErrorM);
+}
+
 TEST(IntegratorComparison, ErrorsRankTheMethodsAndFollowTheirOrder)
 {
     const Problem p;

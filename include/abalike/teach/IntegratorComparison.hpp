@@ -35,13 +35,26 @@ struct IntegratorComparison
     PredictedFlight flight;              ///< its path, ended by the same limits (contact, landing, time)
     double maxErrorM = 0.0;              ///< largest distance from the real path at its own output times (m)
     std::optional<double> contactErrorM; ///< distance between its first contact and the real one, if both touch
+    /// What each method costs, when asked for (ComparisonCost::Measure): the median microseconds of integrating the
+    /// real flight's time with it and with the real RK4, without contact tests (the method alone).
+    std::optional<double> costUs;
+    std::optional<double> realCostUs;
+};
+
+/// Whether compareIntegrator also times the two methods (a few milliseconds: the teaching overlay shows it; tests
+/// that check paths need not wait for it).
+enum class ComparisonCost
+{
+    Skip,
+    Measure,
 };
 
 /// Flies the launch s0 with `method` under the same limits as the real flight and measures it against `real` (the
 /// RK4 preview of the same launch, interpolated between its points with the model's derivatives). Throws
 /// std::invalid_argument for a step or tolerance outside the ranges above or an invalid model.
 IntegratorComparison compareIntegrator(const FlightModel& model, const FlightState& s0, const ComparisonMethod& method,
-                                       double physicsDtS, const PredictedFlight& real, const PredictionLimits& limits);
+                                       double physicsDtS, const PredictedFlight& real, const PredictionLimits& limits,
+                                       ComparisonCost cost = ComparisonCost::Skip);
 
 /// Position on a predicted path at time t, on the cubic Hermite interpolant through its points (their derivatives
 /// from the model's right-hand side); the ends of the path outside [first, last].

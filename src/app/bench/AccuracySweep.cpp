@@ -1,5 +1,5 @@
 #include "bench/AccuracySweep.hpp"
-#include "shell/MedianTimer.hpp"
+#include <abalike/util/MedianTimer.hpp>
 
 #include <abalike/flight/ClosedForm.hpp>
 

@@ -1,5 +1,5 @@
 #include "bench/RhsCost.hpp"
-#include "shell/MedianTimer.hpp"
+#include <abalike/util/MedianTimer.hpp>
 
 #include <abalike/flight/FlightRhs.hpp>
 #include <abalike/flight/Prediction.hpp>

@@ -1,5 +1,5 @@
 #include "bench/StabilityFlight.hpp"
-#include "shell/MedianTimer.hpp"
+#include <abalike/util/MedianTimer.hpp>
 
 #include <abalike/flight/FlightIntegrator.hpp>
 #include <abalike/flight/FlightRhs.hpp>

@@ -3,7 +3,6 @@
 #include "render/Mesh.hpp"
 #include "render/Palette.hpp"
 #include "render/TextFormat.hpp"
-#include "shell/MedianTimer.hpp"
 #include "teach/TeachDraw.hpp"
 
 #include <array>
@@ -22,24 +21,6 @@ constexpr std::array<StepperKind, 4> kMethods{StepperKind::Euler, StepperKind::S
 constexpr std::array<int, 6> kRates{15, 20, 30, 60, 120, 240};
 constexpr std::array<double, 6> kTolerances{1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12};
 constexpr double kPhysicsDtS = 1.0 / 60.0;
-
-/// Median microseconds of integrating `duration` seconds with these settings, with no contact tests: the cost of
-/// the method alone.
-double integrationMicros(const FlightModel& model, const IntegratorSettings& settings, const FlightState& s0,
-                         double durationS)
-{
-    const auto steps = static_cast<std::size_t>(std::ceil(durationS / settings.dtS));
-    volatile double sink = 0.0; // keeps the work from being optimised away
-    const auto run = [&]
-    {
-        FlightIntegrator integrator(model, settings);
-        integrator.reset(0.0, s0);
-        for (std::size_t i = 0; i < steps; ++i)
-            integrator.step();
-        sink = sink + integrator.state().position.x;
-    };
-    return 1e6 * medianSeconds(run, 7, 4);
-}
 
 } // namespace
 
@@ -104,12 +85,7 @@ void ComparisonView::update(const GameSession& session, const PredictedFlight* p
     };
     try
     {
-        m_result = compareIntegrator(model, s0, method(), kPhysicsDtS, *preview, limits);
-        const double duration = std::max(end.timeS, kPhysicsDtS);
-        m_costUs = integrationMicros(model, method().settings(kPhysicsDtS), s0, duration);
-        IntegratorSettings real;
-        real.dtS = kPhysicsDtS;
-        m_realCostUs = integrationMicros(model, real, s0, duration);
+        m_result = compareIntegrator(model, s0, method(), kPhysicsDtS, *preview, limits, ComparisonCost::Measure);
         m_realEvaluations = preview->rhsEvaluations;
     }
     catch (const std::exception&)
@@ -152,10 +128,10 @@ sf::FloatRect ComparisonView::drawPanel(sf::RenderTarget& target, const sf::Font
         else if (!m_result->flight.contact)
             rows.push_back({"first contact", "none within 15 s"});
         char cost[96];
-        std::snprintf(cost, sizeof cost, "%.1f \u00B5s (%zu force evaluations)", m_costUs,
+        std::snprintf(cost, sizeof cost, "%.1f \u00B5s (%zu force evaluations)", m_result->costUs.value_or(0.0),
                       m_result->flight.rhsEvaluations);
         rows.push_back({"cost", cost});
-        std::snprintf(cost, sizeof cost, "%.1f \u00B5s (%zu)", m_realCostUs, m_realEvaluations);
+        std::snprintf(cost, sizeof cost, "%.1f \u00B5s (%zu)", m_result->realCostUs.value_or(0.0), m_realEvaluations);
         rows.push_back({"the real preview: RK4 at 1/60 s", cost});
     }
     else

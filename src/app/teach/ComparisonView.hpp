@@ -39,8 +39,6 @@ private:
     std::size_t m_lastPreviewSteps = 0;
     std::optional<PathPoint> m_lastPreviewEnd;
     std::optional<IntegratorComparison> m_result;
-    double m_costUs = 0.0;
-    double m_realCostUs = 0.0;
     std::size_t m_realEvaluations = 0;
 };
 

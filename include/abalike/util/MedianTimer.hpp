@@ -4,7 +4,7 @@
 #include <chrono>
 #include <vector>
 
-namespace abalike::app
+namespace abalike
 {
 
 /// Median wall time in seconds of one call of `work`, over `repeats` timed batches of `batch` calls each
@@ -26,4 +26,4 @@ double medianSeconds(Work&& work, int repeats, int batch = 1)
     return samples[samples.size() / 2];
 }
 
-} // namespace abalike::app
+} // namespace abalike
