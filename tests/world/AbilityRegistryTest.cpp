@@ -90,6 +90,27 @@ TEST(AbilityRegistry, NumbersForAnAbilityNobodyKnowsAreAnErrorToo)
     EXPECT_NE(error.find("/abilities/sonic: unknown ability \"sonic\""), std::string::npos) << error;
 }
 
+TEST(AbilityRegistry, TheNumbersLevelTextsMayNameAreDeclaredWithTheAbility)
+{
+    // {egg_mass} in a level's hint is the egg's mass_kg because the egg's block says so, not because code names it.
+    const auto& values = Catalog::builtin().abilityTextValues();
+    ASSERT_FALSE(values.empty());
+    for (const AbilityTextValue& value : values)
+    {
+        const Ability* ability = Catalog::builtin().findAbility(value.ability);
+        ASSERT_NE(ability, nullptr) << value.name;
+        EXPECT_NO_THROW((void)ability->number(value.number)) << value.name;
+    }
+    std::string text = catalogText();
+    const std::string number = R"("number": "mass_kg")";
+    ASSERT_NE(text.find(number), std::string::npos);
+    text.replace(text.find(number), number.size(), R"("number": "mass_g")");
+    EXPECT_NE(test::catalogLoadError(text).find("/abilities/egg/text_values/egg_mass/number: egg has no number "
+                                                "\"mass_g\""),
+              std::string::npos)
+        << test::catalogLoadError(text);
+}
+
 TEST(AbilityRegistry, AnAbilitysNumbersComeFromTheCatalogAndAreChecked)
 {
     std::string text = catalogText();

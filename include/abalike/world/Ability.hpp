@@ -64,8 +64,9 @@ struct ProjectileSpec
     double massKg = 0.0;
     FlightState state{};
     FlightModel model;
-    /// Bird: one of the shot's birds (its first touch is the shot's contact); Egg: a payload that is not.
-    CauseKind causeAs = CauseKind::Bird;
+    /// One of the shot's birds (its first touch is the shot's contact); false: a payload, which counts as its
+    /// ability when it breaks something.
+    bool shotBird = true;
 };
 
 /// What an ability may do to the world while the launched bird is in it. GameWorld implements it.

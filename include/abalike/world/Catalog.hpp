@@ -73,6 +73,17 @@ struct PlayerAim
     double pullSigma = 0.01;    ///< standard deviation of the pull, as a share of the full pull
 };
 
+/// A number of an ability that level texts may name as a placeholder ("{egg_mass}"): declared in the ability's block
+/// of the catalog ("text_values"), so that no code names an ability.
+struct AbilityTextValue
+{
+    std::string name;    ///< the placeholder's name
+    std::string ability; ///< the ability whose number it is
+    std::string number;  ///< the number's key in the ability's block ("mass_kg")
+    std::string meaning; ///< what it is, for the level guide and error messages
+    std::string unit;
+};
+
 /// Balance data (materials, birds, pigs), kept in one data file (assets/catalog.json) that is compiled into
 /// the core, so the game, the levels, the tests and the docs all read the same table.
 class Catalog
@@ -108,6 +119,8 @@ public:
     const std::vector<std::shared_ptr<const Ability>>& abilities() const { return m_abilities; }
     /// An ability with the catalog's numbers, or null when no bird uses it and the catalog does not configure it.
     const Ability* findAbility(std::string_view name) const;
+    /// The numbers the abilities let level texts name, in the order of the catalog's abilities block.
+    const std::vector<AbilityTextValue>& abilityTextValues() const { return m_abilityTextValues; }
     double groundFriction() const { return m_groundFriction; }
     /// Rolling resistance coefficient of pigs and round blocks: the torque against rolling is at most this x the
     /// normal force x the radius.
@@ -123,6 +136,7 @@ private:
     std::vector<BirdType> m_birds;
     std::vector<PigType> m_pigs;
     std::vector<std::shared_ptr<const Ability>> m_abilities;
+    std::vector<AbilityTextValue> m_abilityTextValues;
     ScoringRules m_scoring;
     PlayerAim m_playerAim;
     double m_damageSpeedThreshold = 0.5;

@@ -43,19 +43,24 @@ enum class CauseKind
     Block,       ///< a block (falling, sliding, thrown)
     Pig,         ///< a pig
     Explosion,   ///< the black bird's blast or a TNT crate's
-    Egg,         ///< the white bird's egg
+    Ability,     ///< a body an ability added that is not one of the shot's birds (the egg): DefeatCause::ability
     Ground,      ///< the ground or terrain
     OutOfBounds, ///< it left the level's bounds
 };
 
-/// The name a cause has in simulate's JSON and play's trace ("bird", "block", ... "out_of_bounds").
+/// The name of a kind of cause ("bird", "block", ... "out_of_bounds"; "ability" for CauseKind::Ability).
 const char* causeKindName(CauseKind kind);
 
 struct DefeatCause
 {
     CauseKind kind = CauseKind::Bird;
-    int index = -1; ///< for Block and Pig: its index in the level's blocks or pigs; -1 otherwise
+    int index = -1;                   ///< for Block and Pig: its index in the level's blocks or pigs; -1 otherwise
+    const Ability* ability = nullptr; ///< for Ability: the ability that added the body
 };
+
+/// The name a cause has in simulate's JSON and play's trace: its kind's, or for a body an ability added the
+/// ability's name ("egg").
+std::string causeName(const DefeatCause& cause);
 
 /// Something in the world the game cares about. Bodies point back at their entity by index (user data).
 struct Entity
@@ -70,9 +75,9 @@ struct Entity
     double health = 0.0; ///< remaining impulse it can absorb (N s)
     double maxHealth = 0.0;
     bool alive = true;
-    /// Birds only: what it counts as when it breaks something (Bird for the shot's birds, Egg for an egg); only the
-    /// shot's birds start the shot's contact clock.
-    CauseKind causeAs = CauseKind::Bird;
+    /// Birds only: one of the shot's birds (the bird, split birds), which count as the bird when they break
+    /// something and start the shot's contact clock; false for a payload (an egg), which counts as its ability.
+    bool shotBird = true;
     /// Birds an ability added (split birds, eggs): that ability; null for everything else.
     const Ability* madeBy = nullptr;
     b2Body* body = nullptr; ///< null once removed; built anew by the first step (GameWorld::box2d)

@@ -219,8 +219,8 @@ CauseTally tallyWinningShots(const std::vector<LevelDef>& levels)
         for (const DestroyedEvent& defeat : session->defeats())
             if (defeat.kind == EntityKind::Pig)
             {
-                ++tally.pigsByCause[causeKindName(defeat.cause.kind)];
-                ++tally.pigsByEpisode[level.episode][causeKindName(defeat.cause.kind)];
+                ++tally.pigsByCause[causeName(defeat.cause)];
+                ++tally.pigsByEpisode[level.episode][causeName(defeat.cause)];
             }
     }
     return tally;
@@ -280,9 +280,10 @@ int runFeelBench(const BenchOptions& options)
     std::vector<double> readyAfterContact;
     for (const GridShot& g : grid)
     {
-        shots.addRow({g.level, formatFixed(g.angleDeg, 0), formatFixed(g.share, 1), formatFixed(g.speedMps, 3), g.firstTouched,
-                      g.material, g.broke ? "1" : "0", formatFixed(g.vxBefore, 4), formatFixed(g.vxAfter, 4), g.won ? "1" : "0",
-                      formatFixed(g.turnS, 3), g.readyAfterContactS ? formatFixed(*g.readyAfterContactS, 3) : ""});
+        shots.addRow({g.level, formatFixed(g.angleDeg, 0), formatFixed(g.share, 1), formatFixed(g.speedMps, 3),
+                      g.firstTouched, g.material, g.broke ? "1" : "0", formatFixed(g.vxBefore, 4),
+                      formatFixed(g.vxAfter, 4), g.won ? "1" : "0", formatFixed(g.turnS, 3),
+                      g.readyAfterContactS ? formatFixed(*g.readyAfterContactS, 3) : ""});
         if (!g.won)
         {
             turns.push_back(g.turnS);
@@ -364,13 +365,13 @@ int runFeelBench(const BenchOptions& options)
        << "| before | " << allBefore[0] << " | " << share(allBefore[1], allBefore[0]) << " | "
        << share(allBefore[2], allBefore[0]) << " |\n"
        << "| now | " << all[0] << " | " << share(all[1], all[0]) << " | " << share(all[2], all[0]) << " |\n"
-       << "| now, the bird moving sideways at >= " << formatFixed(kSidewaysMps, 0) << " m/s before | " << fast[0] << " | "
-       << share(fast[1], fast[0]) << " | " << share(fast[2], fast[0]) << " |\n"
+       << "| now, the bird moving sideways at >= " << formatFixed(kSidewaysMps, 0) << " m/s before | " << fast[0]
+       << " | " << share(fast[1], fast[0]) << " | " << share(fast[2], fast[0]) << " |\n"
        << "| now, the bird slower sideways (rolling, pinned) | " << slow[0] << " | " << share(slow[1], slow[0]) << " | "
        << share(slow[2], slow[0]) << " |\n\n"
        << "Targets: on first contact keeps its sign >= " << formatFixed(100 * kKeepSignTarget, 0) << " %: **"
-       << verdict(keepShare >= kKeepSignTarget) << "**; reverses <= " << formatFixed(100 * kReverseTarget, 0) << " %: **"
-       << verdict(reverseShare <= kReverseTarget)
+       << verdict(keepShare >= kKeepSignTarget) << "**; reverses <= " << formatFixed(100 * kReverseTarget, 0)
+       << " %: **" << verdict(reverseShare <= kReverseTarget)
        << "**; at any contact keeps its sign >= " << formatFixed(100 * kKeepSignTarget, 0) << " %: **"
        << verdict(allKeepShare >= kKeepSignTarget) << "**.\n\n";
 
@@ -384,8 +385,8 @@ int runFeelBench(const BenchOptions& options)
     md << "## Pace of turns\n\nShots of the grid that did not win (" << turns.size()
        << "), in seconds of game time:\n\n"
        << "| | median | 90th percentile | max |\n|---|---:|---:|---:|\n"
-       << "| launch until the next bird is ready or the level ends | " << formatFixed(median, 2) << " | " << formatFixed(p90, 2)
-       << " | " << formatFixed(worst, 2) << " |\n"
+       << "| launch until the next bird is ready or the level ends | " << formatFixed(median, 2) << " | "
+       << formatFixed(p90, 2) << " | " << formatFixed(worst, 2) << " |\n"
        << "| first contact until then (`ready_after_contact_s`) | " << formatFixed(readyMedian, 2) << " | "
        << formatFixed(readyP90, 2) << " | " << formatFixed(readyMax, 2) << " |\n\n"
        << "Targets (first contact until ready): median <= " << formatFixed(kMedianTurnTargetS, 1) << " s: **"
@@ -401,23 +402,38 @@ int runFeelBench(const BenchOptions& options)
     md << "\n## What defeats the pigs\n\nThe solver's best shot sequence for each level (" << tally.levelsWon << " of "
        << tally.levelsSolved << " levels won), replayed; each pig's cause is the body that delivered the "
        << "largest impulse in the step its health ran out:\n\n| cause | pigs |\n|---|---:|\n";
-    for (const char* cause : {"bird", "block", "pig", "ground", "explosion", "egg", "out_of_bounds"})
-        md << "| " << cause << " | " << share(count(cause), pigs) << " |\n";
+    // The kinds of cause, with each ability that drops a payload in place of the kind "ability" (the egg).
+    std::vector<std::string> dropping;
+    for (const auto& ability : Catalog::builtin().abilities())
+        if (ability->dropped())
+            dropping.emplace_back(ability->name());
+    std::vector<std::string> causes{"bird", "block", "pig", "ground", "explosion"};
+    causes.insert(causes.end(), dropping.begin(), dropping.end());
+    causes.emplace_back("out_of_bounds");
+    for (const std::string& cause : causes)
+        md << "| " << cause << " | " << share(count(cause.c_str()), pigs) << " |\n";
     md << "| toppling (block, pig, ground) | " << share(toppledPigs(tally.pigsByCause), pigs) << " |\n";
 
     // Per episode: toppling against every defeat (explosions and eggs are in the total, not in toppling).
     md << "\nBy episode (target: toppling >= " << formatFixed(100.0 * kToppleShareTarget, 0)
        << " % of the pigs defeated in every episode):\n\n"
-       << "| episode | pigs | bird | toppling | explosion | egg | toppling share | target |\n"
-       << "|---|---:|---:|---:|---:|---:|---:|---|\n";
+       << "| episode | pigs | bird | toppling | explosion | ";
+    for (const std::string& name : dropping)
+        md << name << " | ";
+    md << "toppling share | target |\n|---|---:|---:|---:|---:|";
+    for (std::size_t i = 0; i < dropping.size(); ++i)
+        md << "---:|";
+    md << "---:|---|\n";
     for (const auto& [episode, byCause] : tally.pigsByEpisode)
     {
         const int total = allPigs(byCause);
         const int toppled = toppledPigs(byCause);
         const double toppledShare = total > 0 ? static_cast<double>(toppled) / total : 0.0;
         md << "| " << (episode.empty() ? "-" : episode) << " | " << total << " | " << countOf(byCause, "bird") << " | "
-           << toppled << " | " << countOf(byCause, "explosion") << " | " << countOf(byCause, "egg") << " | "
-           << formatFixed(100.0 * toppledShare, 0) << " % | " << verdict(toppledShare >= kToppleShareTarget) << " |\n";
+           << toppled << " | " << countOf(byCause, "explosion") << " | ";
+        for (const std::string& name : dropping)
+            md << countOf(byCause, name.c_str()) << " | ";
+        md << formatFixed(100.0 * toppledShare, 0) << " % | " << verdict(toppledShare >= kToppleShareTarget) << " |\n";
     }
 
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -105,7 +105,7 @@ nlohmann::ordered_json defeatJson(const DestroyedEvent& defeat)
     out["kind"] = defeat.kind == EntityKind::Pig ? "pig" : "block";
     out["index"] = defeat.index;
     Json cause;
-    cause["kind"] = causeKindName(defeat.cause.kind);
+    cause["kind"] = causeName(defeat.cause);
     cause["index"] = defeat.cause.index >= 0 ? Json(defeat.cause.index) : Json(nullptr);
     out["cause"] = std::move(cause);
     return out;

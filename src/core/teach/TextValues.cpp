@@ -5,49 +5,65 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string_view>
 
 namespace abalike
 {
 
 const std::vector<TextValueName>& textValueNames()
 {
-    static const std::vector<TextValueName> names{
-        {"v_max", "BIRD", "launch speed at full pull, v0 = sqrt(2E/m) (at most the catalog's speed cap)", "m/s", 1},
-        {"p_max", "BIRD", "momentum at full pull, m v0", "N s", 0},
-        {"mass", "BIRD", "the bird's mass", "kg", -1},
-        {"radius", "BIRD", "the bird's radius", "m", -1},
-        {"energy", "", "energy the band stores at full pull, E = 1/2 F x", "J", 0},
-        {"force", "", "the band's force at full pull (max_force_n)", "N", 0},
-        {"pull", "", "the full pull (max_pull_m)", "m", -1},
-        {"range_flat", "BIRD", "v_max^2 / g: the range at 45 degrees in vacuum from ground level", "m", 1},
-        {"best_angle", "BIRD", "the angle that throws farthest at full pull, in this level's air, from its slingshot",
-         "degrees", 1},
-        {"best_range", "BIRD", "that farthest range, to the ground", "m", 1},
-        {"vacuum_best_angle", "BIRD", "best_angle with no air (from the slingshot's height)", "degrees", 1},
-        {"vacuum_best_range", "BIRD", "best_range with no air (from the slingshot's height)", "m", 1},
-        {"calm_best_angle", "BIRD", "best_angle in this level's air with no wind (still air)", "degrees", 1},
-        {"calm_best_range", "BIRD", "best_range in this level's air with no wind (still air)", "m", 1},
-        {"terminal", "BIRD", "terminal speed in this air, sqrt(m g / c) with c = 1/2 rho Cd A", "m/s", 1},
-        {"boost", "", "speed the boost ability adds along the flight", "m/s", -1},
-        {"egg_mass", "", "mass of the egg the white bird drops", "kg", -1},
-        {"egg_push", "", "how much faster than the bird the egg leaves, downwards", "m/s", -1},
-        {"g", "", "gravity", "m/s^2", -1},
-        {"rho", "", "air density (0: vacuum)", "kg/m^3", -1},
-        {"wind", "", "speed of the constant wind", "m/s", -1},
-        {"gust_t", "N", "time gust step N starts, after launch (steps count from 1)", "s", -1},
-        {"gust_wx", "N", "horizontal wind of gust step N (positive: towards the pigs)", "m/s", -1},
-        {"gust_period", "", "period of a sine gust", "s", -1},
-        {"gust_amplitude", "", "largest wind of a sine gust", "m/s", -1},
-        {"launch_height", "", "height of the slingshot's pouch above the ground", "m", -1},
-        {"time_limit", "", "the level's time limit", "s", -1},
-        {"strength", "MATERIAL", "impulse a block absorbs before it breaks", "N s", -1},
-        {"density", "MATERIAL", "bulk density of the material", "kg/m^3", -1},
-        {"areal_density", "MATERIAL", "mass per square metre of a 2D block (bulk density x slab depth)", "kg/m^2", -1},
-        {"friction", "MATERIAL", "friction coefficient", "", -1},
-        {"health", "PIG", "impulse a pig absorbs before it is defeated", "N s", -1},
-        {"earth_g", "", "Earth's gravity, 9.81", "m/s^2", -1},
-        {"earth_rho", "", "Earth's air density at sea level, 1.2", "kg/m^3", -1},
-    };
+    static const std::vector<TextValueName> names = []
+    {
+        // The level's and the birds' values, then the abilities' numbers their catalog blocks declare, then the air's
+        // and the rest.
+        std::vector<TextValueName> list{
+            {"v_max", "BIRD", "launch speed at full pull, v0 = sqrt(2E/m) (at most the catalog's speed cap)", "m/s", 1},
+            {"p_max", "BIRD", "momentum at full pull, m v0", "N s", 0},
+            {"mass", "BIRD", "the bird's mass", "kg", -1},
+            {"radius", "BIRD", "the bird's radius", "m", -1},
+            {"energy", "", "energy the band stores at full pull, E = 1/2 F x", "J", 0},
+            {"force", "", "the band's force at full pull (max_force_n)", "N", 0},
+            {"pull", "", "the full pull (max_pull_m)", "m", -1},
+            {"range_flat", "BIRD", "v_max^2 / g: the range at 45 degrees in vacuum from ground level", "m", 1},
+            {"best_angle", "BIRD",
+             "the angle that throws farthest at full pull, in this level's air, from its slingshot", "degrees", 1},
+            {"best_range", "BIRD", "that farthest range, to the ground", "m", 1},
+            {"vacuum_best_angle", "BIRD", "best_angle with no air (from the slingshot's height)", "degrees", 1},
+            {"vacuum_best_range", "BIRD", "best_range with no air (from the slingshot's height)", "m", 1},
+            {"calm_best_angle", "BIRD", "best_angle in this level's air with no wind (still air)", "degrees", 1},
+            {"calm_best_range", "BIRD", "best_range in this level's air with no wind (still air)", "m", 1},
+            {"terminal", "BIRD", "terminal speed in this air, sqrt(m g / c) with c = 1/2 rho Cd A", "m/s", 1},
+        };
+        for (const AbilityTextValue& value : Catalog::builtin().abilityTextValues())
+            list.push_back({value.name.c_str(), "", value.meaning.c_str(), value.unit.c_str(), -1});
+        const std::vector<TextValueName> rest{
+            {"g", "", "gravity", "m/s^2", -1},
+            {"rho", "", "air density (0: vacuum)", "kg/m^3", -1},
+            {"wind", "", "speed of the constant wind", "m/s", -1},
+            {"gust_t", "N", "time gust step N starts, after launch (steps count from 1)", "s", -1},
+            {"gust_wx", "N", "horizontal wind of gust step N (positive: towards the pigs)", "m/s", -1},
+            {"gust_period", "", "period of a sine gust", "s", -1},
+            {"gust_amplitude", "", "largest wind of a sine gust", "m/s", -1},
+            {"launch_height", "", "height of the slingshot's pouch above the ground", "m", -1},
+            {"time_limit", "", "the level's time limit", "s", -1},
+            {"strength", "MATERIAL", "impulse a block absorbs before it breaks", "N s", -1},
+            {"density", "MATERIAL", "bulk density of the material", "kg/m^3", -1},
+            {"areal_density", "MATERIAL", "mass per square metre of a 2D block (bulk density x slab depth)", "kg/m^2",
+             -1},
+            {"friction", "MATERIAL", "friction coefficient", "", -1},
+            {"health", "PIG", "impulse a pig absorbs before it is defeated", "N s", -1},
+            {"earth_g", "", "Earth's gravity, 9.81", "m/s^2", -1},
+            {"earth_rho", "", "Earth's air density at sea level, 1.2", "kg/m^3", -1},
+        };
+        list.insert(list.end(), rest.begin(), rest.end());
+        for (std::size_t i = 0; i < list.size(); ++i)
+            for (std::size_t j = 0; j < i; ++j)
+                if (std::string_view(list[i].name) == list[j].name)
+                    throw std::logic_error("the placeholder \"" + std::string(list[i].name) +
+                                           "\" is named twice (an ability's text_values in the catalog?)");
+        return list;
+    }();
     return names;
 }
 
@@ -254,20 +270,14 @@ double evaluate(const LevelDef& level, const Catalog& seen, std::string_view nam
         return level.slingshot.maxForceN;
     if (name == "pull")
         return level.slingshot.maxPullM;
-    if (name == "boost")
-    {
-        const Ability* boost = seen.findAbility("boost");
-        if (boost == nullptr)
-            fail("{boost}: no bird of the catalog has the boost ability");
-        return boost->number("speed_gain_mps");
-    }
-    if (name == "egg_mass" || name == "egg_push")
-    {
-        const Ability* egg = seen.findAbility("egg");
-        if (egg == nullptr)
-            fail("{" + std::string(name) + "}: no bird of the catalog has the egg ability");
-        return egg->number(name == "egg_mass" ? "mass_kg" : "push_speed_mps");
-    }
+    for (const AbilityTextValue& value : Catalog::builtin().abilityTextValues())
+        if (name == value.name)
+        {
+            const Ability* ability = seen.findAbility(value.ability);
+            if (ability == nullptr)
+                fail(braced(name) + ": no bird of the catalog has the " + value.ability + " ability");
+            return ability->number(value.number);
+        }
     if (name == "g")
         return air.gravity;
     if (name == "rho")

@@ -200,7 +200,7 @@ void BirdFlight::addProjectile(const ProjectileSpec& spec)
     entity.typeName = spec.typeName;
     entity.shape = BlockShape::Circle;
     entity.widthM = entity.heightM = 2.0 * spec.radiusM;
-    entity.causeAs = spec.causeAs;
+    entity.shotBird = spec.shotBird;
     entity.madeBy = m_birdType.ability.get();
     const int index = m_bodies.addEntity(entity);
     createBody(index, spec.radiusM, spec.massKg, m_birdType.friction, m_birdType.restitution, spec.state);
@@ -335,7 +335,7 @@ void BirdFlight::retire()
                 if (ground && projectile.groundSinceS < 0.0)
                     projectile.groundSinceS = now;
                 // The split birds are the shot's birds too; an egg is not.
-                if (!m_shotContactTimeS && m_bodies.entity(birdIndex).causeAs == CauseKind::Bird)
+                if (!m_shotContactTimeS && m_bodies.entity(birdIndex).shotBird)
                     m_shotContactTimeS = now;
             }
     }

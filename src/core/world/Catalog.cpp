@@ -109,6 +109,48 @@ std::vector<std::shared_ptr<const Ability>> readAbilities(const json& root, std:
     return made;
 }
 
+/// The abilities' "text_values": each names one of its ability's numbers.
+std::vector<AbilityTextValue> readAbilityTextValues(const json& root,
+                                                    const std::vector<std::shared_ptr<const Ability>>& made)
+{
+    std::vector<AbilityTextValue> values;
+    if (!root.contains("abilities"))
+        return values;
+    for (const auto& [ability, params] : root.at("abilities").items())
+    {
+        if (!params.contains("text_values"))
+            continue;
+        const std::string at = "/abilities/" + jsonPointerToken(ability) + "/text_values";
+        const json& declared = params.at("text_values");
+        if (!declared.is_object())
+            throw CatalogError{at, "expected an object of placeholder names"};
+        const auto owner = std::find_if(made.begin(), made.end(), [&](const auto& a) { return a->name() == ability; });
+        if (owner == made.end())
+            continue; // readAbilities has refused an ability it does not know
+        for (const auto& [name, value] : declared.items())
+        {
+            const std::string here = at + "/" + jsonPointerToken(name);
+            if (!value.is_object() || !value.contains("number") || !value.at("number").is_string())
+                throw CatalogError{here, "expected {\"number\": KEY, \"meaning\": TEXT, \"unit\": TEXT}"};
+            AbilityTextValue text{name, ability, value.at("number").get<std::string>(), value.value("meaning", ""),
+                                  value.value("unit", "")};
+            try
+            {
+                (void)(*owner)->number(text.number);
+            }
+            catch (const std::out_of_range&)
+            {
+                throw CatalogError{here + "/number", ability + " has no number \"" + text.number + "\""};
+            }
+            for (const AbilityTextValue& other : values)
+                if (other.name == name)
+                    throw CatalogError{here, "the placeholder \"" + name + "\" is declared twice"};
+            values.push_back(std::move(text));
+        }
+    }
+    return values;
+}
+
 } // namespace
 
 Catalog Catalog::fromJson(std::string_view text, const std::string& fileName)
@@ -191,6 +233,7 @@ Catalog Catalog::fromJson(std::string_view text, const std::string& fileName)
                 throw std::runtime_error("model_player: the aim's standard deviations must be >= 0");
         }
         catalog.m_abilities = readAbilities(root, catalog.m_birds);
+        catalog.m_abilityTextValues = readAbilityTextValues(root, catalog.m_abilities);
     }
     catch (const CatalogError& e)
     {

@@ -216,7 +216,7 @@ DefeatCause Damage::causeOf(int index) const
     case EntityKind::Pig:
         return {CauseKind::Pig, e.defIndex};
     case EntityKind::Bird:
-        return {e.causeAs, -1};
+        return e.shotBird ? DefeatCause{CauseKind::Bird, -1} : DefeatCause{CauseKind::Ability, -1, e.madeBy};
     case EntityKind::Ground:
     case EntityKind::Terrain:
         break;

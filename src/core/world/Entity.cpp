@@ -1,3 +1,4 @@
+#include <abalike/world/Ability.hpp>
 #include <abalike/world/Entity.hpp>
 
 namespace abalike
@@ -33,14 +34,21 @@ const char* causeKindName(CauseKind kind)
         return "pig";
     case CauseKind::Explosion:
         return "explosion";
-    case CauseKind::Egg:
-        return "egg";
+    case CauseKind::Ability:
+        return "ability";
     case CauseKind::Ground:
         return "ground";
     case CauseKind::OutOfBounds:
         return "out_of_bounds";
     }
     return "ground";
+}
+
+std::string causeName(const DefeatCause& cause)
+{
+    if (cause.kind == CauseKind::Ability && cause.ability != nullptr)
+        return std::string(cause.ability->name());
+    return causeKindName(cause.kind);
 }
 
 } // namespace abalike

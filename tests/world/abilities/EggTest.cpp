@@ -47,5 +47,32 @@ TEST(Abilities, EggAndBirdGetEqualAndOppositeImpulses)
     EXPECT_EQ(session.world().projectilesInPlay(), 0) << "the egg is cleared when the shot ends";
 }
 
+TEST(Abilities, WhatTheEggBreaksIsCausedByTheEggAbility)
+{
+    // A row of pigs under the white bird's flight: the egg dropped early lands on one of them. Its cause is the ability
+    // that dropped it (named "egg" in simulate's JSON and the trace), not the shot's bird.
+    LevelDef level;
+    level.birds = {"white"};
+    for (int i = 0; i < 30; ++i)
+        level.pigs.push_back({"small", 3.0 + 0.6 * i, 0.25});
+    GameSession session(level);
+    launchAndFly(session, 60.0, 16.0, 0.3);
+    ASSERT_TRUE(session.activateAbility());
+    while (session.phase() == Phase::Flying)
+        session.step();
+    int byEgg = 0;
+    for (const DestroyedEvent& defeat : session.destroyed())
+    {
+        if (defeat.cause.kind != CauseKind::Ability)
+            continue;
+        ++byEgg;
+        ASSERT_NE(defeat.cause.ability, nullptr);
+        EXPECT_EQ(defeat.cause.ability->name(), "egg");
+        EXPECT_EQ(causeName(defeat.cause), "egg");
+    }
+    EXPECT_GE(byEgg, 1) << "the egg defeated no pig";
+    EXPECT_EQ(causeName({CauseKind::Bird, -1}), "bird");
+}
+
 } // namespace
 } // namespace abalike

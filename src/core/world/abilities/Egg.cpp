@@ -44,7 +44,7 @@ public:
         egg.model.massKg = m_massKg;
         egg.model.quadraticDrag = quadraticDragCoefficient(world.airDensity(), kEggDragCoefficient, m_radiusM);
         egg.model.linearDrag *= m_radiusM / bird.radiusM; // Stokes drag grows with the radius
-        egg.causeAs = CauseKind::Egg;
+        egg.shotBird = false;
         world.addProjectile(egg);
         world.setBirdVelocity(s.velocity.x, s.velocity.y + push / bird.massKg);
         use.changedFlight = use.beforeContact;
