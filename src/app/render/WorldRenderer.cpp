@@ -29,6 +29,31 @@ sf::Transform bodyTransform(const b2Body& body)
     return transform;
 }
 
+/// A bird in the air faces where it goes, upright: turned to its velocity, mirrored when it flies leftwards (its
+/// drawing faces +x). Slower than this, or while it touches something (it rolls and tumbles), it keeps its body's
+/// angle.
+constexpr float kFacingSpeedMps = 0.5f;
+
+bool touchesAnything(const b2Body& body)
+{
+    for (const b2ContactEdge* edge = body.GetContactList(); edge != nullptr; edge = edge->next)
+        if (edge->contact->IsTouching())
+            return true;
+    return false;
+}
+
+sf::Transform facingTransform(const b2Body& body)
+{
+    const b2Vec2 v = body.GetLinearVelocity();
+    sf::Transform transform;
+    transform.translate(body.GetPosition().x, body.GetPosition().y);
+    if (v.x >= 0.0f)
+        transform.rotate(std::atan2(v.y, v.x) * kRadToDeg);
+    else
+        transform.rotate(std::atan2(-v.y, -v.x) * kRadToDeg).scale(-1.0f, 1.0f);
+    return transform;
+}
+
 sf::Transform placeAt(sf::Vector2f position)
 {
     sf::Transform transform;
@@ -271,9 +296,10 @@ void WorldRenderer::updateDazed(const GameSession& session)
 
 void WorldRenderer::addBird(const Entity& entity, const Catalog& catalog, std::size_t index, float pixelM)
 {
-    m_mesh.setLocalTransform(bodyTransform(*entity.body));
     const auto mood = index < m_dazed.size() && m_dazed[index] ? CharacterPainter::BirdMood::Dazed
                                                                : CharacterPainter::BirdMood::Angry;
+    const bool flying = entity.body->GetLinearVelocity().Length() > kFacingSpeedMps && !touchesAnything(*entity.body);
+    m_mesh.setLocalTransform(flying ? facingTransform(*entity.body) : bodyTransform(*entity.body));
     // A body an ability added may have a look of its own (an egg); the rest are birds of their type.
     if (entity.madeBy == nullptr || !abilityLook(entity.madeBy->name()).paintBody(m_mesh, entity, pixelM))
         CharacterPainter::paintBird(m_mesh, birdOf(catalog, entity.typeName), static_cast<float>(0.5 * entity.widthM),
