@@ -116,9 +116,10 @@ int runPerfBench(const BenchOptions& options)
     {
         const bool ok = l.realTimeFactor >= kMinRealTimeFactor;
         pass = pass && ok;
-        md << "| " << l.file << " | " << formatFixed(l.angleDeg, 1) << ", " << formatFixed(l.speedMps, 2) << " | " << l.shotSource
-           << " | " << l.stepsPerRun << " | " << formatFixed(l.steps.medianUs, 1) << " | " << formatFixed(l.steps.p95Us, 1) << " | "
-           << formatFixed(l.realTimeFactor, 0) << " | " << (ok ? "yes" : "NO") << " | " << formatFixed(l.atOnceFactor, 0) << " |\n";
+        md << "| " << l.file << " | " << formatFixed(l.angleDeg, 1) << ", " << formatFixed(l.speedMps, 2) << " | "
+           << l.shotSource << " | " << l.stepsPerRun << " | " << formatFixed(l.steps.medianUs, 1) << " | "
+           << formatFixed(l.steps.p95Us, 1) << " | " << formatFixed(l.realTimeFactor, 0) << " | " << (ok ? "yes" : "NO")
+           << " | " << formatFixed(l.atOnceFactor, 0) << " |\n";
     }
 
     md << "\n## " << plan.pyramidRows << "-row pyramid (" << pyramids[0].bodies
@@ -139,9 +140,10 @@ int runPerfBench(const BenchOptions& options)
     {
         const bool ok = p.overheadRatio <= kMaxOverhead;
         pass = pass && ok;
-        md << "| " << pyramidLabel(p) << " | " << formatFixed(p.ours.medianUs, 1) << " | " << formatFixed(p.ours.p95Us, 1) << " | "
-           << formatFixed(p.raw.medianUs, 1) << " | " << formatFixed(p.raw.p95Us, 1) << " | " << formatFixed(p.firstStepOursMs, 1)
-           << " / " << formatFixed(p.firstStepRawMs, 1) << " | " << formatFixed(p.overheadRatio, 3) << " / "
+        md << "| " << pyramidLabel(p) << " | " << formatFixed(p.ours.medianUs, 1) << " | "
+           << formatFixed(p.ours.p95Us, 1) << " | " << formatFixed(p.raw.medianUs, 1) << " | "
+           << formatFixed(p.raw.p95Us, 1) << " | " << formatFixed(p.firstStepOursMs, 1) << " / "
+           << formatFixed(p.firstStepRawMs, 1) << " | " << formatFixed(p.overheadRatio, 3) << " / "
            << formatFixed(p.medianRunRatio, 3) << " | " << (p.sameFinalState ? "yes, bit for bit" : "no") << " | "
            << (ok ? "yes" : "NO") << " |\n";
     }
@@ -200,9 +202,9 @@ int runPerfBench(const BenchOptions& options)
            << (r.settings.settleIterations == WorldSettings::kAutoSettle ? std::string("auto")
                                                                          : std::to_string(r.settings.settleIterations))
            << " | " << (r.settings.maxStackSubsteps > 1 ? "by depth" : std::to_string(r.substeps)) << " | "
-           << (r.settings.allowSleep ? "on" : "off") << " | " << r.failingScenes << " | " << formatFixed(r.maxDriftMm, 3)
-           << " | " << r.worstScene << " | " << formatFixed(r.usPerStep, 1) << " | " << formatFixed(r.pyramidUsPerStep, 1)
-           << " |\n";
+           << (r.settings.allowSleep ? "on" : "off") << " | " << r.failingScenes << " | "
+           << formatFixed(r.maxDriftMm, 3) << " | " << r.worstScene << " | " << formatFixed(r.usPerStep, 1) << " | "
+           << formatFixed(r.pyramidUsPerStep, 1) << " |\n";
 
     md << "\n## The automatic settle step and stack sub-steps per scene\n\n"
        << "Depth: the most bodies resting on each other; sub-steps: Box2D steps per game step for the stacks, "
@@ -213,8 +215,8 @@ int runPerfBench(const BenchOptions& options)
        << "|---|---:|---:|---:|---:|---:|---:|---|\n";
     for (const SettleRow& r : settle)
         md << "| " << r.scene << " | " << r.bodies << " | " << r.depth << " | " << r.substeps << " | " << r.iterations
-           << " | " << formatFixed(r.firstStepMs, 1) << " | " << formatFixed(r.maxDriftMm, 3) << " | " << (r.stands ? "yes" : "NO")
-           << " |\n";
+           << " | " << formatFixed(r.firstStepMs, 1) << " | " << formatFixed(r.maxDriftMm, 3) << " | "
+           << (r.stands ? "yes" : "NO") << " |\n";
     md << "\nResult: " << (pass ? "every target met" : "a target was MISSED") << ".\n";
 
     const std::filesystem::path out(options.outDir);

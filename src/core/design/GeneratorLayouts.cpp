@@ -52,9 +52,9 @@ std::vector<double> storeyLines(const LevelDef& part, const Catalog& catalog)
     {
         const double y = hi.y;
         const bool floor = hi.x - lo.x >= hi.y - lo.y - kSameEdgeM;
-        const bool crossed =
-            std::any_of(blocks.begin(), blocks.end(),
-                        [&](const std::array<Vec2, 2>& b) { return b[0].y < y - kSameEdgeM && b[1].y > y + kSameEdgeM; });
+        const bool crossed = std::any_of(blocks.begin(), blocks.end(),
+                                         [&](const std::array<Vec2, 2>& b)
+                                         { return b[0].y < y - kSameEdgeM && b[1].y > y + kSameEdgeM; });
         if (floor && !crossed && y >= top / 3.0 - kSameEdgeM && y < top - kSameEdgeM)
             lines.insert(y);
     }
@@ -412,13 +412,14 @@ std::set<std::pair<int, int>> occupancy(const LevelDef& level, const Catalog& ca
         origin = std::min(origin, lo.x);
     std::set<std::pair<int, int>> cells;
     for (const auto& [lo, hi] : boxes)
-        for (int c = static_cast<int>(std::floor((lo.x - origin) / kCell)); (c + 0.5) * kCell + origin <= hi.x + kSameEdgeM;
-             ++c)
+        for (int c = static_cast<int>(std::floor((lo.x - origin) / kCell));
+             (c + 0.5) * kCell + origin <= hi.x + kSameEdgeM; ++c)
             for (int r = static_cast<int>(std::floor(lo.y / kCell)); (r + 0.5) * kCell <= hi.y + kSameEdgeM; ++r)
             {
                 const double x = (c + 0.5) * kCell + origin;
                 const double y = (r + 0.5) * kCell;
-                if (x >= lo.x - kSameEdgeM && x <= hi.x + kSameEdgeM && y >= lo.y - kSameEdgeM && y <= hi.y + kSameEdgeM)
+                if (x >= lo.x - kSameEdgeM && x <= hi.x + kSameEdgeM && y >= lo.y - kSameEdgeM &&
+                    y <= hi.y + kSameEdgeM)
                     cells.insert({c, r});
             }
     return cells;

@@ -1,7 +1,7 @@
 #include "level/JsonLocator.hpp"
 #include "level/JsonText.hpp"
-#include <abalike/level/LevelLimits.hpp>
 #include "level/LevelReader.hpp"
+#include <abalike/level/LevelLimits.hpp>
 
 #include <abalike/level/LevelIO.hpp>
 

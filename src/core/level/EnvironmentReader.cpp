@@ -1,5 +1,5 @@
-#include <abalike/level/LevelLimits.hpp>
 #include "level/LevelSections.hpp"
+#include <abalike/level/LevelLimits.hpp>
 
 #include <numbers>
 #include <sstream>

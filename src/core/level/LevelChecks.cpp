@@ -1,7 +1,7 @@
-#include <abalike/level/LevelLimits.hpp>
 #include "level/LevelSections.hpp"
 #include "level/Outline.hpp"
 #include "level/Reach.hpp"
+#include <abalike/level/LevelLimits.hpp>
 
 #include <abalike/level/LevelFlight.hpp>
 #include <abalike/world/BirdBody.hpp>

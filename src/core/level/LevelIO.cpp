@@ -1,8 +1,8 @@
 #include "level/JsonLocator.hpp"
 #include "level/JsonText.hpp"
-#include <abalike/level/LevelLimits.hpp>
 #include "level/LevelReader.hpp"
 #include "level/LevelSections.hpp"
+#include <abalike/level/LevelLimits.hpp>
 
 #include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelIO.hpp>

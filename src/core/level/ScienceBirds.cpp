@@ -4,8 +4,8 @@
 #include <abalike/world/Catalog.hpp>
 #include <abalike/world/RestFindings.hpp>
 
-#include <abalike/level/LevelLimits.hpp>
 #include "level/XmlText.hpp"
+#include <abalike/level/LevelLimits.hpp>
 
 #include <algorithm>
 #include <charconv>
