@@ -236,6 +236,26 @@ TEST_F(EditorFlow, PlayingFromTheEditorReturnsToTheExactScene)
     EXPECT_NE(played.values("editor-edit", "play_view"), played.values("editor-play", "view"));
 }
 
+TEST_F(EditorFlow, ThePalettesBirdsJoinTheLaunchOrderAsUndoableEdits)
+{
+    // The palette's "Blue" bird button (beside its colour, under the pigs) clicked twice, Ctrl+Z once, Ctrl+S: the
+    // level keeps its birds and gains one blue bird at the end.
+    const std::string file = m_dir.file("birds.json");
+    std::filesystem::copy_file(sourceFile("levels/1-1-first-flight.json"), file);
+    const std::vector<std::string> before = nlohmann::json::parse(readText(file)).at("birds");
+    const GameRun run = edit("'" + file + "' --frames 30" + script(R"([
+        {"frame": 6, "mouse": "press", "button": "left", "x": 165, "y": 479},
+        {"frame": 6, "mouse": "release", "button": "left", "x": 165, "y": 479},
+        {"frame": 10, "mouse": "press", "button": "left", "x": 165, "y": 479},
+        {"frame": 10, "mouse": "release", "button": "left", "x": 165, "y": 479},
+        {"frame": 14, "key": "Z", "ctrl": true},
+        {"frame": 18, "key": "S", "ctrl": true}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    std::vector<std::string> expected = before;
+    expected.push_back("blue");
+    EXPECT_EQ(nlohmann::json::parse(readText(file)).at("birds").get<std::vector<std::string>>(), expected);
+}
+
 TEST_F(EditorFlow, UnsavedChangesAreNeverDroppedSilently)
 {
     // Esc with nothing selected leaves the editor; with unsaved changes it asks first, and the editor stays.

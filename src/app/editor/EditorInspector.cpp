@@ -105,6 +105,21 @@ void EditorInspector::setProperties(const LevelDef& properties, const char* labe
     m_play.sync();
 }
 
+void EditorInspector::addBird(const std::string& name)
+{
+    LevelDef next = m_ctx.scene().level();
+    if (next.birds.size() >= limits::kMaxBirds)
+    {
+        m_ctx.message = "The level already has " + std::to_string(limits::kMaxBirds) +
+                        " birds, as many as a level may; remove one in the Bird tab first.";
+        m_ctx.messageIsError = true;
+        return;
+    }
+    next.birds.push_back(name);
+    const std::string label = "Add a " + name + " bird";
+    setProperties(next, label.c_str(), "");
+}
+
 void EditorInspector::endGestureIfReleased()
 {
     if (ImGui::IsItemDeactivated())

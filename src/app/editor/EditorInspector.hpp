@@ -24,6 +24,9 @@ public:
     }
 
     void panel();
+    /// Adds a bird of the catalog's to the end of the launch order as one undoable edit (the palette's birds); says
+    /// why in the status line when the level already has as many as it may.
+    void addBird(const std::string& name);
 
 private:
     void selectionTab();

@@ -13,6 +13,7 @@
 #include "shell/AppContext.hpp"
 #include "shell/UiMetrics.hpp"
 
+#include <abalike/level/LevelLimits.hpp>
 #include <abalike/world/Catalog.hpp>
 #include <cstdio>
 #include <imgui.h>
@@ -207,6 +208,39 @@ void EditorPanels::prefabMenu()
     ImGui::EndMenu();
 }
 
+void EditorPanels::birdButtons(float buttonWidth)
+{
+    heading("Birds");
+    const float swatch = ImGui::GetFrameHeight();
+    const float labelWidth = buttonWidth - swatch - ImGui::GetStyle().ItemInnerSpacing.x;
+    int column = 0;
+    for (const BirdType& bird : Catalog::builtin().birds())
+    {
+        ImGui::PushID(bird.name.c_str());
+        if (column++ % 2 == 1)
+            ImGui::SameLine();
+        const Rgba& body = bird.look.body;
+        ImGui::ColorButton("##look", ImVec4(body[0] / 255.0f, body[1] / 255.0f, body[2] / 255.0f, 1.0f),
+                           ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop, ImVec2(swatch, swatch));
+        ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+        if (ImGui::Button(capitalised(bird.name).c_str(), ImVec2(labelWidth, 0.0f)))
+            m_inspector.addBird(bird.name);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Adds a %s bird (%.3g kg, ability: %s) at the end of the launch order.\nThe Bird tab "
+                              "reorders and removes them.",
+                              bird.name.c_str(), bird.massKg, std::string(bird.abilityName()).c_str());
+        ImGui::PopID();
+    }
+    const std::vector<std::string>& queue = m_ctx.scene().level().birds;
+    std::string order;
+    for (const std::string& name : queue)
+        order += (order.empty() ? "" : ", ") + name;
+    ImGui::TextDisabled("Launch order (%zu of %zu):", queue.size(), limits::kMaxBirds);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", order.c_str());
+    ImGui::PopTextWrapPos();
+}
+
 void EditorPanels::palettePanel()
 {
     const float menu = ImGui::GetFrameHeight();
@@ -289,6 +323,8 @@ void EditorPanels::palettePanel()
         if (active)
             ImGui::PopStyleColor();
     }
+
+    birdButtons(buttonWidth);
 
     heading("Scenery");
     if (ImGui::Button("Terrain (T)", ImVec2(buttonWidth, 0.0f)))

@@ -29,6 +29,8 @@ private:
     void menuBar();
     void prefabMenu();
     void palettePanel();
+    /// The palette's birds: one button per bird of the catalog, adding it to the end of the launch order.
+    void birdButtons(float buttonWidth);
     void statusBar();
     void findingTooltip();
 
