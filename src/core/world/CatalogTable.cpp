@@ -20,16 +20,152 @@ std::string fixed(double value, int decimals)
     return out.str();
 }
 
+std::string materialsTable(const Catalog& catalog)
+{
+    std::ostringstream md;
+    md << "| Material | Bulk density (kg/m³) | Areal density (kg/m²) | Friction | Restitution | Strength (N s) | "
+          "Points | Basis |\n"
+       << "|---|---:|---:|---:|---:|---:|---:|---|\n";
+    for (const Material& m : catalog.materials())
+        md << "| " << m.name << " | " << fixed(m.bulkDensityKgPerM3, 0) << " | " << fixed(m.densityKgPerM2, 0) << " | "
+           << fixed(m.friction, 2) << " | " << fixed(m.restitution, 2) << " | " << fixed(m.strengthNs, 0) << " | "
+           << m.points << " | " << m.note << " |\n";
+    return md.str();
+}
+
+double fullPullSpeed(const Catalog& catalog, const BirdType& bird)
+{
+    return SlingshotBand(SlingshotDef{}, bird.massKg, catalog.maxLaunchSpeedMps()).maxSpeedMps();
+}
+
+std::string birdsTable(const Catalog& catalog)
+{
+    std::ostringstream md;
+    md << "| Bird | Mass (kg) | Radius (m) | Drag Cd | Friction | Restitution | Ability | v0 at full pull (m/s) |"
+          " Momentum (N s) |\n"
+       << "|---|---:|---:|---:|---:|---:|---|---:|---:|\n";
+    for (const BirdType& b : catalog.birds())
+    {
+        const double v0 = fullPullSpeed(catalog, b);
+        md << "| " << b.name << " | " << fixed(b.massKg, 1) << " | " << fixed(b.radiusM, 2) << " | "
+           << fixed(b.dragCoefficient, 2) << " | " << fixed(b.friction, 2) << " | " << fixed(b.restitution, 2) << " | "
+           << b.abilityName() << " | " << fixed(v0, 1) << " | " << fixed(b.massKg * v0, 0) << " |\n";
+    }
+    return md.str();
+}
+
+/// The same band, every bird: one energy, speeds and momenta that differ by mass.
+std::string launchTable(const Catalog& catalog)
+{
+    const SlingshotDef sling;
+    const double energy = 0.5 * sling.maxForceN * sling.maxPullM;
+    std::ostringstream md;
+    md << "| Bird | Mass (kg) | v0 = √(2E/m) | Momentum m·v0 | Energy ½·m·v0² |\n|---|---:|---:|---:|---:|\n";
+    for (const BirdType& b : catalog.birds())
+    {
+        const double v0 = fullPullSpeed(catalog, b);
+        md << "| " << b.name << " | " << fixed(b.massKg, 1) << " | " << fixed(v0, 1) << " m/s | "
+           << fixed(b.massKg * v0, 0) << " N·s | " << fixed(std::min(energy, 0.5 * b.massKg * v0 * v0), 0) << " J |\n";
+    }
+    return md.str();
+}
+
+std::string abilitiesTable(const Catalog& catalog)
+{
+    std::ostringstream md;
+    md << "| Ability | Birds | Parameters | What it does |\n|---|---|---|---|\n";
+    for (const auto& ability : catalog.abilities())
+    {
+        std::string birds;
+        for (const BirdType& b : catalog.birds())
+            if (b.ability == ability)
+                birds += (birds.empty() ? "" : ", ") + b.name;
+        md << "| " << ability->name() << " | " << (birds.empty() ? "none" : birds) << " | " << ability->parameters()
+           << " | " << ability->description() << " |\n";
+    }
+    return md.str();
+}
+
+/// One line for a player: which bird has which ability.
+std::string birdAbilities(const Catalog& catalog)
+{
+    std::string line;
+    for (const BirdType& b : catalog.birds())
+        if (b.ability)
+            line += (line.empty() ? "" : ", ") + b.name + " bird: " + std::string(b.abilityName());
+    return line.empty() ? "no bird has one" : line;
+}
+
+template <typename Kind>
+std::string codeNames(const std::vector<Kind>& kinds)
+{
+    std::string line;
+    for (const Kind& kind : kinds)
+        line += (line.empty() ? "`" : ", `") + kind.name + "`";
+    return line;
+}
+
+std::string birdNames(const Catalog& catalog)
+{
+    return codeNames(catalog.birds());
+}
+
+std::string materialNames(const Catalog& catalog)
+{
+    return codeNames(catalog.materials());
+}
+
+std::string pigsTable(const Catalog& catalog)
+{
+    std::ostringstream md;
+    md << "| Pig | Radius (m) | Mass (kg) | Health (N s) | Points | Helmet |\n|---|---:|---:|---:|---:|---|\n";
+    for (const PigType& p : catalog.pigs())
+        md << "| " << p.name << " | " << fixed(p.radiusM, 2) << " | "
+           << fixed(p.densityKgPerM2 * std::numbers::pi * p.radiusM * p.radiusM, 1) << " | " << fixed(p.healthNs, 0)
+           << " | " << p.points << " | " << (p.helmet ? "yes" : "no") << " |\n";
+    return md.str();
+}
+
+struct DocSection
+{
+    const char* name;
+    std::string (*render)(const Catalog&);
+};
+
+constexpr DocSection kDocSections[] = {
+    {"materials", materialsTable},     {"birds", birdsTable},
+    {"launch", launchTable},           {"abilities", abilitiesTable},
+    {"bird-abilities", birdAbilities}, {"pigs", pigsTable},
+    {"bird-names", birdNames},         {"material-names", materialNames},
+};
+
 } // namespace
+
+std::vector<std::string_view> catalogDocSectionNames()
+{
+    std::vector<std::string_view> names;
+    for (const DocSection& section : kDocSections)
+        names.emplace_back(section.name);
+    return names;
+}
+
+std::optional<std::string> catalogDocSection(const Catalog& catalog, std::string_view name)
+{
+    for (const DocSection& section : kDocSections)
+        if (name == section.name)
+            return section.render(catalog);
+    return std::nullopt;
+}
 
 std::string catalogMarkdown(const Catalog& catalog)
 {
     std::ostringstream md;
     md << "# Materials, birds and pigs\n\n"
        << "Generated from `assets/catalog.json` (compiled into the core as `Catalog::builtin()`) by\n"
-       << "`catalogMarkdown()`; `tests/world/CatalogTableTest.cpp` fails when this file is out of date. Regenerate "
-          "it with\n"
-       << "`ABALIKE_UPDATE_DOCS=1 build/tests/abalike_tests --gtest_filter='CatalogTable.*'`.\n\n"
+       << "`catalogMarkdown()`; `tests/world/CatalogTableTest.cpp` fails when this file is out of date, and\n"
+       << "`tests/world/CatalogDocsTest.cpp` when a table or number another doc takes from the catalog is. "
+          "Regenerate both with\n"
+       << "`ABALIKE_UPDATE_DOCS=1 build/tests/abalike_tests --gtest_filter='Catalog*'`.\n\n"
        << "Box2D is 2D: every block is a slab " << fixed(catalog.slabDepthM(), 2)
        << " m deep, so its areal density (what Box2D uses) is the\n"
        << "bulk density times " << fixed(catalog.slabDepthM(), 2)
@@ -37,14 +173,7 @@ std::string catalogMarkdown(const Catalog& catalog)
        << "applies restitution only above 1 m/s closing speed. Strength is the impulse a block absorbs before it "
           "breaks.\n\n";
 
-    md << "## Materials\n\n"
-       << "| Material | Bulk density (kg/m³) | Areal density (kg/m²) | Friction | Restitution | Strength (N s) | "
-          "Points | Basis |\n"
-       << "|---|---:|---:|---:|---:|---:|---:|---|\n";
-    for (const Material& m : catalog.materials())
-        md << "| " << m.name << " | " << fixed(m.bulkDensityKgPerM3, 0) << " | " << fixed(m.densityKgPerM2, 0) << " | "
-           << fixed(m.friction, 2) << " | " << fixed(m.restitution, 2) << " | " << fixed(m.strengthNs, 0) << " | "
-           << m.points << " | " << m.note << " |\n";
+    md << "## Materials\n\n" << materialsTable(catalog);
 
     md << "\n## Mass ratios (Box2D: stacking degrades past 10:1, heavy on light)\n\n"
        << "Mass of a block resting on a block of the same size, divided by the mass of the one under it:\n\n"
@@ -80,28 +209,10 @@ std::string catalogMarkdown(const Catalog& catalog)
        << " m pull and stores E = 1/2 F x = " << fixed(0.5 * sling.maxForceN * sling.maxPullM, 0)
        << " J, which the bird leaves with as kinetic energy: v0 = sqrt(2 E / m), so the same pull sends a bird\n"
        << "twice as heavy 1/sqrt(2) as fast (docs/slingshot.md).\n\n"
-       << "| Bird | Mass (kg) | Radius (m) | Drag Cd | Friction | Restitution | Ability | v0 at full pull (m/s) |"
-          " Momentum (N s) |\n"
-       << "|---|---:|---:|---:|---:|---:|---|---:|---:|\n";
-    for (const BirdType& b : catalog.birds())
-    {
-        const double v0 = SlingshotBand(sling, b.massKg, catalog.maxLaunchSpeedMps()).maxSpeedMps();
-        md << "| " << b.name << " | " << fixed(b.massKg, 1) << " | " << fixed(b.radiusM, 2) << " | "
-           << fixed(b.dragCoefficient, 2) << " | " << fixed(b.friction, 2) << " | " << fixed(b.restitution, 2) << " | "
-           << b.abilityName() << " | " << fixed(v0, 1) << " | " << fixed(b.massKg * v0, 0) << " |\n";
-    }
+       << birdsTable(catalog);
 
-    md << "\n## Abilities (click or Space in flight)\n\n"
-       << "| Ability | Parameters | What it does |\n|---|---|---|\n";
-    for (const auto& ability : catalog.abilities())
-        md << "| " << ability->name() << " | " << ability->parameters() << " | " << ability->description() << " |\n";
-
-    md << "\n## Pigs\n\n"
-       << "| Pig | Radius (m) | Mass (kg) | Health (N s) | Points | Helmet |\n|---|---:|---:|---:|---:|---|\n";
-    for (const PigType& p : catalog.pigs())
-        md << "| " << p.name << " | " << fixed(p.radiusM, 2) << " | "
-           << fixed(p.densityKgPerM2 * std::numbers::pi * p.radiusM * p.radiusM, 1) << " | " << fixed(p.healthNs, 0)
-           << " | " << p.points << " | " << (p.helmet ? "yes" : "no") << " |\n";
+    md << "\n## Abilities (click or Space in flight)\n\n" << abilitiesTable(catalog);
+    md << "\n## Pigs\n\n" << pigsTable(catalog);
 
     const ScoringRules& s = catalog.scoring();
     md << "\n## Damage and scoring\n\n"
