@@ -165,7 +165,7 @@ std::string catalogMarkdown(const Catalog& catalog)
        << "`catalogMarkdown()`; `tests/world/CatalogTableTest.cpp` fails when this file is out of date, and\n"
        << "`tests/world/CatalogDocsTest.cpp` when a table or number another doc takes from the catalog is. "
           "Regenerate both with\n"
-       << "`ABALIKE_UPDATE_DOCS=1 build/tests/abalike_tests --gtest_filter='Catalog*'`.\n\n"
+       << "`ABALIKE_UPDATE_DOCS=1 build/tests/abalike_tests --gtest_filter='Catalog*Docs*'`.\n\n"
        << "Box2D is 2D: every block is a slab " << fixed(catalog.slabDepthM(), 2)
        << " m deep, so its areal density (what Box2D uses) is the\n"
        << "bulk density times " << fixed(catalog.slabDepthM(), 2)
