@@ -194,7 +194,7 @@ TEST(TeachPaths, SamplesCarryVelocitiesFromTheFlownPath)
     for (int i = 0; i <= 60; ++i)
     {
         const double t = i / 60.0;
-        path.push_back({t, 10.0 * t, 10.0 * t - 4.905 * t * t});
+        path.push_back({t, {10.0 * t, 10.0 * t - 4.905 * t * t}});
     }
     const std::vector<PathSample> samples = samplesOf(path);
     ASSERT_EQ(samples.size(), path.size());

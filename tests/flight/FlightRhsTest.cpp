@@ -31,16 +31,16 @@ TEST(FlightRhs, GravityOnlyIgnoresDragAndWindInTheModel)
     const FlightModel model = everything();
     const FlightRhs<kGravityTerm> rhs(model);
     FlightState dsdt{};
-    rhs({1.0, 2.0, 30.0, -5.0}, dsdt, 0.7);
-    EXPECT_EQ(dsdt, (FlightState{30.0, -5.0, 0.0, -9.81}));
-    EXPECT_EQ(rhs.stiffness({0, 0, 30, -5}, 0.0), 0.0);
+    rhs({{1.0, 2.0}, {30.0, -5.0}}, dsdt, 0.7);
+    EXPECT_EQ(dsdt, (FlightState{{30.0, -5.0}, {0.0, -9.81}}));
+    EXPECT_EQ(rhs.stiffness({{0, 0}, {30, -5}}, 0.0), 0.0);
     static_assert(!FlightRhs<kGravityTerm>::kHasDrag);
 }
 
 TEST(FlightRhs, EachTermAddsItsForce)
 {
     const FlightModel model = everything();
-    const FlightState s{0.0, 0.0, 10.0, 4.0};
+    const FlightState s{{0.0, 0.0}, {10.0, 4.0}};
     const double t = 1.0; // sin(2 pi / 4) = 1: the gust is (2, 0)
     FlightState d{};
 
@@ -65,7 +65,7 @@ TEST(FlightRhs, JacobianMatchesFiniteDifferences)
 {
     const FlightModel model = everything();
     const FlightRhs<kAllFlightTerms> rhs(model);
-    const FlightState s{0.0, 0.0, 12.0, -3.0};
+    const FlightState s{{0.0, 0.0}, {12.0, -3.0}};
     const double t = 0.3;
     std::array<double, 4> dadv{};
     Vec2 dadt{};

@@ -43,7 +43,7 @@ TEST(Prediction, LandsAtAGivenHeight)
     limits.stopOnLanding = true;
     limits.landingY = 0.0;
     // From 10 m up at 20 m/s horizontally: down after sqrt(2 h / g).
-    const PredictedFlight flight = predictFlight(FlightModel{}, {}, {0.0, 10.0, 20.0, 0.0}, limits);
+    const PredictedFlight flight = predictFlight(FlightModel{}, {}, {{0.0, 10.0}, {20.0, 0.0}}, limits);
     ASSERT_EQ(flight.end, FlightEnd::Landed);
     EXPECT_NEAR(flight.path.back().timeS, std::sqrt(20.0 / 9.81), 1e-12);
     EXPECT_NEAR(flight.path.back().state.position.x, 20.0 * std::sqrt(20.0 / 9.81), 1e-11);

@@ -33,23 +33,23 @@ void expectState(const FlightState& actual, const FlightState& expected, double 
 /// Spec section 16.1: x0 = y0 = 0, vx0 = vy0 = 10 m/s, dt = 1 s, g = 9.81 along -y, worked by hand.
 TEST(Rk4Walkthrough, ReproducesTheSpecsWorkedExample)
 {
-    const Rk4Walkthrough walk = walkRk4Step(FlightModel{}, 0.0, {0.0, 0.0, 10.0, 10.0}, 1.0);
+    const Rk4Walkthrough walk = walkRk4Step(FlightModel{}, 0.0, {{0.0, 0.0}, {10.0, 10.0}}, 1.0);
     // k1 = f(state); k2 = f(state + k1/2): y = 5, vy = 10 - 4.905; k3 = f(state + k2/2): y = 2.5475, vy = 5.095;
     // k4 = f(state + k3): y = 5.095, vy = 0.19.
-    expectState(walk.stages[0].slope, {10.0, 10.0, 0.0, -9.81}, 1e-12);
-    expectState(walk.stages[1].slope, {10.0, 5.095, 0.0, -9.81}, 1e-12);
-    expectState(walk.stages[2].slope, {10.0, 5.095, 0.0, -9.81}, 1e-12);
-    expectState(walk.stages[3].slope, {10.0, 0.19, 0.0, -9.81}, 1e-12);
-    expectState(walk.stages[1].at, {5.0, 5.0, 10.0, 5.095}, 1e-12);
-    expectState(walk.stages[2].at, {5.0, 2.5475, 10.0, 5.095}, 1e-12);
-    expectState(walk.stages[3].at, {10.0, 5.095, 10.0, 0.19}, 1e-12);
+    expectState(walk.stages[0].slope, {{10.0, 10.0}, {0.0, -9.81}}, 1e-12);
+    expectState(walk.stages[1].slope, {{10.0, 5.095}, {0.0, -9.81}}, 1e-12);
+    expectState(walk.stages[2].slope, {{10.0, 5.095}, {0.0, -9.81}}, 1e-12);
+    expectState(walk.stages[3].slope, {{10.0, 0.19}, {0.0, -9.81}}, 1e-12);
+    expectState(walk.stages[1].at, {{5.0, 5.0}, {10.0, 5.095}}, 1e-12);
+    expectState(walk.stages[2].at, {{5.0, 2.5475}, {10.0, 5.095}}, 1e-12);
+    expectState(walk.stages[3].at, {{10.0, 5.095}, {10.0, 0.19}}, 1e-12);
     EXPECT_DOUBLE_EQ(walk.stages[1].tS, 0.5);
     EXPECT_DOUBLE_EQ(walk.stages[3].tS, 1.0);
     // y1 = (10 + 2 * 5.095 + 2 * 5.095 + 0.19) / 6 = 5.095: RK4 is exact for the parabola.
-    expectState(walk.averageSlope, {10.0, 5.095, 0.0, -9.81}, 1e-12);
-    expectState(walk.next, {10.0, 5.095, 10.0, 0.19}, 1e-12);
+    expectState(walk.averageSlope, {{10.0, 5.095}, {0.0, -9.81}}, 1e-12);
+    expectState(walk.next, {{10.0, 5.095}, {10.0, 0.19}}, 1e-12);
     ASSERT_TRUE(walk.exact);
-    expectState(*walk.exact, {10.0, 5.095, 10.0, 0.19}, 1e-12);
+    expectState(*walk.exact, {{10.0, 5.095}, {10.0, 0.19}}, 1e-12);
 }
 
 /// The walkthrough's step is the integrator's step, bit for bit: what the panel shows is what the preview does.
@@ -85,7 +85,7 @@ TEST(Rk4Walkthrough, SlopesAreDerivativesWhereTheyAreEvaluated)
     model.gusts->kind = GustDef::Kind::Sine;
     model.gusts->amplitudeX = 4.0;
     model.gusts->periodS = 2.0;
-    const FlightState s = {0.0, 1.0, 20.0, 5.0};
+    const FlightState s = {{0.0, 1.0}, {20.0, 5.0}};
     const double h = 0.1;
     const Rk4Walkthrough walk = walkRk4Step(model, 0.3, s, h);
     const FlightIntegrator rhs(model, {});
@@ -108,7 +108,7 @@ TEST(Rk4Walkthrough, ExactWithLinearDragAndWindShowsTheFifthOrderLocalError)
     FlightModel model;
     model.linearDrag = 0.5;
     model.windX = 3.0;
-    const FlightState s = {0.0, 0.0, 10.0, 10.0};
+    const FlightState s = {{0.0, 0.0}, {10.0, 10.0}};
     // Local error of RK4 is O(h^5): halving the step divides it by about 32.
     const auto error = [&](double h)
     {
@@ -125,13 +125,13 @@ TEST(Rk4Walkthrough, ExactWithLinearDragAndWindShowsTheFifthOrderLocalError)
 
 TEST(Rk4Walkthrough, RejectsInvalidInput)
 {
-    EXPECT_THROW(walkRk4Step(FlightModel{}, 0.0, {0, 0, 1, 1}, 0.0), std::invalid_argument);
-    EXPECT_THROW(walkRk4Step(FlightModel{}, 0.0, {0, 0, 1, 1}, -1.0), std::invalid_argument);
-    EXPECT_THROW(walkRk4Step(FlightModel{}, 0.0, {0, 0, NAN, 1}, 1.0), std::invalid_argument);
-    EXPECT_THROW(walkRk4Step(FlightModel{}, INFINITY, {0, 0, 1, 1}, 1.0), std::invalid_argument);
+    EXPECT_THROW(walkRk4Step(FlightModel{}, 0.0, {{0, 0}, {1, 1}}, 0.0), std::invalid_argument);
+    EXPECT_THROW(walkRk4Step(FlightModel{}, 0.0, {{0, 0}, {1, 1}}, -1.0), std::invalid_argument);
+    EXPECT_THROW(walkRk4Step(FlightModel{}, 0.0, {{0, 0}, {NAN, 1}}, 1.0), std::invalid_argument);
+    EXPECT_THROW(walkRk4Step(FlightModel{}, INFINITY, {{0, 0}, {1, 1}}, 1.0), std::invalid_argument);
     FlightModel massless;
     massless.massKg = 0.0;
-    EXPECT_THROW(walkRk4Step(massless, 0.0, {0, 0, 1, 1}, 1.0), std::invalid_argument);
+    EXPECT_THROW(walkRk4Step(massless, 0.0, {{0, 0}, {1, 1}}, 1.0), std::invalid_argument);
 }
 
 } // namespace

@@ -77,7 +77,7 @@ TEST(BlockShapes, ABirdCanFlyIntoAHollowBoxFromAbove)
     const BirdType& blue = *Catalog::builtin().findBird("blue");
     FlightModel model;
     model.massKg = blue.massKg;
-    world.launchBird(blue, model, {10.0 - 0.6 + 0.05, 3.0, 0.0, -5.0});
+    world.launchBird(blue, model, {{10.0 - 0.6 + 0.05, 3.0}, {0.0, -5.0}});
     for (int i = 0; i < 60; ++i)
         world.step();
     ASSERT_TRUE(world.birdContact().has_value());

@@ -63,7 +63,7 @@ Flight flyAtWall(bool staticWall, const std::string& birdName, double speed, con
     const BirdType& bird = *unbreakableStone().findBird(birdName);
     FlightModel model;
     model.massKg = bird.massKg;
-    world.launchBird(bird, model, {0.0, 1.5, speed, 0.0});
+    world.launchBird(bird, model, {{0.0, 1.5}, {speed, 0.0}});
     Flight flight;
     flight.launchSpeed = speed;
     for (int i = 0; i < 90 && world.bird() != nullptr; ++i)

@@ -11,6 +11,11 @@ namespace abalike
 /// A point of a flight path in time.
 struct PathPoint
 {
+    PathPoint() = default;
+    /// So that a path's vector builds each point in place (emplace_back; clang 14 has no parenthesised aggregate
+    /// initialisation).
+    PathPoint(double time, const FlightState& at) : timeS(time), state(at) {}
+
     double timeS = 0.0;
     FlightState state{};
 };

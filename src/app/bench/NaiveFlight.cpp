@@ -31,7 +31,7 @@ public:
             return;
         const b2Vec2 p = m_bird->GetPosition();
         const b2Vec2 v = m_bird->GetLinearVelocity();
-        touch = FlightState{p.x, p.y, v.x, v.y};
+        touch = FlightState{{p.x, p.y}, {v.x, v.y}};
     }
 
     std::optional<FlightState> touch;
@@ -102,7 +102,7 @@ std::optional<FlightState> naiveFirstContact(const ReferenceShot& shot, const Na
         // Drag and wind as a force from the current velocity; gravity is the world's.
         const b2Vec2 p = body->GetPosition();
         const b2Vec2 v = body->GetLinearVelocity();
-        const FlightState a = forces.rightHandSide(step * h, {p.x, p.y, v.x, v.y});
+        const FlightState a = forces.rightHandSide(step * h, {{p.x, p.y}, {v.x, v.y}});
         const double mass = body->GetMass();
         body->ApplyForceToCenter(
             b2Vec2(static_cast<float>(mass * a.velocity.x), static_cast<float>(mass * (a.velocity.y + shot.gravity))),

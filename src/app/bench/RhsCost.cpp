@@ -56,7 +56,7 @@ double nsPerEvaluation(const Rhs& rhs, bool quick)
 {
     std::vector<FlightState> states;
     for (int i = 0; i < 1024; ++i)
-        states.push_back({0.1 * i, 0.05 * i, 30.0 * std::cos(0.01 * i), 25.0 * std::sin(0.013 * i)});
+        states.push_back({{0.1 * i, 0.05 * i}, {30.0 * std::cos(0.01 * i), 25.0 * std::sin(0.013 * i)}});
     auto sweep = [&]
     {
         FlightState dsdt{};

@@ -69,8 +69,8 @@ void printTable(const Rk4Walkthrough& walk)
 int runWalkthrough(const WalkthroughArgs& a)
 {
     const FlightModel model = parseFlightModel(a.model);
-    const FlightState state{parseFinite(a.x0, "--x0"), parseFinite(a.y0, "--y0"), parseFinite(a.vx, "--vx"),
-                            parseFinite(a.vy, "--vy")};
+    const FlightState state{{parseFinite(a.x0, "--x0"), parseFinite(a.y0, "--y0")},
+                            {parseFinite(a.vx, "--vx"), parseFinite(a.vy, "--vy")}};
     const double dt = a.dt.empty() ? 1.0 / 60.0 : parseFinite(a.dt, "--dt");
     if (dt <= 0.0)
         throw UsageError("--dt: must be > 0 s, got " + a.dt);

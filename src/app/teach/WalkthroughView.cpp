@@ -177,9 +177,9 @@ void WalkthroughView::drawWorld(sf::RenderTarget& target, const Camera& camera, 
     {
         const Rk4Stage& stage = m_walk->stages[i];
         const sf::Vector2f from = camera.toScreen(position(stage.at));
-        const sf::Vector2f to =
-            camera.toScreen(position({stage.at.position.x + dt * stage.slope.position.x,
-                                      stage.at.position.y + dt * stage.slope.position.y, 0.0, 0.0}));
+        const sf::Vector2f to = camera.toScreen(position(
+            {{stage.at.position.x + dt * stage.slope.position.x, stage.at.position.y + dt * stage.slope.position.y},
+             {0.0, 0.0}}));
         addArrow(mesh, from, to, 2.0f * scale, kStageColours[i]);
         mesh.addCircle(from, 3.0f * scale, kStageColours[i], 10);
     }
@@ -242,8 +242,9 @@ void WalkthroughView::drawPanel(sf::RenderTarget& target, const sf::Font& font, 
     for (const Rk4Stage& stage : w.stages)
     {
         points.push_back(position(stage.at));
-        points.push_back(position({stage.at.position.x + dt * stage.slope.position.x,
-                                   stage.at.position.y + dt * stage.slope.position.y, 0, 0}));
+        points.push_back(position(
+            {{stage.at.position.x + dt * stage.slope.position.x, stage.at.position.y + dt * stage.slope.position.y},
+             {0, 0}}));
     }
     points.push_back(position(w.next));
     const std::vector<FlightState> truth = finePath(m_model, w.t0S, w.state, dt);

@@ -112,7 +112,7 @@ double quadraticDragCoefficient(double airDensityKgPerM3, double dragCoefficient
 FlightState launchState(double x0, double y0, double speedMps, double angleDeg)
 {
     const double angle = angleDeg * std::numbers::pi / 180.0;
-    return {x0, y0, speedMps * std::cos(angle), speedMps * std::sin(angle)};
+    return {{x0, y0}, {speedMps * std::cos(angle), speedMps * std::sin(angle)}};
 }
 
 } // namespace abalike

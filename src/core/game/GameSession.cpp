@@ -121,7 +121,7 @@ void GameSession::launch(double angleDeg, double speedMps)
     const PredictedFlight predicted = preview(angleDeg, speedMps);
     shot.predictedContact = predicted.contact;
     for (const PathPoint& point : predicted.path)
-        shot.predictedPath.push_back({point.timeS, point.state.position.x, point.state.position.y});
+        shot.predictedPath.push_back({point.timeS, point.state.position});
     const auto p = launchPoint();
     m_world->launchBird(*bird, flightModelFor(*bird), launchState(p.x, p.y, speedMps, angleDeg));
     shot.actualPath = m_world->birdPath();

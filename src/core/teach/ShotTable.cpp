@@ -94,8 +94,8 @@ std::string shotTableCsv(const GameSession& session)
         {
             const double angle = shot.angleDeg * 3.14159265358979323846 / 180.0;
             replay.emplace(flightModel, settings,
-                           FlightState{shot.actualPath.front().position.x, shot.actualPath.front().position.y,
-                                       shot.speedMps * std::cos(angle), shot.speedMps * std::sin(angle)});
+                           FlightState{{shot.actualPath.front().position.x, shot.actualPath.front().position.y},
+                                       {shot.speedMps * std::cos(angle), shot.speedMps * std::sin(angle)}});
         }
         const double m = bird->massKg;
         double dragWork = 0.0;
@@ -142,7 +142,7 @@ std::string shotTableCsv(const GameSession& session)
                 dragWork = e.dragLossJ;
             }
             // The air's force on the bird: the model's acceleration less gravity; its power against the motion.
-            const FlightState s{x, y, vx, vy};
+            const FlightState s{{x, y}, {vx, vy}};
             const FlightState rate = model.rightHandSide(path[i].timeS, s);
             const double dragPower = -m * (rate.velocity.x * vx + (rate.velocity.y + g) * vy);
             if (i > 0 && !exact)

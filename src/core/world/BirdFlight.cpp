@@ -131,7 +131,7 @@ int BirdFlight::launch(const BirdType& bird, const FlightModel& model, const Fli
     m_contact.reset();
     m_contactKind.reset();
     m_impacts.reset();
-    m_path.assign(1, {0.0, s0.position.x, s0.position.y});
+    m_path.assign(1, {0.0, s0.position});
     m_pathTouches.assign(1, {});
     m_bodies.contacts().watchBird(body);
     return m_birdIndex;
@@ -178,7 +178,7 @@ FlightState BirdFlight::state() const
     const b2Body* body = m_bodies.entity(m_birdIndex).body;
     const b2Vec2 p = body->GetPosition();
     const b2Vec2 v = body->GetLinearVelocity();
-    return {p.x, p.y, v.x, v.y};
+    return {{p.x, p.y}, {v.x, v.y}};
 }
 
 void BirdFlight::setVelocity(double vx, double vy)
@@ -187,7 +187,7 @@ void BirdFlight::setVelocity(double vx, double vy)
     {
         // Re-seed the flight from the new state: the bird keeps following RK4, from here on along a new path.
         const FlightState s = m_flight->state();
-        m_flight->reset(m_flight->time(), {s.position.x, s.position.y, vx, vy});
+        m_flight->reset(m_flight->time(), {s.position, {vx, vy}});
         return;
     }
     m_bodies.entity(m_birdIndex).body->SetLinearVelocity(b2Vec2(static_cast<float>(vx), static_cast<float>(vy)));
@@ -249,7 +249,7 @@ void BirdFlight::applyFlightForces(b2Body* body, const FlightIntegrator& model, 
         return;
     const b2Vec2 p = body->GetPosition();
     const b2Vec2 v = body->GetLinearVelocity();
-    const FlightState s{p.x, p.y, v.x, v.y};
+    const FlightState s{{p.x, p.y}, {v.x, v.y}};
     const FlightState dsdt = model.rightHandSide(sinceLaunchS, s);
     const FlightModel& m = model.model();
     double ax = dsdt.velocity.x;
@@ -299,7 +299,7 @@ void BirdFlight::afterStep(const Vec2& stepStart)
             m_contactKind = m_bodies.entity(other).kind;
         if (m_flight)
             m_impacts.record(m_birdIndex, other, t);
-        m_path.push_back({t, touch.x, touch.y});
+        m_path.push_back({t, {touch.x, touch.y}});
         m_pathTouches.emplace_back();
         if (other >= 0)
             m_pathTouches.back().push_back(refOf(m_bodies.entity(other)));
@@ -307,7 +307,7 @@ void BirdFlight::afterStep(const Vec2& stepStart)
         body->SetGravityScale(1.0f);
     }
     const b2Vec2 p = body->GetPosition();
-    m_path.push_back({sinceLaunch, p.x, p.y});
+    m_path.push_back({sinceLaunch, {p.x, p.y}});
     m_pathTouches.push_back(touchedInStep(body));
 }
 

@@ -124,7 +124,10 @@ std::vector<AbilityTextValue> readAbilityTextValues(const json& root,
         const json& declared = params.at("text_values");
         if (!declared.is_object())
             throw CatalogError{at, "expected an object of placeholder names"};
-        const auto owner = std::find_if(made.begin(), made.end(), [&](const auto& a) { return a->name() == ability; });
+        // (a named copy: clang 14 cannot capture a structured binding)
+        const std::string& abilityName = ability;
+        const auto owner =
+            std::find_if(made.begin(), made.end(), [&](const auto& a) { return a->name() == abilityName; });
         if (owner == made.end())
             continue; // readAbilities has refused an ability it does not know
         for (const auto& [name, value] : declared.items())

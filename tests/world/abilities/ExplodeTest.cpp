@@ -20,7 +20,7 @@ TEST(Abilities, ExplosionPushesAndDamagesWithLinearFalloff)
     const BirdType& black = *Catalog::builtin().findBird("black");
     FlightModel model;
     model.massKg = black.massKg;
-    world.launchBird(black, model, {18.5, 1.0, 1.0, 0.0}); // 1.5 m left of the tower
+    world.launchBird(black, model, {{18.5, 1.0}, {1.0, 0.0}}); // 1.5 m left of the tower
     std::vector<double> healthBefore;
     for (const Entity& e : world.entities())
         healthBefore.push_back(e.health);
@@ -60,7 +60,7 @@ TEST(Abilities, TheBlackBirdsBlastBreaksStoneBesideIt)
     const BirdType& black = *Catalog::builtin().findBird("black");
     FlightModel model;
     model.massKg = black.massKg;
-    world.launchBird(black, model, {10.0 - 0.8, 0.5, 0.0, 0.0});
+    world.launchBird(black, model, {{10.0 - 0.8, 0.5}, {0.0, 0.0}});
     ASSERT_TRUE(world.activateAbility().has_value());
     EXPECT_FALSE(world.entities()[1].alive) << "500 N s x (1 - 0.8 / 3) = 367 N s against stone's 300";
 }
@@ -87,7 +87,7 @@ TEST(Abilities, ABodyTheBlastFlingsStopsAtAThinPlank)
     const BirdType& black = *catalog.findBird("black");
     FlightModel model;
     model.massKg = black.massKg;
-    world.launchBird(black, model, {5.0, 0.25, 0.0, 0.0});
+    world.launchBird(black, model, {{5.0, 0.25}, {0.0, 0.0}});
     ASSERT_TRUE(world.activateAbility().has_value());
     const b2Body* pig = world.entities()[2].body;
     ASSERT_NE(pig, nullptr);

@@ -38,8 +38,8 @@ public:
         egg.typeName = "egg";
         egg.radiusM = m_radiusM;
         egg.massKg = m_massKg;
-        egg.state = {s.position.x, s.position.y - (bird.radiusM + m_radiusM), s.velocity.x,
-                     s.velocity.y - m_pushSpeedMps};
+        egg.state = {{s.position.x, s.position.y - (bird.radiusM + m_radiusM)},
+                     {s.velocity.x, s.velocity.y - m_pushSpeedMps}};
         egg.model = world.birdModel();
         egg.model.massKg = m_massKg;
         egg.model.quadraticDrag = quadraticDragCoefficient(world.airDensity(), kEggDragCoefficient, m_radiusM);

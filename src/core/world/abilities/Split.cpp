@@ -34,8 +34,8 @@ public:
         {
             const double c = std::cos(sign * angle);
             const double d = std::sin(sign * angle);
-            const FlightState fragment{s.position.x, s.position.y, c * s.velocity.x - d * s.velocity.y,
-                                       d * s.velocity.x + c * s.velocity.y};
+            const FlightState fragment{{s.position.x, s.position.y},
+                                       {c * s.velocity.x - d * s.velocity.y, d * s.velocity.x + c * s.velocity.y}};
             world.addProjectile({bird.name, bird.radiusM, bird.massKg, fragment, world.birdModel(), true});
             use.impulses.push_back({use.tS, s.position.x, s.position.y, bird.massKg * fragment.velocity.x,
                                     bird.massKg * fragment.velocity.y, "split bird"});
