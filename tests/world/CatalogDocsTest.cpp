@@ -3,7 +3,8 @@
 // and `<!--/-->` is the level texts' placeholder EXPR filled for the default level (docs/materials.md lists the
 // values), and one between `<!--[/json/pointer]-->` and `<!--/-->` is that number of assets/catalog.json. A bird's
 // mass or a material's strength written by hand beside its name is checked against the catalog. With
-// ABALIKE_UPDATE_DOCS=1 the test writes every generated part instead of comparing it.
+// ABALIKE_UPDATE_DOCS=1 the test writes every generated part instead of comparing it. A marker right after a
+// backtick is an example in code, left alone.
 #include <abalike/teach/TextValues.hpp>
 #include <abalike/world/CatalogTable.hpp>
 
@@ -80,6 +81,9 @@ std::string regenerate(const fs::path& path, const std::string& text, std::strin
     {
         // One alternative per kind of marker: a section (1, 2), a placeholder (3, 4), a catalog number (5, 6).
         const std::smatch& m = *it;
+        // A marker right after a backtick is an example written in code (docs/extending.md), not a marker.
+        if (m.position() > 0 && text[static_cast<std::size_t>(m.position()) - 1] == '`')
+            continue;
         std::string want;
         std::string have;
         std::string opening;

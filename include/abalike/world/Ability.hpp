@@ -94,8 +94,8 @@ public:
 };
 
 /// A bird's ability: one rule of physics the player triggers once in flight. Each ability is one file under
-/// src/core/world/abilities/ that registers itself (AbilityRegistrar); the catalog names it by its name and gives
-/// its numbers in "abilities" (docs/extending.md).
+/// src/core/world/abilities/ and one line of the table in AbilityTable.cpp; the catalog names it by its name and
+/// gives its numbers in "abilities" (docs/extending.md).
 class Ability
 {
 public:
