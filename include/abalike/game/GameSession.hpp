@@ -197,8 +197,8 @@ private:
     ScoreBreakdown m_score;
 };
 
-/// Plays the shots in order, headless, each as soon as its bird is ready (as the window does); returns the finished
-/// session.
+/// Plays the shots in order, headless, each as soon as its bird is ready, through the ShotSequence that `play --shot`
+/// drives too (so the window replays it exactly: docs/cli.md); returns the session once the shots are played out.
 /// Throws LaunchError if a shot cannot be fired (more shots than birds, too fast).
 std::unique_ptr<GameSession> simulateShots(const LevelDef& level, const std::vector<ScriptedShot>& shots,
                                            const Catalog& catalog = Catalog::builtin());

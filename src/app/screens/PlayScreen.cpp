@@ -21,6 +21,7 @@
 
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/world/RestFindings.hpp>
+#include <abalike/world/WorldDigest.hpp>
 #include <algorithm>
 #include <chrono>
 #include <exception>
@@ -33,6 +34,9 @@ namespace abalike::app
 
 namespace
 {
+/// How long a scripted shot's preview shows in the slingshot before it fires (game time; the world waits).
+constexpr double kScriptedHoldS = 0.5;
+
 sf::Vector2f toVector(const Vec2& p)
 {
     return {static_cast<float>(p.x), static_cast<float>(p.y)};
@@ -40,8 +44,8 @@ sf::Vector2f toVector(const Vec2& p)
 } // namespace
 
 PlayScreen::PlayScreen(AppContext& app, PlaySource source)
-    : PlayField(app, makePlayLayers(app)), m_source(std::move(source)), m_script(app.run().takeScriptedShots()),
-      m_reloadNotice(app.ui().font())
+    : PlayField(app, makePlayLayers(app)), m_source(std::move(source)),
+      m_script(app.run().takeScriptedShots(), kScriptedHoldS), m_reloadNotice(app.ui().font())
 {
     // On top of the shared layers: the toolbar sees clicks first, so a click on a button neither aims nor fires an
     // ability. (The editor's play mode has its own panels instead.)
@@ -153,7 +157,7 @@ void PlayScreen::resetShot()
 {
     resetAim();
     m_aimedBird = 0;
-    m_scriptAbilityAtS.reset();
+    m_script.dropAbility();
 }
 
 void PlayScreen::findRestProblems()
@@ -234,7 +238,7 @@ void PlayScreen::handleEvent(const sf::Event& event)
     const bool key = event.type == sf::Event::KeyPressed &&
                      (event.key.code == sf::Keyboard::Space || event.key.code == sf::Keyboard::Enter) &&
                      !m_app.run().input().lastPressRepeated();
-    const bool ability = (click || key) && m_session->canActivateAbility() && !m_scriptAbilityAtS;
+    const bool ability = (click || key) && m_session->canActivateAbility() && !m_script.abilityPending();
     if (ability)
         requestAbility();
 
@@ -307,16 +311,8 @@ void PlayScreen::stepOnce()
 void PlayScreen::physicsStep()
 {
     applyRequests();
-    // A scripted ability fires at the first step boundary at or after its time, as in `abalike simulate`.
-    if (m_scriptAbilityAtS && m_session->phase() == Phase::Flying &&
-        m_session->timeSinceLaunch() >= *m_scriptAbilityAtS - 1e-9)
-    {
-        m_session->activateAbility();
-        m_scriptAbilityAtS.reset();
-    }
-    if (m_session->phase() == Phase::Aiming && !m_session->winPending() && m_script.pending() != nullptr)
-        fireScriptedShot();
-    m_session->step();
+    if (!advanceScript())
+        return;
     // The genre's way: each new bird sits at rest in the pouch and is pulled afresh (learn mode keeps the last aim,
     // so that one change can be tried at a time).
     if (playMode() == PlayMode::Game && m_session->phase() == Phase::Aiming && !m_aim.dragging() &&
@@ -341,26 +337,28 @@ void PlayScreen::traceDefeats()
     m_destroyedTraced = destroyed.size();
 }
 
-void PlayScreen::fireScriptedShot()
+bool PlayScreen::advanceScript()
 {
     syncScriptedAim();
-    if (!m_script.tick(m_session->world().dt()))
-        return;
-    const ScriptedShot shot = *m_script.pending();
-    m_script.advance();
-    ++m_scriptShotNumber;
+    ShotSequence::Tick tick = ShotSequence::Tick::Idle;
     try
     {
-        m_session->launch(shot);
-        m_app.trace().write("launch", {{"angle_deg", shot.angleDeg}, {"speed", shot.speedMps}, {"scripted", true}});
+        tick = m_script.advance(*m_session, m_session->world().dt());
     }
     catch (const LaunchError& error)
     {
-        std::cerr << "abalike: shot " << m_scriptShotNumber << ": " << error.what() << "\n";
+        std::cerr << "abalike: " << error.what() << "\n";
         m_app.navigator().quit(2);
-        return;
+        return false;
     }
-    m_scriptAbilityAtS = shot.abilityAtS;
+    if (const std::optional<std::size_t> fired = m_script.firedNumber())
+    {
+        const ScriptedShot& shot = m_script.shot(*fired);
+        m_app.trace().write("launch", {{"angle_deg", shot.angleDeg}, {"speed", shot.speedMps}, {"scripted", true}});
+    }
+    if (tick == ShotSequence::Tick::Idle)
+        m_session->step(); // no script, or none of it left: the world moves on while the player aims
+    return tick != ShotSequence::Tick::Held;
 }
 
 void PlayScreen::finishIfDone()
@@ -373,7 +371,9 @@ void PlayScreen::finishIfDone()
                                      {"won", session.phase() == Phase::Won},
                                      {"reason", session.endReason()},
                                      {"score", session.score().total()},
-                                     {"stars", session.stars()}});
+                                     {"stars", session.stars()},
+                                     {"sim_time_s", session.simTime()},
+                                     {"bodies_digest", bodiesDigest(session.world())}});
     // Only campaign levels count towards progress; a scene from a file or the editor is not the player's record.
     if (m_source.campaignIndex)
         m_app.progress().recordResult(m_app.progress().campaign().levels[*m_source.campaignIndex].key,

@@ -1,7 +1,6 @@
 #pragma once
 
 #include "endless/EndlessGame.hpp"
-#include "input/ShotScript.hpp"
 #include "play/FastForward.hpp"
 #include "play/PlayField.hpp"
 #include "render/Camera.hpp"
@@ -12,6 +11,7 @@
 #include "shell/Screen.hpp"
 
 #include <abalike/game/GameSession.hpp>
+#include <abalike/game/ShotSequence.hpp>
 #include <abalike/level/LevelWatcher.hpp>
 #include <chrono>
 #include <cstddef>
@@ -92,7 +92,9 @@ private:
     /// One physics step: pending launches and abilities, scripted shots, then the world.
     void physicsStep();
     /// Fires the pending scripted shot once it has been shown long enough.
-    void fireScriptedShot();
+    /// Plays the script's part of one physics step; false when the world did not step (a shot's hold, or a shot
+    /// that could not be fired).
+    bool advanceScript();
     /// Writes each block broken and pig defeated since the last step to the trace as a "defeat" event.
     void traceDefeats();
     /// Starts the rest check of the level file as loaded on a worker thread (m_restFindings, for the banner).
@@ -118,10 +120,10 @@ private:
     CameraRig m_rig; ///< fitted at start, follows the shot, returns when the world settles; the player pans and zooms
     CameraControls m_cameraControls;
 
-    ShotScript m_script;
-    int m_aimedBird = 0;                      ///< the bird the aim belongs to (game mode pulls each bird afresh)
-    std::optional<double> m_scriptAbilityAtS; ///< when the scripted shot in flight uses its bird's ability
-    int m_scriptShotNumber = 0;
+    /// `--shot`: the timing `abalike simulate` uses; each shot's preview shows for kScriptedHoldS first, without
+    /// the world moving, so the window replays what the headless run computes.
+    ShotSequence m_script;
+    int m_aimedBird = 0; ///< the bird the aim belongs to (game mode pulls each bird afresh)
 
     std::optional<LevelWatcher> m_watcher;
     std::vector<std::string> m_reloadErrors;           ///< problems of the last edit that did not load

@@ -1,5 +1,7 @@
 #include "shell/SessionJson.hpp"
 
+#include <abalike/world/WorldDigest.hpp>
+
 namespace abalike::app
 {
 
@@ -122,6 +124,7 @@ nlohmann::ordered_json sessionToJson(const GameSession& session)
     out["pigs_remaining"] = session.pigsRemaining();
     out["birds_used"] = session.birdsUsed();
     out["sim_time_s"] = session.simTime();
+    out["bodies_digest"] = bodiesDigest(session.world());
     out["score_breakdown"] = {{"block_points", score.blockPoints},
                               {"blocks_destroyed", score.blocksDestroyed},
                               {"pig_points", score.pigPoints},

@@ -1,4 +1,5 @@
 #include <abalike/game/GameSession.hpp>
+#include <abalike/game/ShotSequence.hpp>
 #include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelFlight.hpp>
 #include <box2d/box2d.h>
@@ -355,37 +356,10 @@ std::unique_ptr<GameSession> simulateShots(const LevelDef& level, const std::vec
         throw LaunchError("shot " + std::to_string(level.birds.size() + 1) +
                           ": no bird left to launch (the level has " + std::to_string(level.birds.size()) + ")");
     auto session = std::make_unique<GameSession>(level, catalog);
-    double abilityAtS = -1.0; // < 0: no ability pending
-    const auto playOut = [&]
+    ShotSequence sequence(shots);
+    while (sequence.advance(*session, session->world().dt()) != ShotSequence::Tick::Idle)
     {
-        while (session->phase() == Phase::Flying || session->winPending())
-        {
-            // The ability fires at the first step boundary at or after its time (a bird that cannot use it by then
-            // -- it already touched something -- simply flies on).
-            if (abilityAtS >= 0.0 && session->timeSinceLaunch() >= abilityAtS - 1e-9)
-            {
-                session->activateAbility();
-                abilityAtS = -1.0;
-            }
-            session->step();
-        }
-    };
-    for (std::size_t i = 0; i < shots.size(); ++i)
-    {
-        playOut();
-        if (session->finished())
-            break; // the level ended before this shot; nothing left to shoot at
-        try
-        {
-            session->launch(shots[i]);
-        }
-        catch (const LaunchError& e)
-        {
-            throw LaunchError("shot " + std::to_string(i + 1) + ": " + e.what());
-        }
-        abilityAtS = shots[i].abilityAtS.value_or(-1.0);
     }
-    playOut();
     return session;
 }
 
