@@ -345,3 +345,42 @@ TEST(CheckCli, FixSnapsFloatingAndOverlappingBodiesAndKeepsTheFilesLayout)
 
 } // namespace
 } // namespace abalike::test
+
+namespace abalike::test
+{
+namespace
+{
+
+TEST(CheckCli, APackLevelWithoutEpisodeIsALocatedErrorWithItsFixAndPlayRefusesThePack)
+{
+    // A designer's pack: the level copied from the campaign with its "episode" line deleted.
+    const std::filesystem::path pack =
+        std::filesystem::temp_directory_path() / ("abalike-pack-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(pack);
+    std::filesystem::create_directories(pack);
+    std::ifstream in(sourcePath("levels/1-1-first-flight.json"));
+    std::string level{std::istreambuf_iterator<char>(in), {}};
+    const std::size_t episode = level.find("  \"episode\"");
+    ASSERT_NE(episode, std::string::npos);
+    level.erase(episode, level.find('\n', episode) + 1 - episode);
+    std::ofstream(pack / "first.json") << level;
+    std::ofstream(pack / "campaign.json")
+        << R"({"title": "Mine", "episodes": [{"id": "1", "title": "One", "levels": ["first.json"]}]})";
+    const std::string file = (pack / "first.json").string();
+    const std::string line = file + ":1:1: error: /: has no \"episode\", and the campaign lists it in episode \"1\"; "
+                                    "fix: add \"episode\": \"1\"";
+
+    const RunResult check = runAbalike("check " + (pack / "campaign.json").string());
+    EXPECT_EQ(check.exitCode, 2);
+    EXPECT_NE(check.err.find(line), std::string::npos) << check.err;
+    // play --pack says the same lines and opens nothing (no display is needed to refuse).
+    const RunResult play = runCommand("env -u DISPLAY " + std::string(ABALIKE_EXECUTABLE) + " play --pack " +
+                                      pack.string() + " --frames 1");
+    EXPECT_EQ(play.exitCode, 2);
+    EXPECT_NE(play.err.find(line), std::string::npos) << play.err;
+    EXPECT_NE(play.err.find("does not pass abalike check"), std::string::npos) << play.err;
+    std::filesystem::remove_all(pack);
+}
+
+} // namespace
+} // namespace abalike::test

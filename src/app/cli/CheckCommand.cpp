@@ -241,8 +241,19 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
     }
     const LevelDef& level = *report.level;
     if (!item.episode.empty() && level.episode != item.episode)
-        report.reasons.push_back("the campaign lists it in episode \"" + item.episode + "\" but it says \"" +
-                                 level.episode + "\"");
+    {
+        // The game files a level under the episode it says; one that says none would be nowhere.
+        LevelIssue issue{item.file, 0, 0, level.episode.empty() ? "" : "/episode",
+                         level.episode.empty()
+                             ? "has no \"episode\", and the campaign lists it in episode \"" + item.episode +
+                                   "\"; fix: add \"episode\": \"" + item.episode + "\""
+                             : "says \"episode\": \"" + level.episode + "\" but the campaign lists it in episode \"" +
+                                   item.episode + "\"; fix: set \"episode\": \"" + item.episode + "\""};
+        std::vector<LevelIssue> located{issue};
+        locateIssues(located, readText(item.file), item.file);
+        report.reasons.push_back(located.front().message);
+        report.issues.push_back(located.front());
+    }
 
     // What the texts promise, computed for this level: a promise that does not hold is an error at its claim.
     std::vector<LevelIssue> falseClaims;
@@ -467,17 +478,23 @@ std::vector<std::string> filledTexts(const CheckArgs& a, const FileReport& r)
     return out;
 }
 
+/// Every file the arguments name (a manifest: every level it lists), checked.
+std::vector<FileReport> checkAll(const CheckArgs& a)
+{
+    std::vector<FileReport> reports;
+    for (const CheckItem& item : expand(a.files, reports))
+        reports.push_back(checkFile(item, a));
+    checkUniqueIds(reports);
+    return reports;
+}
+
 int runCheck(const CheckArgs& a)
 {
     if (a.writeStars && !a.solve)
         throw UsageError("--write-stars: the stars come from the solver and the model player: add --solve");
     if (a.threads < 0 || a.threads > 256)
         throw UsageError("--threads: expected 0 (all cores) to 256, got " + std::to_string(a.threads));
-    std::vector<FileReport> reports;
-    for (const CheckItem& item : expand(a.files, reports))
-        reports.push_back(checkFile(item, a));
-    checkUniqueIds(reports);
-
+    const std::vector<FileReport> reports = checkAll(a);
     bool allOk = true;
     for (const FileReport& r : reports)
         allOk = allOk && r.ok();
@@ -518,6 +535,23 @@ int runCheck(const CheckArgs& a)
 }
 
 } // namespace
+
+bool packPassesCheck(const std::string& manifest, std::ostream& out)
+{
+    CheckArgs args;
+    args.files = {manifest};
+    bool allOk = true;
+    for (const FileReport& r : checkAll(args))
+    {
+        if (r.ok())
+            continue;
+        allOk = false;
+        out << escapeForTerminal(summaryLine(r)) << '\n';
+        for (const LevelIssue& issue : r.issues)
+            out << issue.format() << '\n';
+    }
+    return allOk;
+}
 
 CommandRunner addCheckCommand(CLI::App& app)
 {

@@ -2,6 +2,8 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <ostream>
+#include <string>
 
 namespace abalike::app
 {
@@ -22,5 +24,9 @@ CommandRunner addChartCommand(CLI::App& app);
 CommandRunner addFmtCommand(CLI::App& app);
 CommandRunner addImportCommand(CLI::App& app);
 CommandRunner addGenerateCommand(CLI::App& app);
+
+/// `abalike check MANIFEST` for `play --pack`: true when every level passes; else the failing files' lines, as
+/// check prints them, go to out.
+bool packPassesCheck(const std::string& manifest, std::ostream& out);
 
 } // namespace abalike::app

@@ -125,7 +125,15 @@ int runPlayCommand(PlayArgs a)
         const bool installed = std::any_of(campaign.levels.begin(), campaign.levels.end(),
                                            [&](const CampaignLevel& l) { return l.pack == packName; });
         if (!installed)
+        {
+            // A pack that `abalike check` fails is not played: the same lines say why.
+            const std::filesystem::path manifest = folder / "campaign.json";
+            if (std::filesystem::is_regular_file(manifest) && !packPassesCheck(manifest.string(), std::cerr))
+                throw UsageError("--pack: " + escapeForTerminal(a.pack) +
+                                 " does not pass abalike check (above); fix "
+                                 "what it says, then play it");
             appendLevelPack(campaign, a.pack, Catalog::builtin()); // its errors end the command, every one shown
+        }
     }
 
     SaveStore store(defaultDataDirectory());
