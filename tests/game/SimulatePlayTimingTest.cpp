@@ -105,7 +105,7 @@ TEST(SimulatePlayTiming, ImportedScienceBirdsLevelsEndTheSame)
     // Every bird fired in turn, low and fast then high: the structures are hit, fall and settle between shots.
     const std::filesystem::path folder = sourcePath("tests/level/science-birds");
     std::size_t files = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(folder))
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(folder))
     {
         if (entry.path().extension() != ".xml")
             continue;

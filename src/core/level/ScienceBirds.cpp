@@ -4,12 +4,15 @@
 #include <abalike/world/Catalog.hpp>
 #include <abalike/world/RestFindings.hpp>
 
+#include "level/LevelReader.hpp"
+#include "level/PushApart.hpp"
 #include "level/XmlText.hpp"
 #include <abalike/level/LevelLimits.hpp>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <numbers>
@@ -53,12 +56,45 @@ const std::map<std::string, std::string> kBirds = {
 const std::map<std::string, std::string> kPigs = {
     {"BasicSmall", "small"}, {"BasicMedium", "medium"}, {"BasicBig", "large"}};
 
-std::string joinedKeys(const std::map<std::string, std::string>& names)
+std::vector<std::string> keysOf(const std::map<std::string, std::string>& names)
 {
-    std::string text;
+    std::vector<std::string> keys;
     for (const auto& entry : names)
-        text.append(text.empty() ? "" : ", ").append(entry.first);
-    return text;
+        keys.push_back(entry.first);
+    return keys;
+}
+
+/// "(did you mean "RectSmall"?)" when one name is close to what was written, else "(expected one of A, B, ...)".
+std::string expectedName(const std::string& written, const std::vector<std::string>& names)
+{
+    if (const std::optional<std::string> suggestion = closestMatch(written, names))
+        return "(did you mean \"" + *suggestion + "\"?)";
+    std::string text;
+    for (const std::string& name : names)
+        text.append(text.empty() ? "" : ", ").append(name);
+    return "(expected one of " + text + ")";
+}
+
+/// The objects Science Birds' own levels are made of, inside <GameObjects>.
+const std::vector<std::string> kStandardObjects = {"Block", "Pig", "TNT", "Platform"};
+
+/// How far from square a rotation is still read as square. Science Birds' levels are often snapshots of a scene
+/// that settled (generator outputs record 359.6 or 89.75): ours start as written, and a stack tilted by a few tenths
+/// of a degree stands on corners and slides. Deliberate tilts are larger.
+constexpr double kSquareWithinDeg = 1.0;
+
+/// The rotation in (-180, 180], and a multiple of 90 when within kSquareWithinDeg of one.
+double cleanAngle(double degrees)
+{
+    double angle = std::fmod(degrees, 360.0);
+    if (angle > 180.0)
+        angle -= 360.0;
+    if (angle <= -180.0)
+        angle += 360.0;
+    const double quarter = std::round(angle / 90.0) * 90.0;
+    if (std::abs(angle - quarter) < kSquareWithinDeg)
+        return quarter == -0.0 ? 0.0 : quarter;
+    return std::round(angle * 1000.0) / 1000.0;
 }
 
 /// Reads one XML file into a level, collecting warnings and errors at their places.
@@ -101,11 +137,27 @@ private:
     void readPig(const pugi::xml_node& node);
     void readTnt(const pugi::xml_node& node);
     void readPlatform(const pugi::xml_node& node);
-    /// Science Birds' y with its ground at -3.5 to ours at 0, to the micrometre (its files give centimetres).
+    /// Science Birds' y with its ground at -3.5 to ours at 0, to the millimetre (its files give centimetres, and
+    /// generators write float noise such as 4.509999 for 4.51).
     static double ourY(double y) { return tidy(y - kScienceBirdsGroundY); }
-    static double tidy(double metres) { return std::round(metres * 1e6) / 1e6; }
+    static double tidy(double metres) { return std::round(metres * 1e3) / 1e3; }
+    /// cleanAngle, counting the rotations it made square (one warning says how many).
+    double squared(double degrees)
+    {
+        const double angle = cleanAngle(degrees);
+        double written = std::fmod(degrees, 360.0);
+        written += written > 180.0 ? -360.0 : written <= -180.0 ? 360.0 : 0.0;
+        if (std::abs(angle - written) > 1e-3 && std::fmod(angle, 90.0) == 0.0)
+        {
+            ++m_squaredRotations;
+            m_mostSquaredDeg = std::max(m_mostSquaredDeg, std::abs(angle - written));
+        }
+        return angle;
+    }
     void useOwnGround();
     void snapOntoSupports();
+    /// Overlaps the snap leaves (a pig sunk into the pigs under it, a plank into a post beside it): pushed apart.
+    void pushApart();
     void checkResult();
 
     std::string m_file;
@@ -117,6 +169,8 @@ private:
     std::map<std::string, std::size_t> m_placeOf; ///< a body's pointer -> its element's offset
     std::vector<LevelIssue> m_warnings;
     std::vector<LevelIssue> m_errors;
+    int m_squaredRotations = 0;
+    double m_mostSquaredDeg = 0.0;
 };
 
 std::optional<double> Importer::number(const pugi::xml_node& node, const char* name, std::optional<double> fallback,
@@ -142,6 +196,19 @@ std::optional<double> Importer::number(const pugi::xml_node& node, const char* n
         text.remove_suffix(1);
     if (!text.empty() && text.front() == '+')
         text.remove_prefix(1);
+    // Science Birds parses numbers in the machine's language: a file written on a machine whose language writes a
+    // decimal comma holds "-2,5", which loads there. One comma and no point reads as that decimal.
+    std::string withPoint(text);
+    const std::size_t comma = withPoint.find(',');
+    if (comma != std::string::npos && withPoint.find_first_of(",.", comma + 1) == std::string::npos &&
+        withPoint.find('.') == std::string::npos)
+    {
+        withPoint[comma] = '.';
+        warn(node, pointer,
+             "<" + element + "> " + name + "=\"" + attribute.value() + "\" has a decimal comma; read as " + name +
+                 "=\"" + withPoint + "\" (as Science Birds does on a machine whose language writes decimal commas)");
+        text = withPoint;
+    }
     double value = 0.0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
@@ -169,8 +236,8 @@ void Importer::readBirds(const pugi::xml_node& level)
             const std::string type = bird.attribute("type").value();
             const auto known = kBirds.find(type);
             if (known == kBirds.end())
-                fail(bird, "<Bird type=\"" + type + "\"> is not a Science Birds bird (expected one of " +
-                               joinedKeys(kBirds) + ")");
+                fail(bird,
+                     "<Bird type=\"" + type + "\"> is not a Science Birds bird " + expectedName(type, keysOf(kBirds)));
             else if (m_level.birds.size() == limits::kMaxBirds)
                 fail(bird, "more than " + std::to_string(limits::kMaxBirds) + " birds (a level has at most that many)");
             else
@@ -226,18 +293,6 @@ void Importer::readSlingshot(const pugi::xml_node& level)
     m_placeOf["/slingshot"] = offsetOf(slingshot);
 }
 
-/// Rotations written as 90.00001 mean 90: angles within a thousandth of a degree of a multiple of 90 become it.
-double cleanAngle(double degrees)
-{
-    double angle = std::fmod(degrees, 360.0);
-    if (angle > 180.0)
-        angle -= 360.0;
-    if (angle <= -180.0)
-        angle += 360.0;
-    const double quarter = std::round(angle / 90.0) * 90.0;
-    return std::abs(angle - quarter) < 1e-3 ? (quarter == -0.0 ? 0.0 : quarter) : angle;
-}
-
 void Importer::readBlock(const pugi::xml_node& node)
 {
     const std::string pointer = "/blocks/" + std::to_string(m_level.blocks.size());
@@ -248,10 +303,10 @@ void Importer::readBlock(const pugi::xml_node& node)
             piece = &candidate;
     if (piece == nullptr)
     {
-        std::string names;
+        std::vector<std::string> names;
         for (const Piece& candidate : kPieces)
-            names.append(names.empty() ? "" : ", ").append(candidate.name);
-        fail(node, "<Block type=\"" + type + "\"> is not a Science Birds block (expected one of " + names + ")");
+            names.push_back(candidate.name);
+        fail(node, "<Block type=\"" + type + "\"> is not one of Science Birds' 12 blocks " + expectedName(type, names));
         return;
     }
     BlockDef block;
@@ -284,9 +339,9 @@ void Importer::readBlock(const pugi::xml_node& node)
     const auto rotation = number(node, "rotation", 0.0, pointer);
     if (!x || !y || !rotation)
         return;
-    block.x = *x;
+    block.x = tidy(*x);
     block.y = ourY(*y);
-    block.angleDeg = block.shape == BlockShape::Circle ? 0.0 : cleanAngle(*rotation);
+    block.angleDeg = block.shape == BlockShape::Circle ? 0.0 : squared(*rotation);
     m_placeOf[pointer] = offsetOf(node);
     m_level.blocks.push_back(block);
 }
@@ -306,8 +361,7 @@ void Importer::readPig(const pugi::xml_node& node)
         const auto known = kPigs.find(type);
         if (known == kPigs.end())
         {
-            fail(node,
-                 "<Pig type=\"" + type + "\"> is not a Science Birds pig (expected one of " + joinedKeys(kPigs) + ")");
+            fail(node, "<Pig type=\"" + type + "\"> is not a Science Birds pig " + expectedName(type, keysOf(kPigs)));
             return;
         }
         pig.type = known->second;
@@ -316,7 +370,7 @@ void Importer::readPig(const pugi::xml_node& node)
     const auto y = number(node, "y", std::nullopt, pointer);
     if (!x || !y)
         return;
-    pig.x = *x;
+    pig.x = tidy(*x);
     pig.y = ourY(*y);
     m_placeOf[pointer] = offsetOf(node);
     m_level.pigs.push_back(pig);
@@ -333,9 +387,9 @@ void Importer::readTnt(const pugi::xml_node& node)
     BlockDef crate;
     crate.material = "tnt";
     crate.widthM = crate.heightM = kTntSizeM;
-    crate.x = *x;
+    crate.x = tidy(*x);
     crate.y = ourY(*y);
-    crate.angleDeg = cleanAngle(*rotation);
+    crate.angleDeg = squared(*rotation);
     m_placeOf[pointer] = offsetOf(node);
     m_level.blocks.push_back(crate);
 }
@@ -353,17 +407,26 @@ void Importer::readPlatform(const pugi::xml_node& node)
         node.attribute("rotation").empty() ? std::optional<double>(0.0) : number(node, "rotation", 0.0, pointer);
     if (!x || !y || !scaleX || !scaleY || !rotation)
         return;
-    if (*scaleX <= 0.0 || *scaleY <= 0.0)
+    // Science Birds (Unity) mirrors a platform with a negative scale and its collider keeps the size; one of scale 0
+    // has no size and nothing rests on it.
+    if (*scaleX == 0.0 || *scaleY == 0.0)
     {
-        fail(node, "<Platform> scaleX and scaleY must be greater than 0");
+        warn(node, "",
+             "<Platform> has scaleX=\"" + shortestNumber(*scaleX) + "\" scaleY=\"" + shortestNumber(*scaleY) +
+                 "\": no size, so nothing in Science Birds rests on it; left out");
         return;
     }
+    if (*scaleX < 0.0 || *scaleY < 0.0)
+        warn(node, pointer,
+             "<Platform> has a negative scale (scaleX=\"" + shortestNumber(*scaleX) + "\" scaleY=\"" +
+                 shortestNumber(*scaleY) + "\"): Science Birds mirrors it and keeps its size; read as " +
+                 shortestNumber(std::abs(*scaleX)) + " by " + shortestNumber(std::abs(*scaleY)) + " tiles");
     TerrainDef platform;
-    platform.x = *x;
+    platform.x = tidy(*x);
     platform.y = ourY(*y);
-    platform.widthM = kPlatformTileM * *scaleX;
-    platform.heightM = kPlatformTileM * *scaleY;
-    platform.angleDeg = cleanAngle(*rotation);
+    platform.widthM = tidy(kPlatformTileM * std::abs(*scaleX));
+    platform.heightM = tidy(kPlatformTileM * std::abs(*scaleY));
+    platform.angleDeg = squared(*rotation);
     m_placeOf[pointer] = offsetOf(node);
     m_level.terrain.push_back(platform);
 }
@@ -383,8 +446,11 @@ void Importer::readObjects(const pugi::xml_node& objects)
             readTnt(node);
         else if (name == "Platform")
             readPlatform(node);
+        else if (const std::optional<std::string> typo = closestMatch(name, kStandardObjects))
+            fail(node, "<" + name + "> is not a Science Birds object (did you mean <" + *typo + ">?)");
         else
-            warn(node, "", "<" + name + "> is not a Science Birds object; left out");
+            fail(node, "<" + name + "> is not one of Science Birds' standard objects (Block, Pig, TNT, Platform): " +
+                           "a novelty object (as Phy-Q's and NovPhy's levels add) has nothing to become here");
     }
 }
 
@@ -397,11 +463,19 @@ double bottomOf(const BlockDef& b)
     return b.y - 0.5 * (std::abs(b.widthM * std::sin(a)) + std::abs(b.heightM * std::cos(a)));
 }
 
-std::string centimetres(double metres)
+/// "2.0 cm": to the millimetre, or to a tenth of one where that would read the same as `than` (a gap of 10.04 cm
+/// beside a limit of 10 cm reads "10.04 cm", never "10.0 cm ... more than the 10.0 cm").
+std::string centimetres(double metres, double than = -1.0)
 {
-    const double cm = std::round(std::abs(metres) * 1000.0) / 10.0;
-    std::string text = std::to_string(cm);
-    return text.substr(0, text.find('.') + 2) + " cm";
+    const auto format = [](double m, int decimals)
+    {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.*f cm", decimals, std::abs(m) * 100.0);
+        return std::string(text);
+    };
+    if (than >= 0.0 && format(metres, 1) == format(than, 1))
+        return format(metres, 2);
+    return format(metres, 1);
 }
 
 void Importer::useOwnGround()
@@ -421,10 +495,31 @@ void Importer::useOwnGround()
             const PigType* type = m_catalog.findPig(m_level.pigs[i].type);
             gaps.push_back(m_level.pigs[i].y - (type ? type->radiusM : 0.25) - m_level.groundY);
         }
+    // Bodies written inside the ground say nothing about where it is: Science Birds' ground pushes them out.
+    gaps.erase(std::remove_if(gaps.begin(), gaps.end(), [](double gap) { return gap < -kScienceBirdsSnapM; }),
+               gaps.end());
     if (gaps.empty())
         return;
     const double lift = tidy(*std::min_element(gaps.begin(), gaps.end()));
     if (lift <= kScienceBirdsSnapM)
+        return;
+    // A ground of its own holds everything above it: when some body stands lower (on a platform reaching down to
+    // Science Birds' ground, as Phy-Q's levels do), the high ones stand on something the checks do not see as a
+    // support, and the file's ground is Science Birds' own.
+    double lowest = 1e300;
+    const auto consider = [&](double bottom)
+    {
+        if (bottom >= -kScienceBirdsSnapM)
+            lowest = std::min(lowest, bottom);
+    };
+    for (std::size_t i = 0; i < m_level.blocks.size(); ++i)
+        consider(bottomOf(m_level.blocks[i]) - m_level.groundY);
+    for (const PigDef& pig : m_level.pigs)
+    {
+        const PigType* type = m_catalog.findPig(pig.type);
+        consider(pig.y - (type ? type->radiusM : 0.25) - m_level.groundY);
+    }
+    if (lift > lowest + kScienceBirdsSnapM)
         return;
     for (BlockDef& block : m_level.blocks)
         block.y = tidy(block.y - lift);
@@ -447,12 +542,17 @@ void Importer::useOwnGround()
 
 void Importer::snapOntoSupports()
 {
+    // Science Birds builds a level a few centimetres apart and lets it fall into place; bodies that overlap or reach
+    // below the ground its physics pushes out at once. Each body, bottom to top, goes onto what is under it where
+    // that has ended up; whether it is close enough to be set there is judged by the gap in the file, so that gaps
+    // stacked up a tower never add up.
     struct Body
     {
         bool pig;
         int index;
         double bottom;
     };
+    const LevelDef asWritten = m_level;
     std::vector<Body> bodies;
     for (std::size_t i = 0; i < m_level.blocks.size(); ++i)
         bodies.push_back({false, static_cast<int>(i), bottomOf(m_level.blocks[i])});
@@ -464,28 +564,68 @@ void Importer::snapOntoSupports()
     std::stable_sort(bodies.begin(), bodies.end(), [](const Body& a, const Body& b) { return a.bottom < b.bottom; });
     for (const Body& body : bodies)
     {
-        const SupportGap gap = supportUnder(m_level, m_catalog, body.pig, body.index);
-        if (gap.support.empty() || std::abs(gap.gapM) < 1e-6)
-            continue;
         const std::string pointer = (body.pig ? "/pigs/" : "/blocks/") + std::to_string(body.index);
         const std::size_t offset = m_placeOf.count(pointer) ? m_placeOf[pointer] : 0;
-        if (std::abs(gap.gapM) > kScienceBirdsSnapM)
+        double& y = body.pig ? m_level.pigs[static_cast<std::size_t>(body.index)].y
+                             : m_level.blocks[static_cast<std::size_t>(body.index)].y;
+        if (body.bottom < m_level.groundY - 1e-6 &&
+            supportUnder(asWritten, m_catalog, body.pig, body.index).support.empty())
         {
+            // Deeper in the ground than a support is looked for: pushed up onto it, as Science Birds' ground does.
+            const double below = m_level.groundY - body.bottom;
+            y = tidy(y + below);
             m_warnings.push_back(issueAt(offset, pointer,
-                                         (gap.gapM > 0 ? "is " + centimetres(gap.gapM) + " above " + gap.support
-                                                       : "sinks " + centimetres(gap.gapM) + " into " + gap.support) +
-                                             ", more than the " + centimetres(kScienceBirdsSnapM) +
+                                         "reaches " + centimetres(below) +
+                                             " below the ground, which pushes it out in Science Birds; set onto the "
+                                             "ground (y = " +
+                                             shortestNumber(y) + " in our level)"));
+            continue;
+        }
+        const SupportGap written = supportUnder(asWritten, m_catalog, body.pig, body.index);
+        const SupportGap now = supportUnder(m_level, m_catalog, body.pig, body.index);
+        if (now.support.empty() || std::abs(now.gapM) < 1e-6)
+            continue;
+        if (written.gapM > kScienceBirdsSnapM)
+        {
+            // Held up by something it overlaps (a pig on the pigs under it): pushApart sets it on them.
+            if (deepestOverlap(m_level, m_catalog, body.pig, static_cast<std::size_t>(body.index)) >
+                limits::kOverlapToleranceM / 2.0)
+                continue;
+            m_warnings.push_back(issueAt(offset, pointer,
+                                         "is " + centimetres(written.gapM, kScienceBirdsSnapM) + " above " +
+                                             written.support + ", more than the " + centimetres(kScienceBirdsSnapM) +
                                              " the import closes: left where it is (abalike check reports it)"));
             continue;
         }
-        double& y = body.pig ? m_level.pigs[static_cast<std::size_t>(body.index)].y
-                             : m_level.blocks[static_cast<std::size_t>(body.index)].y;
-        y = tidy(y - gap.gapM);
-        std::string message = (gap.gapM > 0 ? "was " + centimetres(gap.gapM) + " above " + gap.support
-                                            : "sank " + centimetres(gap.gapM) + " into " + gap.support) +
-                              "; set onto it (y = ";
-        message.append(shortestNumber(y)).append(" in our level)");
+        y = tidy(y - now.gapM);
+        const double inFile = written.support.empty() ? now.gapM : written.gapM;
+        std::string message = inFile > 0 ? "was " + centimetres(inFile) + " above " + now.support + "; set onto it"
+                                         : "sank " + centimetres(inFile) + " into " + now.support +
+                                               ", which Science Birds' physics pushes apart; set onto it";
+        message.append(" (y = ").append(shortestNumber(y)).append(" in our level)");
         m_warnings.push_back(issueAt(offset, pointer, message));
+    }
+}
+
+void Importer::pushApart()
+{
+    for (const PushedBody& body : pushApartOverlaps(m_level, m_catalog, limits::kOverlapToleranceM / 2.0))
+    {
+        const std::size_t offset = m_placeOf.count(body.pointer) ? m_placeOf[body.pointer] : 0;
+        const bool lifted = body.dyM != 0.0;
+        const bool pig = body.pointer.rfind("/pigs/", 0) == 0;
+        const std::size_t index =
+            static_cast<std::size_t>(std::stoul(body.pointer.substr(body.pointer.rfind('/') + 1)));
+        const double x = pig ? m_level.pigs[index].x : m_level.blocks[index].x;
+        const double y = pig ? m_level.pigs[index].y : m_level.blocks[index].y;
+        m_warnings.push_back(
+            issueAt(offset, body.pointer,
+                    "overlapped " + body.other + " by " + centimetres(body.depthM) +
+                        ", which Science Birds' physics pushes apart; " +
+                        (lifted ? "lifted " + centimetres(body.dyM) + " (y = " + shortestNumber(y)
+                                : "moved " + centimetres(body.dxM) + (body.dxM > 0 ? " right" : " left") +
+                                      " (x = " + shortestNumber(x)) +
+                        " in our level)"));
     }
 }
 
@@ -582,10 +722,24 @@ ScienceBirdsLevel Importer::run(std::string_view bytes)
     }
     if (m_options.sandbox)
         m_level.sandbox = true; // a structure without pigs, for the editor
+    else if (m_errors.empty() && m_level.pigs.empty())
+        fail(objects ? objects : level, "the file has no <Pig>, and a level without a pig cannot be won: import it "
+                                        "with --sandbox to open the structure in the editor as a sandbox scene");
+    if (m_squaredRotations > 0)
+    {
+        char most[32];
+        std::snprintf(most, sizeof most, "%.2f", m_mostSquaredDeg);
+        m_warnings.push_back(issueAt(0, "",
+                                     std::to_string(m_squaredRotations) +
+                                         " rotation(s) within 1 degree of square read as square (the most by " + most +
+                                         " degrees): Science Birds' generators write the angles a settled scene "
+                                         "ended at, and ours starts square"));
+    }
     if (m_errors.empty())
     {
         useOwnGround();
         snapOntoSupports();
+        pushApart();
         checkResult();
     }
     if (!m_errors.empty())
