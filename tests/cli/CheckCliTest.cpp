@@ -118,6 +118,24 @@ TEST(CheckCli, SolveRecommendsStarsAndWriteStarsWritesOnlyThem)
         << alone.err;
 }
 
+TEST(CheckCli, WriteStarsKeepsAFormattedFileFormatted)
+{
+    // The same open pig, written by `abalike fmt`, with a reference shot and without stars: fmt puts "stars" before
+    // "reference_shot", so --write-stars must not append it at the end; `fmt --check` still passes after it.
+    const ScratchLevel level("write-stars-fmt");
+    level.write(R"({"format": 1, "id": "wsf", "title": "Write stars",
+  "slingshot": {"x": 0, "y": 1.5}, "birds": ["red", "red"],
+  "pigs": [{"type": "small", "x": 14, "y": 0.25}], "reference_shot": [45, 12]}
+)");
+    ASSERT_EQ(runAbalike("fmt " + level.path()).exitCode, 0);
+    ASSERT_EQ(level.read().find("\"stars\""), std::string::npos);
+    const RunResult wrote = runAbalike("check " + level.path() + " --solve --player-runs 4 --write-stars");
+    ASSERT_EQ(wrote.exitCode, 0) << wrote.err;
+    EXPECT_NE(level.read().find("\"stars\": ["), std::string::npos) << level.read();
+    const RunResult formatted = runAbalike("fmt --check " + level.path());
+    EXPECT_EQ(formatted.exitCode, 0) << formatted.out << formatted.err << level.read();
+}
+
 TEST(CheckCli, WallsAndMixedTowersPass)
 {
     // Bricks side by side, and a tower whose columns change material storey by storey (issue 9).

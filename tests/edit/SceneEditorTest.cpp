@@ -1,6 +1,7 @@
 #include <abalike/edit/SceneEditor.hpp>
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/world/Catalog.hpp>
+#include <cmath>
 
 #include <gtest/gtest.h>
 #include <random>
@@ -509,6 +510,19 @@ TEST(SceneEditorMirror, MirrorsPositionsAnglesTrianglesAndPolygonsInOneUndoStep)
     editor.undo();
     EXPECT_EQ(editor.level().blocks, level.blocks);
     EXPECT_EQ(editor.level().terrain, level.terrain);
+}
+
+TEST(SceneEditorMirror, ASquareBlockMirroredAboutItsOwnCentreKeepsAPlainZero)
+{
+    // A square box at x = 0: mirrored, -0 for its angle and its x would read "-0.0" in the panels.
+    LevelDef level = emptyScene();
+    level.blocks.push_back({BlockShape::Box, "wood", 0.0, 0.5, 1.0, 1.0, 0.0, 0.1});
+    SceneEditor editor(level);
+    editor.selectAll();
+    editor.mirrorSelection();
+    EXPECT_EQ(editor.level().blocks[0].angleDeg, 0.0);
+    EXPECT_FALSE(std::signbit(editor.level().blocks[0].angleDeg));
+    EXPECT_FALSE(std::signbit(editor.level().blocks[0].x));
 }
 
 } // namespace

@@ -180,10 +180,13 @@ TEST(TextValues, ABadPlaceholderIsAReaderErrorThatSaysWhereAndWhat)
         }
         return std::string("no error");
     };
-    EXPECT_NE(
-        errorOf("{v_mx:red}").find("/concept: character 2 of the text: unknown value \"v_mx\" (known: v_max:BIRD"),
-        std::string::npos)
+    EXPECT_NE(errorOf("{v_mx:red}")
+                  .find("/concept: character 2 of the text: unknown value \"v_mx\" (did you mean \"v_max\"?)"),
+              std::string::npos)
         << errorOf("{v_mx:red}");
+    // Nothing close: every name, so the writer can pick.
+    EXPECT_NE(errorOf("{xyzzy}").find("unknown value \"xyzzy\" (known: v_max:BIRD, p_max:BIRD"), std::string::npos)
+        << errorOf("{xyzzy}");
     // A bird the catalog cannot have: every bird's name with a suffix, so it is longer than any of them.
     std::string missing = "bird";
     for (const BirdType& bird : Catalog::builtin().birds())

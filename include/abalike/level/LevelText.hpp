@@ -21,4 +21,7 @@ std::string replaceNumber(std::string_view text, const std::string& pointer, con
 /// else the key added before the closing brace; everything else byte for byte as it was.
 std::string withStars(std::string_view text, const std::array<int, 3>& stars);
 
+/// The file's "$schema" reference, or "" (what `abalike fmt` writes back).
+std::string schemaReferenceOf(std::string_view text);
+
 } // namespace abalike

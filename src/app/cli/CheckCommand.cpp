@@ -10,6 +10,7 @@
 #include <abalike/level/Campaign.hpp>
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/level/LevelText.hpp>
+#include <abalike/level/LevelWriter.hpp>
 #include <abalike/level/SafeText.hpp>
 #include <abalike/save/AtomicWrite.hpp>
 #include <abalike/teach/Claims.hpp>
@@ -347,7 +348,18 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
                 recommendedStars(report.player.value_or(PlayerDifficulty{}), report.solution->outcome.score);
             if (a.writeStars && *report.recommendedStars != level.starScores)
             {
-                writeFileAtomically(item.file, withStars(readText(item.file), *report.recommendedStars));
+                // Every other byte as it was; a file `abalike fmt` would leave alone stays so (the key where fmt puts
+                // it, not appended at the end).
+                const std::string text = readText(item.file);
+                const std::string schema = schemaReferenceOf(text);
+                std::string starred = withStars(text, *report.recommendedStars);
+                if (writeLevelJson(level, schema) == text)
+                {
+                    LevelDef withNewStars = level;
+                    withNewStars.starScores = *report.recommendedStars;
+                    starred = writeLevelJson(withNewStars, schema);
+                }
+                writeFileAtomically(item.file, starred);
                 report.starsWritten = true;
             }
         }

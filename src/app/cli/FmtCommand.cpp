@@ -28,15 +28,6 @@ struct FmtArgs
     bool check = false;
 };
 
-/// The file's own "$schema" value, kept as written (empty when it has none).
-std::string schemaOf(const std::string& text)
-{
-    const nlohmann::json root = nlohmann::json::parse(text, nullptr, false);
-    if (root.is_object() && root.contains("$schema") && root["$schema"].is_string())
-        return root["$schema"].get<std::string>();
-    return {};
-}
-
 int runFmt(const FmtArgs& a)
 {
     int exitCode = 0;
@@ -59,7 +50,7 @@ int runFmt(const FmtArgs& a)
         try
         {
             // Geometry problems (an overlap, a pig out of reach) do not stop formatting: the file still reads.
-            formatted = writeLevelJson(loadLevelForEditing(file, Catalog::builtin()).level, schemaOf(text));
+            formatted = writeLevelJson(loadLevelForEditing(file, Catalog::builtin()).level, schemaReferenceOf(text));
         }
         catch (const LevelLoadError& e)
         {

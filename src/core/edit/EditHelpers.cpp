@@ -66,7 +66,8 @@ double normaliseAngle(double degrees)
         a -= 360.0;
     else if (a <= -180.0)
         a += 360.0;
-    return std::round(a * 1e9) / 1e9;
+    // + 0.0 turns the -0 of a mirrored square block into 0, which the panels show as "0.0", never "-0.0".
+    return std::round(a * 1e9) / 1e9 + 0.0;
 }
 
 std::string plural(std::size_t count, const char* what)

@@ -82,7 +82,7 @@ std::optional<Contact> nearest(const ConvexShape& moving, const std::vector<std:
 
 double cleanMetres(double value)
 {
-    return std::round(value * 1e9) / 1e9;
+    return std::round(value * 1e9) / 1e9 + 0.0; // never -0 (a body mirrored about x = 0 shows "0.0", not "-0.0")
 }
 
 double snapAngle(double angleDeg, double stepDeg)

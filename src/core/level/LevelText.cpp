@@ -2,6 +2,7 @@
 #include <cctype>
 
 #include <abalike/level/LevelText.hpp>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 namespace abalike
@@ -52,6 +53,14 @@ std::string withStars(std::string_view text, const std::array<int, 3>& stars)
         --end;
     return out.substr(0, end) + ",\n  \"stars\": [" + std::to_string(stars[0]) + ", " + std::to_string(stars[1]) +
            ", " + std::to_string(stars[2]) + "]\n" + out.substr(close);
+}
+
+std::string schemaReferenceOf(std::string_view text)
+{
+    const nlohmann::json root = nlohmann::json::parse(text, nullptr, false);
+    if (root.is_object() && root.contains("$schema") && root["$schema"].is_string())
+        return root["$schema"].get<std::string>();
+    return {};
 }
 
 } // namespace abalike

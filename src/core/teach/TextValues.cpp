@@ -2,11 +2,16 @@
 #include <abalike/level/LevelFlight.hpp>
 #include <abalike/teach/RangeChart.hpp>
 #include <abalike/teach/TextValues.hpp>
+
+#include "level/LevelReader.hpp"
+
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
+#include <vector>
 
 namespace abalike
 {
@@ -90,6 +95,17 @@ std::string knownNames()
             list += std::string(":") + n.argument;
     }
     return list;
+}
+
+/// "(did you mean "v_max"?)" for a near miss, else "(known: ...)" with every name.
+std::string suggestedName(std::string_view name)
+{
+    std::vector<std::string> names;
+    for (const TextValueName& n : textValueNames())
+        names.emplace_back(n.name);
+    if (const std::optional<std::string> suggestion = closestMatch(std::string(name), names))
+        return "(did you mean \"" + *suggestion + "\"?)";
+    return "(known: " + knownNames() + ")";
 }
 
 /// "{name:argument}" or "{name}", for messages.
@@ -188,7 +204,7 @@ double evaluate(const LevelDef& level, const Catalog& seen, std::string_view nam
 {
     const TextValueName* known = findName(name);
     if (known == nullptr)
-        fail("unknown value \"" + std::string(name) + "\" (known: " + knownNames() + ")");
+        fail("unknown value \"" + std::string(name) + "\" " + suggestedName(name));
     const bool wantsArgument = *known->argument != '\0';
     if (wantsArgument && argument.empty())
         fail(braced(name) + " needs " + known->argument + ", as " + braced(name, known->argument));
