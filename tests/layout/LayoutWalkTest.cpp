@@ -106,6 +106,7 @@ struct WalkedRun
     /// Laid-out frames in which a panel covers what panels should leave visible, by "panel over thing": reported,
     /// not asserted (where the window has no room elsewhere a panel may have to).
     std::map<std::string, int> covering;
+    int bannerFrames = 0; ///< laid-out frames that show the problems banner
 };
 
 /// Lays out every kLayoutEvery-th frame of a run and records what is wrong with it and what covers what.
@@ -120,6 +121,8 @@ public:
         for (const std::string& problem : layoutProblems(frame))
             m_run.problems.push_back("frame " + std::to_string(frame.frame) + ": " + problem);
         std::set<std::string> over;
+        m_run.bannerFrames += std::any_of(frame.panels.begin(), frame.panels.end(),
+                                          [](const ScreenRegion& panel) { return panel.name == "reload banner"; });
         for (const ScreenRegion& panel : frame.panels)
             for (const ScreenRegion& thing : frame.keepVisible)
                 if (!overlappingRegions({panel, thing}).empty())
@@ -202,6 +205,33 @@ TEST_P(LayoutWalk, EveryPanelStaysInsideTheWindowAndApartFromTheOthers)
 }
 
 INSTANTIATE_TEST_SUITE_P(CampaignAndLessons, LayoutWalk, ::testing::ValuesIn(walkedLevels()), walkedLevelName);
+
+TEST(LayoutWalkBanner, TheProblemsBannerNeverCoversTheSlingshotOrAPig)
+{
+    // 1-1 with its highest block lifted 5 cm: the rest check's banner shows (folded, one line at the bottom). The
+    // ground goes above it, so that it covers neither the slingshot with its waiting birds nor a pig.
+    nlohmann::json level =
+        nlohmann::json::parse(std::ifstream(std::string(ABALIKE_SOURCE_DIR) + "/levels/1-1-first-flight.json"));
+    nlohmann::json* top = &level["blocks"][0];
+    for (nlohmann::json& block : level["blocks"])
+        if (block["y"].get<double>() > (*top)["y"].get<double>())
+            top = &block;
+    (*top)["y"] = (*top)["y"].get<double>() + 0.05;
+    const ScratchData data;
+    const std::string path = (data.path() / "floating.json").string();
+    std::ofstream(path) << level.dump(2);
+    const LevelDef def = loadLevel(path, Catalog::builtin());
+    for (const Setting& setting : {Setting{1.0, false, 1280u, 720u, "game"}, Setting{2.0, true, 1024u, 768u, "learn"}})
+    {
+        const WalkedRun run = walk(path, def, setting, data);
+        ASSERT_EQ(run.exitCode, 0) << describe(setting);
+        EXPECT_GT(run.bannerFrames, run.framesLaidOut / 2)
+            << "the banner shows from the rest check on, " << describe(setting);
+        for (const auto& [pair, count] : run.covering)
+            EXPECT_NE(pair.rfind("reload banner over", 0), 0u)
+                << pair << " in " << count << " frames, " << describe(setting);
+    }
+}
 
 } // namespace
 } // namespace abalike::app

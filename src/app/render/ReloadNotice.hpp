@@ -22,6 +22,11 @@ public:
     void draw(sf::RenderTarget& target, sf::Vector2u size, const std::vector<std::string>& lines,
               float textScale = 1.0f, const std::string& heading = kEditDidNotLoad) const;
 
+    /// How far up from the window's bottom it reaches when drawn (0 when it draws nothing): the play screen keeps
+    /// the ground above it, so that the banner never covers the birds waiting by the slingshot.
+    float reach(sf::Vector2u size, const std::vector<std::string>& lines, float textScale = 1.0f,
+                const std::string& heading = kEditDidNotLoad) const;
+
     static constexpr const char* kEditDidNotLoad =
         "The level file has errors; still playing the last good version. Save a fix to reload.";
     static constexpr const char* kDoesNotStand =
@@ -34,6 +39,18 @@ public:
     bool handleClick(float x, float y);
 
 private:
+    /// Its lines as wrapped for the window, and its size.
+    struct Layout
+    {
+        std::vector<std::string> title;
+        std::vector<std::string> body;
+        std::size_t hidden = 0;                      ///< problems left out for room
+        float pad = 0.0f, height = 0.0f, top = 0.0f; ///< pixels
+        unsigned titleSize = 0, lineSize = 0;        ///< character sizes
+    };
+    Layout layout(sf::Vector2u size, const std::vector<std::string>& lines, float textScale,
+                  const std::string& heading) const;
+
     const sf::Font* m_font;
     bool m_expanded = false;
     mutable sf::FloatRect m_lastRect; ///< where the last draw put it (empty when nothing was drawn)

@@ -178,6 +178,13 @@ void PlayScreen::findRestProblems()
                            findings.push_back(issue.format());
                        return findings;
                    });
+    // The banner moves the ground up (cameraFocus): known before the camera is placed, it never slides in over the
+    // slingshot. A scripted run waits for it, so that its frames are the same on every run; live play as long as a
+    // quiet load (most levels check in milliseconds), else it comes when ready.
+    if (m_app.run().scripted())
+        collectRestProblems(true);
+    else if (m_restCheck.wait_for(kQuietLoad) == std::future_status::ready)
+        collectRestProblems(false);
 }
 
 void PlayScreen::collectRestProblems(bool wait)
@@ -423,6 +430,16 @@ void PlayScreen::frameUpdate(double frameS)
     updateLayers(frameS);
 }
 
+const std::vector<std::string>& PlayScreen::bannerLines() const
+{
+    return m_reloadErrors.empty() ? m_restFindings : m_reloadErrors;
+}
+
+const char* PlayScreen::bannerHeading() const
+{
+    return m_reloadErrors.empty() ? ReloadNotice::kDoesNotStand : ReloadNotice::kEditDidNotLoad;
+}
+
 CameraFocus PlayScreen::cameraFocus() const
 {
     CameraFocus focus = cameraFocusOf(*m_session);
@@ -434,9 +451,15 @@ CameraFocus PlayScreen::cameraFocus() const
     const sf::Vector2u size = m_app.ui().windowSize();
     if (size.y > 0)
     {
-        const float text =
-            m_hud.bottomTextHeight(size, m_session->level(), static_cast<float>(m_app.settings().current().textScale));
-        const float lifted = (text + 4.0f * hudScale(size)) / static_cast<float>(size.y);
+        const auto textScale = static_cast<float>(m_app.settings().current().textScale);
+        // The problems banner (folded, one line) sits above the keys: the ground goes above it too, so that it never
+        // covers the bird queue or the feet of the level's bodies.
+        // (The slingshot's foot reaches a little below the ground line: the banner keeps a wider gap.)
+        const float scale = hudScale(size);
+        const float banner = m_reloadNotice.reach(size, bannerLines(), textScale, bannerHeading());
+        const float text = std::max(m_hud.bottomTextHeight(size, m_session->level(), textScale) + 4.0f * scale,
+                                    banner > 0.0f ? banner + 12.0f * scale : 0.0f);
+        const float lifted = text / static_cast<float>(size.y);
         focus.groundFromBottom = std::clamp(lifted, camera_limits::kGroundFromBottom, kMostGroundFromBottom);
     }
     return focus;
@@ -455,12 +478,8 @@ void PlayScreen::draw(sf::RenderTarget& target)
         return;
     }
     drawField(target);
-    if (!m_reloadErrors.empty())
-        m_reloadNotice.draw(target, target.getSize(), m_reloadErrors,
-                            static_cast<float>(m_app.settings().current().textScale));
-    else
-        m_reloadNotice.draw(target, target.getSize(), m_restFindings,
-                            static_cast<float>(m_app.settings().current().textScale), ReloadNotice::kDoesNotStand);
+    m_reloadNotice.draw(target, target.getSize(), bannerLines(),
+                        static_cast<float>(m_app.settings().current().textScale), bannerHeading());
 }
 
 void PlayScreen::drawSettleProgress(sf::RenderTarget& target) const

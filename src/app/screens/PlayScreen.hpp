@@ -107,6 +107,9 @@ private:
     void finishSettling(bool wait);
     bool settling() const { return m_settling.valid(); }
     void drawSettleProgress(sf::RenderTarget& target) const;
+    /// What the problems banner shows: the last edit's load errors, else the rest check's findings (or nothing).
+    const std::vector<std::string>& bannerLines() const;
+    const char* bannerHeading() const;
     void syncScriptedAim();
     /// Once the level is decided: record the result and show the results card.
     void finishIfDone();
