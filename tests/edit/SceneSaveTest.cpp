@@ -6,6 +6,7 @@
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/level/LevelWriter.hpp>
 #include <abalike/world/RestCheck.hpp>
+#include <abalike/world/RestFindings.hpp>
 
 #include <fstream>
 #include <gtest/gtest.h>
@@ -138,10 +139,17 @@ TEST(SceneSave, FindingsAreMarkedOnTheirObjects)
 
     level.blocks.erase(level.blocks.begin() + 1);
     level.pigs = {{"small", 20.0, 0.25}};
-    const auto rest = findingsFromRest(checkRest(level));
+    const RestReport report = checkRest(level);
+    const auto rest = findingsFromRest(level, Catalog::builtin(), report);
     ASSERT_EQ(rest.size(), 1u) << "only the floating ice block moves";
     EXPECT_EQ(rest[0].object, (ObjectRef{ObjectKind::Block, 1}));
     EXPECT_EQ(rest[0].source, FindingSource::Rest);
+    // The editor says what `abalike check` says (the cause, and its verified fix when there is one), not only that
+    // it broke.
+    const std::vector<LevelIssue> cli = restIssues(level, Catalog::builtin(), report, "");
+    ASSERT_EQ(cli.size(), 1u);
+    EXPECT_EQ(rest[0].message, cli[0].message);
+    EXPECT_EQ(rest[0].message.rfind("falls: nothing is under it", 0), 0u) << rest[0].message;
 }
 
 TEST(SceneSave, TheSolverMarksThePigsItCannotReach)

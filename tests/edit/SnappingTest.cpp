@@ -133,6 +133,25 @@ TEST(Snapping, NothingWithinReachLeavesOnlyTheGrid)
     EXPECT_EQ(none.y, 0.77);
 }
 
+TEST(Snapping, WithTheGridOnABodyAGridStepAboveASurfaceLandsOnIt)
+{
+    // The editor's settings: a 25 cm grid and a 10 cm surface pull. A crate put down a little above the slab has its
+    // bottom rounded up to the grid line 25 cm above it; it still lands (it was saved floating before).
+    const LevelDef level = slabScene();
+    SnapSettings settings;
+    settings.gridM = 0.25;
+    settings.surfaceReachM = 0.1;
+    const BlockDef crate{BlockShape::Box, "tnt", 10.0, 0.97, 0.5, 0.5, 0.0, 0.1};
+    const SnapResult at = snapObject(level, Catalog::builtin(), crate, {}, settings);
+    EXPECT_EQ(at.y, 0.75);
+    ASSERT_TRUE(at.restsOn);
+    EXPECT_EQ(*at.restsOn, (ObjectRef{ObjectKind::Block, 0}));
+    // Two grid steps up it is put where it was meant: in the air, for the checks to mark.
+    const SnapResult high = snapObject(level, Catalog::builtin(), withCentre(crate, 10.0, 1.47), {}, settings);
+    EXPECT_EQ(high.y, 1.5);
+    EXPECT_FALSE(high.restsOn);
+}
+
 TEST(Snapping, ABlockOrPigPutBelowTheGroundComesUpOntoItTerrainMaySink)
 {
     const LevelDef level = emptyScene();

@@ -273,6 +273,27 @@ TEST_F(EditorFlow, UnsavedChangesAreNeverDroppedSilently)
     EXPECT_FALSE(std::filesystem::exists(file)) << "nothing was saved without being asked";
 }
 
+TEST_F(EditorFlow, SavingALevelThatDoesNotStandSaysWhatCheckWillSay)
+{
+    // 1-1 with its highest block 5 cm up, opened and saved as it is: the save runs the rest test and lists its
+    // finding in `abalike check`'s words, with the verified fix; the trace carries the same.
+    nlohmann::json level = nlohmann::json::parse(readText(sourceFile("levels/1-1-first-flight.json")));
+    nlohmann::json* top = &level["blocks"][0];
+    for (nlohmann::json& block : level["blocks"])
+        if (block["y"].get<double>() > (*top)["y"].get<double>())
+            top = &block;
+    (*top)["y"] = (*top)["y"].get<double>() + 0.05;
+    const std::string file = m_dir.write("floating.json", level.dump(2));
+    const GameRun run = edit("'" + file + "' --frames 20" + script(R"([{"frame": 10, "key": "S", "ctrl": true}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const std::vector<std::string> findings = run.values("editor-save", "rest_findings");
+    ASSERT_EQ(findings.size(), 1u);
+    const nlohmann::json listed = nlohmann::json::parse(findings[0]);
+    ASSERT_EQ(listed.size(), 1u) << findings[0];
+    EXPECT_EQ(listed[0].get<std::string>().rfind("floats 5.0 cm above block", 0), 0u) << listed[0];
+    EXPECT_NE(listed[0].get<std::string>().find("; set y = "), std::string::npos) << listed[0];
+}
+
 TEST_F(EditorFlow, ALevelWithGeometryProblemsOpensWithThemListed)
 {
     const std::string file = sourceFile("tests/level/malformed/overlapping-blocks.json");

@@ -31,8 +31,9 @@ struct Finding
 /// The loader's geometry findings, each on the object its pointer names (an overlap is marked on both bodies).
 std::vector<Finding> findingsFromIssues(const std::vector<LevelIssue>& issues);
 
-/// The rest test's findings: every block or pig that moved more than the tolerance or took damage.
-std::vector<Finding> findingsFromRest(const RestReport& report);
+/// The rest test's findings, in the words `abalike check` prints (what moved and why, the verified fix), each on the
+/// body it concerns; bodies that only follow another are marked as such. One level-wide line when it passed.
+std::vector<Finding> findingsFromRest(const LevelDef& level, const Catalog& catalog, const RestReport& report);
 
 /// The solver's findings: the pigs its best shot sequence leaves standing (found by playing it again), or one
 /// level-wide finding saying what it achieved.

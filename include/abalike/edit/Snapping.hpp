@@ -14,9 +14,11 @@ class Catalog;
 struct SnapSettings
 {
     bool grid = true;
-    double gridM = 0.25;           ///< grid spacing (m)
-    bool surfaces = true;          ///< rest objects on the surface below and against neighbours
-    double surfaceReachM = 0.25;   ///< a surface this close (m) pulls an object onto it (the editor sets at most 0.1)
+    double gridM = 0.25;  ///< grid spacing (m)
+    bool surfaces = true; ///< rest objects on the surface below and against neighbours
+    /// A surface this close (m) pulls an object onto it (the editor sets at most 0.1); with the grid on, the surface
+    /// below pulls from at least one grid step.
+    double surfaceReachM = 0.25;
     double rotationStepDeg = 15.0; ///< rotations snap to multiples of this when grid is on
 };
 

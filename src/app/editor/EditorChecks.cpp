@@ -75,10 +75,16 @@ void EditorChecks::runGeometry(const LevelDef& level, std::uint64_t revision)
 void EditorChecks::runRest(const LevelDef& level, std::uint64_t revision)
 {
     const RestReport report = checkRest(level);
-    std::vector<Finding> findings = findingsFromRest(report);
+    std::vector<Finding> findings = findingsFromRest(level, Catalog::builtin(), report);
     // A passing test leaves one level-wide line; keep it in the summary, not as a marker.
     std::erase_if(findings, [](const Finding& f) { return !f.object; });
     replace(FindingSource::Rest, std::move(findings), revision, report.summary());
+}
+
+void EditorChecks::refreshRest(const LevelDef& level, std::uint64_t revision)
+{
+    if (ranOn(FindingSource::Rest) != revision && level.blocks.size() + level.pigs.size() <= kAutoRestBodies)
+        runRest(level, revision);
 }
 
 void EditorChecks::startSolver(const LevelDef& level, std::uint64_t revision)

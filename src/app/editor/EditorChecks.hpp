@@ -33,6 +33,9 @@ public:
     void runGeometry(const LevelDef& level, std::uint64_t revision);
     /// The level left alone for 10 s: what moved or took damage.
     void runRest(const LevelDef& level, std::uint64_t revision);
+    /// Runs the rest test unless it has already run on this revision, when the scene is small enough to test without
+    /// a stall (saving lists what `abalike check` will say).
+    void refreshRest(const LevelDef& level, std::uint64_t revision);
     /// Starts the solver on a copy of the level (nothing happens if it is already running).
     void startSolver(const LevelDef& level, std::uint64_t revision);
     /// Collects the solver's result once it is done; call once per frame.

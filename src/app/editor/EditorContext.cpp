@@ -26,6 +26,20 @@ void EditorContext::replaceScene(const EditorSource& source)
     viewFitted = false;
 }
 
+void EditorContext::undo()
+{
+    scene().undo();
+    if (messageIsError)
+        say("");
+}
+
+void EditorContext::redo()
+{
+    scene().redo();
+    if (messageIsError)
+        say("");
+}
+
 void EditorContext::say(std::string text, bool error)
 {
     message = std::move(text);
@@ -38,10 +52,15 @@ sf::FloatRect EditorContext::sceneArea() const
     const float scale = app.ui().scale();
     // The menu bar and the status bar: a line of 16 px text with ImGui's frame and window padding.
     const float top = 22.0f * scale;
-    const float bottom = playing ? 0.0f : 38.0f * scale;
+    const float bottom = playing ? 0.0f : std::max(38.0f * scale, statusBarHeight);
     const float left = playing ? 0.0f : 220.0f * scale;
     const float right = 350.0f * scale;
     return {left, top, std::max(50.0f, size.x - left - right), std::max(50.0f, size.y - top - bottom)};
+}
+
+float EditorContext::statusBarHeightNow() const
+{
+    return std::max(ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().WindowPadding.y, statusBarHeight);
 }
 
 void EditorContext::recordPanel()

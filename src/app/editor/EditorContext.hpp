@@ -29,6 +29,9 @@ struct EditorContext
 
     /// The status bar's line: a message, or a problem when error.
     void say(std::string text, bool error = false);
+    /// Undo and redo (keys, menu): a problem the status bar shows belonged to the edit now undone, and goes.
+    void undo();
+    void redo();
 
     /// The part of the window the scene is drawn in: between the menu bar and the status bar, right of the palette
     /// and left of the inspector (the palette and the status bar make way while the scene plays).
@@ -38,6 +41,8 @@ struct EditorContext
     bool pointerOverPanels(sf::Vector2f pixel) const;
     /// Zooms and pans the view onto the whole scene.
     void fitView();
+    /// The status bar's height for the panels above it: one line, or as last drawn when it grew.
+    float statusBarHeightNow() const;
 
     AppContext& app;
     std::unique_ptr<SceneEditor> editor;
@@ -46,6 +51,7 @@ struct EditorContext
     EditorChecks checks;
     std::string message;
     bool messageIsError = false;
+    float statusBarHeight = 0.0f;      ///< as the status bar was last drawn (it grows to hold a long message)
     std::vector<sf::FloatRect> panels; ///< where the panels were drawn in the last frame (window pixels)
     bool playing = false;              ///< the scene is being play-tested (PlayTest keeps this)
     bool modalOpen = false;            ///< a dialog is up: it takes every event

@@ -96,12 +96,27 @@ bool EditorFiles::saveTo(const std::filesystem::path& path)
         m_ctx.checks.setOpeningIssues({}, m_ctx.scene().revision());
         if (!geometry.empty())
             m_ctx.checks.runGeometry(m_ctx.scene().level(), m_ctx.scene().revision());
-        m_ctx.message = "Saved " + path.string() +
-                        (geometry.empty() ? std::string()
-                                          : " (" + std::to_string(geometry.size()) +
-                                                " geometry problem(s), marked: `abalike check` will fail it)");
-        m_ctx.messageIsError = !geometry.empty();
-        m_ctx.app.trace().write("editor-save", {{"path", path.string()}, {"problems", geometry.size()}});
+        // What `abalike check` will say about the file: its geometry problems and the rest test's findings (the
+        // first in full, with its fix), the rest test run now if it has not seen this revision.
+        m_ctx.checks.refreshRest(m_ctx.scene().level(), m_ctx.scene().revision());
+        std::vector<std::string> rest;
+        for (const Finding& finding : m_ctx.checks.findings())
+            if (finding.source == FindingSource::Rest && finding.object &&
+                finding.message.rfind("moves because ", 0) != 0)
+                rest.push_back(finding.message);
+        std::string problems;
+        if (!geometry.empty())
+            problems = std::to_string(geometry.size()) + " geometry problem(s)";
+        if (!rest.empty())
+            problems += (problems.empty() ? "" : ", ") + std::to_string(rest.size()) +
+                        (rest.size() == 1 ? " body that does not stand: " : " bodies that do not stand, first: ") +
+                        rest.front();
+        m_ctx.message =
+            "Saved " + path.string() +
+            (problems.empty() ? std::string() : " (" + problems + "; marked: `abalike check` will fail it)");
+        m_ctx.messageIsError = !problems.empty();
+        m_ctx.app.trace().write("editor-save",
+                                {{"path", path.string()}, {"problems", geometry.size()}, {"rest_findings", rest}});
         if (!m_ctx.app.run().scripted())
             removeAutosave(autosavePath(defaultDataDirectory()));
         return true;

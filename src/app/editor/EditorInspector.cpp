@@ -129,7 +129,7 @@ void EditorInspector::endGestureIfReleased()
 void EditorInspector::panel()
 {
     const float menu = ImGui::GetFrameHeight();
-    const float status = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().WindowPadding.y;
+    const float status = m_ctx.statusBarHeightNow();
     const sf::Vector2f window(m_ctx.app.ui().windowSize());
     const float width = window.x - m_ctx.sceneArea().left - m_ctx.sceneArea().width;
     ImGui::SetNextWindowPos(ImVec2(window.x - width, menu), ImGuiCond_Always);

@@ -112,10 +112,10 @@ void EditorScreen::handleCommandKey(const sf::Event::KeyEvent& key)
     switch (key.code)
     {
     case K::Z:
-        key.shift ? m_ctx.scene().redo() : m_ctx.scene().undo();
+        key.shift ? m_ctx.redo() : m_ctx.undo();
         break;
     case K::Y:
-        m_ctx.scene().redo();
+        m_ctx.redo();
         break;
     case K::S:
         key.shift ? m_files.requestSaveAs() : m_files.requestSave();

@@ -90,9 +90,9 @@ void EditorPanels::menuBar()
         const std::string undo = "Undo " + m_ctx.scene().undoLabel();
         const std::string redo = "Redo " + m_ctx.scene().redoLabel();
         if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, m_ctx.scene().canUndo()))
-            m_ctx.scene().undo();
+            m_ctx.undo();
         if (ImGui::MenuItem(redo.c_str(), "Ctrl+Y", false, m_ctx.scene().canRedo()))
-            m_ctx.scene().redo();
+            m_ctx.redo();
         ImGui::Separator();
         const bool any = !m_ctx.scene().selection().empty();
         if (ImGui::MenuItem("Cut", "Ctrl+X", false, any))
@@ -244,7 +244,7 @@ void EditorPanels::birdButtons(float buttonWidth)
 void EditorPanels::palettePanel()
 {
     const float menu = ImGui::GetFrameHeight();
-    const float status = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().WindowPadding.y;
+    const float status = m_ctx.statusBarHeightNow();
     ImGui::SetNextWindowPos(ImVec2(0.0f, menu), ImGuiCond_Always);
     ImGui::SetNextWindowSize(
         ImVec2(m_ctx.sceneArea().left, static_cast<float>(m_ctx.app.ui().windowSize().y) - menu - status),
@@ -367,28 +367,46 @@ void EditorPanels::palettePanel()
 
 void EditorPanels::statusBar()
 {
-    const float height = ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().WindowPadding.y;
     const sf::Vector2f window(m_ctx.app.ui().windowSize());
+    const std::string file =
+        (m_ctx.scene().path().empty() ? std::string("(not saved yet)") : m_ctx.scene().path().string()) +
+        (m_ctx.scene().dirty() ? "  \u2022 modified" : "");
+    std::string pointer;
+    if (m_tools.pointerOnScene)
+    {
+        const sf::Vector2f world = m_ctx.view.toWorld(m_tools.pointer);
+        char text[64];
+        std::snprintf(text, sizeof text, "  x %.2f m, y %.2f m", world.x, world.y);
+        pointer = text;
+    }
+    // The message follows on the same line when it fits; a longer one wraps onto lines of its own below, and the
+    // bar grows to hold them (the scene area makes way): never cut at the window's edge.
+    const std::string message = m_ctx.message.empty() ? std::string() : "  " + m_ctx.message;
+    const float wrapWidth = window.x - 2.0f * ImGui::GetStyle().WindowPadding.x;
+    const bool ownLines =
+        ImGui::CalcTextSize((file + pointer + message).c_str()).x + 2.0f * ImGui::GetStyle().ItemSpacing.x > wrapWidth;
+    const float messageHeight =
+        ownLines ? ImGui::CalcTextSize(m_ctx.message.c_str(), nullptr, false, wrapWidth).y : 0.0f;
+    const float height = ImGui::GetFrameHeight() + messageHeight + 2.0f * ImGui::GetStyle().WindowPadding.y;
+    m_ctx.statusBarHeight = height;
     ImGui::SetNextWindowPos(ImVec2(0.0f, window.y - height), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(window.x, height), ImGuiCond_Always);
     ImGui::Begin("##status", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
     m_ctx.recordPanel();
-    const std::string file =
-        m_ctx.scene().path().empty() ? std::string("(not saved yet)") : m_ctx.scene().path().string();
-    ImGui::Text("%s%s", file.c_str(), m_ctx.scene().dirty() ? "  \u2022 modified" : "");
-    ImGui::SameLine();
-    if (m_tools.pointerOnScene)
-    {
-        const sf::Vector2f world = m_ctx.view.toWorld(m_tools.pointer);
-        ImGui::Text("  x %.2f m, y %.2f m", world.x, world.y);
-        ImGui::SameLine();
-    }
+    ImGui::TextUnformatted((file + pointer).c_str());
     if (!m_ctx.message.empty())
     {
         if (m_ctx.messageIsError)
-            ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.45f, 1.0f), "  %s", m_ctx.message.c_str());
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.45f, 1.0f));
+        if (ownLines)
+            ImGui::TextWrapped("%s", m_ctx.message.c_str());
         else
-            ImGui::Text("  %s", m_ctx.message.c_str());
+        {
+            ImGui::SameLine();
+            ImGui::TextUnformatted(message.c_str());
+        }
+        if (m_ctx.messageIsError)
+            ImGui::PopStyleColor();
     }
     ImGui::End();
 }

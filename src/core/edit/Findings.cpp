@@ -1,7 +1,7 @@
 #include <abalike/edit/Findings.hpp>
 #include <abalike/game/GameSession.hpp>
+#include <abalike/world/RestFindings.hpp>
 
-#include <iomanip>
 #include <regex>
 #include <sstream>
 
@@ -25,26 +25,19 @@ std::vector<Finding> findingsFromIssues(const std::vector<LevelIssue>& issues)
     return out;
 }
 
-std::vector<Finding> findingsFromRest(const RestReport& report)
+std::vector<Finding> findingsFromRest(const LevelDef& level, const Catalog& catalog, const RestReport& report)
 {
+    // The CLI's findings (restFindings: what is wrong, its verified fix), word for word, on the body each concerns;
+    // a body that only follows another is marked too, pointing at the one to fix.
     std::vector<Finding> out;
-    for (const BodyRest& body : report.bodies)
-    {
-        const bool moved = body.maxDisplacementM > report.toleranceM;
-        if (!moved && !body.damaged && !body.destroyed)
-            continue;
-        const ObjectKind kind = body.kind == EntityKind::Pig ? ObjectKind::Pig : ObjectKind::Block;
-        std::ostringstream message;
-        message << std::fixed << std::setprecision(1);
-        if (body.destroyed)
-            message << "broke while nothing was shot at it";
-        else if (body.damaged)
-            message << "took damage while nothing was shot at it";
-        else
-            message << "moved " << body.maxDisplacementM * 1000.0 << " mm in " << report.seconds << " s (at most "
-                    << report.toleranceM * 1000.0 << " mm allowed)";
-        out.push_back({FindingSource::Rest, ObjectRef{kind, static_cast<std::size_t>(body.defIndex)}, message.str()});
-    }
+    if (!report.passed())
+        for (const RestFinding& finding : restFindings(level, catalog, report))
+        {
+            out.push_back({FindingSource::Rest, objectOfPointer(finding.pointer), finding.message()});
+            for (const std::string& follower : finding.consequences)
+                out.push_back({FindingSource::Rest, objectOfPointer(follower),
+                               "moves because " + finding.pointer + " does (fix that one)"});
+        }
     if (out.empty())
         out.push_back({FindingSource::Rest, std::nullopt, report.summary()});
     return out;

@@ -122,13 +122,19 @@ SnapResult snapObject(const LevelDef& level, const Catalog& catalog, const Objec
         // Blocks and pigs stand on the ground, never in it: one put below the ground line comes up onto it, however
         // deep. Terrain may sink into the ground (hills are built that way).
         const bool floored = kindOf(def) != ObjectKind::Terrain;
+        // Downwards a surface pulls from at least one grid step away: the grid may have lifted the body by up to half
+        // a step, and a body put down a step above what is under it is meant to stand on it (a TNT crate left 25 cm
+        // up by the grid was saved floating).
+        const double downReach = settings.grid && settings.gridM > 0.0
+                                     ? std::max(settings.surfaceReachM, settings.gridM)
+                                     : settings.surfaceReachM;
         const auto settle = [&]
         {
             const auto below = nearest(shifted(shape, dx, dy), others, {0.0, -1.0}, level.groundY);
             if (!below)
                 return;
             const bool underGround = floored && !below->ref && below->distance < 0.0;
-            if (std::abs(below->distance) > settings.surfaceReachM && !underGround)
+            if (std::abs(below->distance) > downReach && !underGround)
                 return;
             dy -= below->distance;
             result.onGround = !below->ref;
