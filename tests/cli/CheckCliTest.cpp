@@ -322,6 +322,29 @@ TEST(CheckCli, FixWorksInRoundsAndSaysWhatItCouldNotFix)
         << nothing.out;
 }
 
+TEST(CheckCli, FixLowersAFloatingBodyTogetherWithWhatRestsOnIt)
+{
+    // A box 10 cm up, a plank 1 cm over it and a pig on the plank: once the box is set down, the plank floats 11 cm
+    // with the pig on it. Set alone, the pig would be left in the air (the fix used to be "tried and it still
+    // moves"); the plank comes down with its pig, by the same height, and the level stands.
+    const ScratchLevel level("fix-carry");
+    level.write(R"({"format": 1, "id": "carry", "title": "Carry",
+  "slingshot": {"x": 0, "y": 1.5}, "birds": ["red", "red"],
+  "blocks": [{"material": "wood", "x": 12, "y": 0.6, "w": 1.0, "h": 1.0},
+             {"material": "wood", "x": 12, "y": 1.21, "w": 2.0, "h": 0.2}],
+  "pigs": [{"type": "small", "x": 12, "y": 1.56}]}
+)");
+    const RunResult plain = runAbalike("check " + level.path());
+    EXPECT_EQ(plain.exitCode, 2);
+    EXPECT_NE(plain.err.find("set y = 1.1 (and the body on it down by the same 11.0 cm)"), std::string::npos)
+        << plain.err;
+    const RunResult fixed = runAbalike("check --fix " + level.path());
+    EXPECT_EQ(fixed.exitCode, 0) << fixed.out << fixed.err;
+    EXPECT_NE(fixed.out.find("/pigs/0/y: 1.56 -> 1.45 (carried by /blocks/1)"), std::string::npos) << fixed.out;
+    EXPECT_NE(fixed.out.find("/blocks/1/y: 1.21 -> 1.1"), std::string::npos) << fixed.out;
+    EXPECT_NE(fixed.out.find("PASS "), std::string::npos) << fixed.out;
+}
+
 TEST(CheckCli, FixSnapsFloatingAndOverlappingBodiesAndKeepsTheFilesLayout)
 {
     const auto path =

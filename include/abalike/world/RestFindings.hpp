@@ -29,6 +29,10 @@ struct RestFinding
     /// A leaning stack's verified fix: the x to set for this body and each of its consequences (straight up over
     /// what it stands on).
     std::optional<double> groupX;
+    /// A floating or sunk body's verified fix that carries its load: the bodies on it (movedWith) move by this much
+    /// in y with it.
+    std::optional<double> groupDy;
+    std::vector<std::string> movedWith;
     /// The bodies that only follow this one (they start moving after it, touching it): fixing it fixes them.
     std::vector<std::string> consequences;
 

@@ -203,6 +203,15 @@ std::vector<std::string> fixRestFindings(const std::string& file, LevelDef& leve
                     set(member, "x", finding.groupX, "stacked straight");
                 continue;
             }
+            if (finding.groupDy)
+                for (const std::string& member : finding.movedWith)
+                {
+                    // Its load moves with it, by the same height.
+                    const bool pig = member.rfind("/pigs/", 0) == 0;
+                    const auto m = static_cast<std::size_t>(std::stoi(member.substr(pig ? 6 : 8)));
+                    set(member, "y", (pig ? level.pigs[m].y : level.blocks[m].y) + *finding.groupDy,
+                        "carried by " + finding.pointer);
+                }
             set(finding.pointer, "y", finding.fixY, why);
             set(finding.pointer, "x", finding.fixX, why);
             if (finding.pointer.rfind("/blocks/", 0) == 0)

@@ -191,6 +191,9 @@ struct Defect
     /// of what it stands on.
     std::optional<double> groupX;
     std::vector<std::pair<bool, int>> groupMembers; ///< (pig, index) of the bodies on it
+    /// A floating or sunk body's fix that carries its load: the bodies on it (groupMembers) move up or down by this
+    /// much with it.
+    std::optional<double> groupDy;
 };
 
 /// A body's mass as the world makes it: areal density times area.
@@ -324,6 +327,10 @@ void applyFix(LevelDef& level, bool pig, int index, const Defect& d)
             (p ? level.pigs[static_cast<std::size_t>(i)].x : level.blocks[static_cast<std::size_t>(i)].x) = *d.groupX;
         return;
     }
+    if (d.groupDy)
+        for (const auto& [p, member] : d.groupMembers)
+            (p ? level.pigs[static_cast<std::size_t>(member)].y : level.blocks[static_cast<std::size_t>(member)].y) +=
+                *d.groupDy;
     const std::size_t i = static_cast<std::size_t>(index);
     if (pig)
     {
@@ -429,13 +436,26 @@ std::vector<RestFinding> restFindings(const LevelDef& level, const Catalog& cata
         defects.push_back(cause.defect.own ? defectOf(fixed, catalog, cause.pig, cause.index,
                                                       body.maxDisplacementM > report.toleranceM, body.maxDisplacementM)
                                            : cause.defect);
+        std::vector<std::pair<bool, int>> above;
+        for (const std::size_t i : follow[c])
+            if (failing[i].bounds.bottom >= cause.bounds.bottom)
+                above.emplace_back(failing[i].pig, failing[i].index);
         if (!cause.defect.own)
-        {
-            std::vector<std::pair<bool, int>> above;
-            for (const std::size_t i : follow[c])
-                if (failing[i].bounds.bottom >= cause.bounds.bottom)
-                    above.emplace_back(failing[i].pig, failing[i].index);
             leanOf(defects.back(), fixed, catalog, cause.pig, cause.index, above);
+        else if (Defect& d = defects.back(); d.y && !d.x && !d.angleDeg && !d.groupX && !above.empty())
+        {
+            // A body set down onto (or up out of) its support takes what rests on it along: set alone, its load
+            // would be left floating (or sunk) in its turn.
+            const double y = cause.pig ? fixed.pigs[static_cast<std::size_t>(cause.index)].y
+                                       : fixed.blocks[static_cast<std::size_t>(cause.index)].y;
+            d.groupDy = *d.y - y;
+            d.groupMembers = above;
+            std::ostringstream with;
+            with << std::fixed << std::setprecision(1) << " (and the "
+                 << (above.size() == 1 ? std::string("body on it ") : std::to_string(above.size()) + " bodies on it ")
+                 << (*d.groupDy < 0 ? "down" : "up") << " by the same " << std::abs(*d.groupDy) * 100.0 << " cm)";
+            const std::size_t orAt = d.fix.find(" or ");
+            d.fix.insert(orAt == std::string::npos ? d.fix.size() : orAt, with.str());
         }
         if (!defects.back().fix.empty())
             applyFix(fixed, cause.pig, cause.index, defects.back());
@@ -490,6 +510,10 @@ std::vector<RestFinding> restFindings(const LevelDef& level, const Catalog& cata
                 f.fixX = d.x;
                 f.fixAngleDeg = d.angleDeg;
                 f.groupX = d.groupX;
+                f.groupDy = d.groupDy;
+                if (d.groupDy)
+                    for (const auto& [p, member] : d.groupMembers)
+                        f.movedWith.push_back((p ? "/pigs/" : "/blocks/") + std::to_string(member));
                 const double y = cause.pig ? level.pigs[static_cast<std::size_t>(cause.index)].y
                                            : level.blocks[static_cast<std::size_t>(cause.index)].y;
                 if (d.y && std::abs(*d.y - y) <= RestFinding::kMaxSnapM)
