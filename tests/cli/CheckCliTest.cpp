@@ -345,6 +345,29 @@ TEST(CheckCli, FixLowersAFloatingBodyTogetherWithWhatRestsOnIt)
     EXPECT_NE(fixed.out.find("PASS "), std::string::npos) << fixed.out;
 }
 
+TEST(CheckCli, FixPushesApartOverlapsOfAnyDepthAndBodiesInTheGround)
+{
+    // A box sunk 5 cm into the one under it and a box 30 cm into the ground: the loader refuses the file for both;
+    // --fix pushes them out (the nearest free place, on the millimetre), and the rest test passes what it wrote.
+    const ScratchLevel level("fix-overlaps");
+    level.write(R"({"format": 1, "id": "deep", "title": "Deep",
+  "slingshot": {"x": 0, "y": 1.5}, "birds": ["red"],
+  "blocks": [{"material": "wood", "x": 12, "y": 0.5, "w": 1.0, "h": 1.0},
+             {"material": "wood", "x": 12, "y": 1.45, "w": 1.0, "h": 1.0},
+             {"material": "stone", "x": 16, "y": 0.2, "w": 1.0, "h": 1.0}],
+  "pigs": [{"type": "small", "x": 20, "y": 0.25}]}
+)");
+    const RunResult plain = runAbalike("check " + level.path());
+    EXPECT_EQ(plain.exitCode, 2);
+    const RunResult fixed = runAbalike("check --fix " + level.path());
+    EXPECT_EQ(fixed.exitCode, 0) << fixed.out << fixed.err;
+    EXPECT_NE(fixed.out.find("/blocks/1/y: 1.45 -> 1.5 (overlapped /blocks/0 by 5.0 cm)"), std::string::npos)
+        << fixed.out;
+    EXPECT_NE(fixed.out.find("/blocks/2/y: 0.2 -> 0.5 (reached 30.0 cm below the ground)"), std::string::npos)
+        << fixed.out;
+    EXPECT_NE(fixed.out.find("PASS "), std::string::npos) << fixed.out;
+}
+
 TEST(CheckCli, FixSnapsFloatingAndOverlappingBodiesAndKeepsTheFilesLayout)
 {
     const auto path =

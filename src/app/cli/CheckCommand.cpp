@@ -9,8 +9,10 @@
 #include <abalike/design/WhyNotWon.hpp>
 #include <abalike/level/Campaign.hpp>
 #include <abalike/level/LevelIO.hpp>
+#include <abalike/level/LevelLimits.hpp>
 #include <abalike/level/LevelText.hpp>
 #include <abalike/level/LevelWriter.hpp>
+#include <abalike/level/PushApart.hpp>
 #include <abalike/level/SafeText.hpp>
 #include <abalike/save/AtomicWrite.hpp>
 #include <abalike/teach/Claims.hpp>
@@ -228,10 +230,63 @@ std::vector<std::string> fixRestFindings(const std::string& file, LevelDef& leve
     return changes;
 }
 
+/// check --fix, before anything else: bodies that overlap one another or reach into the ground (the loader refuses
+/// the file for them) pushed apart the way a physics engine's first step would (pushOutOfGround, pushApartOverlaps:
+/// the nearest free place, on the millimetre), rewriting just those numbers. The rest test then judges the result.
+std::vector<std::string> fixOverlaps(const std::string& file)
+{
+    std::vector<std::string> changes;
+    std::optional<EditableLevel> editable;
+    try
+    {
+        editable = loadLevelForEditing(file, Catalog::builtin());
+    }
+    catch (const LevelLoadError&)
+    {
+        return changes; // not a level yet: its errors are reported as they are
+    }
+    if (editable->geometryIssues.empty())
+        return changes;
+    LevelDef level = editable->level;
+    std::vector<PushedBody> moved = pushOutOfGround(level, Catalog::builtin());
+    for (PushedBody& body : pushApartOverlaps(level, Catalog::builtin(), limits::kOverlapToleranceM / 2.0))
+        moved.push_back(std::move(body));
+    std::string text = readText(file);
+    for (const PushedBody& body : moved)
+    {
+        const bool pig = body.pointer.rfind("/pigs/", 0) == 0;
+        const auto i = static_cast<std::size_t>(std::stoi(body.pointer.substr(pig ? 6 : 8)));
+        const bool up = body.dyM != 0.0;
+        const double before = up ? (pig ? editable->level.pigs[i].y : editable->level.blocks[i].y)
+                                 : (pig ? editable->level.pigs[i].x : editable->level.blocks[i].x);
+        const double after =
+            up ? (pig ? level.pigs[i].y : level.blocks[i].y) : (pig ? level.pigs[i].x : level.blocks[i].x);
+        const std::string key = body.pointer + (up ? "/y" : "/x");
+        try
+        {
+            text = replaceNumber(text, key, shortest(after));
+        }
+        catch (const std::invalid_argument&)
+        {
+            continue; // not written in the file (a default): left to the designer
+        }
+        std::ostringstream why;
+        why << std::fixed << std::setprecision(1) << (body.other == "the ground" ? "reached " : "overlapped ")
+            << (body.other == "the ground" ? "" : body.other + " by ") << body.depthM * 100.0 << " cm"
+            << (body.other == "the ground" ? " below the ground" : "");
+        changes.push_back(key + ": " + shortest(before) + " -> " + shortest(after) + " (" + why.str() + ")");
+    }
+    if (!changes.empty())
+        writeFileAtomically(file, text);
+    return changes;
+}
+
 FileReport checkFile(const CheckItem& item, const CheckArgs& a)
 {
     FileReport report;
     report.file = item.file;
+    if (a.fix)
+        report.fixes = fixOverlaps(item.file);
     try
     {
         report.level = loadLevel(item.file, Catalog::builtin());
@@ -285,7 +340,8 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
     }
 
     if (a.fix)
-        report.fixes = fixRestFindings(item.file, *report.level);
+        for (std::string& change : fixRestFindings(item.file, *report.level))
+            report.fixes.push_back(std::move(change));
     report.rest = checkRest(level);
     if (!report.rest->passed())
     {

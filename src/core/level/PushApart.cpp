@@ -1,4 +1,4 @@
-#include "level/PushApart.hpp"
+#include <abalike/level/PushApart.hpp>
 
 #include "level/Outline.hpp"
 #include <abalike/world/Catalog.hpp>
@@ -116,6 +116,32 @@ std::vector<Obstacle> terrainObstacles(const LevelDef& level)
 }
 
 } // namespace
+
+std::vector<PushedBody> pushOutOfGround(LevelDef& level, const Catalog& catalog)
+{
+    std::vector<PushedBody> pushed;
+    const auto lift = [&](const std::string& pointer, double bottom, double& y)
+    {
+        const double depth = level.groundY - bottom;
+        if (depth <= 1e-9)
+            return;
+        const double dy = std::ceil(depth * 1000.0 - 1e-6) / 1000.0; // whole millimetres, never less than needed
+        y = std::round((y + dy) * 1000.0) / 1000.0;
+        pushed.push_back({pointer, "the ground", depth, 0.0, dy});
+    };
+    for (std::size_t i = 0; i < level.blocks.size(); ++i)
+    {
+        double bottom = 1e300;
+        for (const Outline& piece : blockOutlines(level.blocks[i]))
+            bottom = std::min(bottom, piece.bounds()[0].y);
+        if (bottom < 1e300)
+            lift("/blocks/" + std::to_string(i), bottom, level.blocks[i].y);
+    }
+    for (std::size_t i = 0; i < level.pigs.size(); ++i)
+        if (const PigType* type = catalog.findPig(level.pigs[i].type))
+            lift("/pigs/" + std::to_string(i), level.pigs[i].y - type->radiusM, level.pigs[i].y);
+    return pushed;
+}
 
 double deepestOverlap(const LevelDef& level, const Catalog& catalog, bool pig, std::size_t index)
 {

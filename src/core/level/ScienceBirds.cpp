@@ -5,7 +5,7 @@
 #include <abalike/world/RestFindings.hpp>
 
 #include "level/LevelReader.hpp"
-#include "level/PushApart.hpp"
+#include <abalike/level/PushApart.hpp>
 #include "level/XmlText.hpp"
 #include <abalike/level/LevelLimits.hpp>
 

@@ -27,6 +27,10 @@ struct PushedBody
 /// Returns the bodies moved, in the order they were; a body that cannot be freed within a metre is left alone.
 std::vector<PushedBody> pushApartOverlaps(LevelDef& level, const Catalog& catalog, double toleranceM);
 
+/// Blocks and pigs that reach below the ground, set onto it (a physics engine pushes them out at its first step):
+/// one entry each, other "the ground".
+std::vector<PushedBody> pushOutOfGround(LevelDef& level, const Catalog& catalog);
+
 /// How deep a block (blocks[index]) or a pig (pigs[index]) overlaps the deepest other body or terrain (m; 0: none).
 double deepestOverlap(const LevelDef& level, const Catalog& catalog, bool pig, std::size_t index);
 
