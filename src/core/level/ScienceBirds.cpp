@@ -5,9 +5,9 @@
 #include <abalike/world/RestFindings.hpp>
 
 #include "level/LevelReader.hpp"
-#include <abalike/level/PushApart.hpp>
 #include "level/XmlText.hpp"
 #include <abalike/level/LevelLimits.hpp>
+#include <abalike/level/PushApart.hpp>
 
 #include <algorithm>
 #include <charconv>
