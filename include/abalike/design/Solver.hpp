@@ -59,7 +59,8 @@ ShotOutcome outcomeOf(const GameSession& session);
 ShotOutcome playShots(const LevelDef& level, const std::vector<ScriptedShot>& shots, const Catalog& catalog);
 
 /// Searches shot sequences (angle, speed, ability timing) bird by bird with a beam search over a coarse grid,
-/// refined locally around the best shots, every candidate played headless with simulateShots. Candidates are
+/// refined locally around the best shots, every candidate played headless as simulateShots would play it (going on
+/// from the game after the shots before it: SessionBranch, in copies of the process where it can). Candidates are
 /// played in parallel but ranked in a fixed order, so the answer does not depend on the number of threads.
 Solution solveLevel(const LevelDef& level, const Catalog& catalog = Catalog::builtin(),
                     const SolverOptions& options = {});

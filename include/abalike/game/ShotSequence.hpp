@@ -24,7 +24,9 @@ public:
         Idle,    ///< no shot is left to fire and none is under way; the caller steps the world if it goes on
     };
 
-    explicit ShotSequence(std::vector<ScriptedShot> shots, double holdS = 0.0);
+    /// alreadyFired: the first shots of the list were fired before on this session (a SessionBranch goes on
+    /// from them), so the sequence starts at the next and numbers its shots as the whole list does.
+    explicit ShotSequence(std::vector<ScriptedShot> shots, double holdS = 0.0, std::size_t alreadyFired = 0);
 
     /// One fixed step of game time (dtS, the world's step) on the session. Throws LaunchError, prefixed
     /// "shot N: ", when a shot cannot be fired.

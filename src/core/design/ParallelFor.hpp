@@ -1,10 +1,13 @@
 #pragma once
 
+#include <abalike/util/ProcessCopy.hpp>
+
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <exception>
 #include <mutex>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -60,6 +63,32 @@ void parallelFor(std::size_t count, unsigned threads, Work&& work, Done&& done)
         thread.join();
     if (failure)
         std::rethrow_exception(failure);
+}
+
+/// parallelFor for work that hands its result over as bytes: in copies of the process where it can be copied
+/// (runInProcessCopies: each copy is single-threaded, so the process copies that searches make from there do not
+/// copy pages this process's other threads are writing), else on threads. take(i, bytes) is called in this process
+/// for each item, from one thread at a time in the first case and from the workers in the second; an item whose
+/// copy failed is worked here. done(i) as for parallelFor.
+template <typename Work, typename Take, typename Done>
+void parallelForBytes(std::size_t count, unsigned threads, Work&& work, Take&& take, Done&& done)
+{
+    if (threads > 1 && count > 1)
+        if (const auto copied = runInProcessCopies(
+                count, threads, [&](std::size_t i) -> std::string { return work(i); }, [&](std::size_t i) { done(i); }))
+        {
+            for (std::size_t i = 0; i < count; ++i)
+                if ((*copied)[i])
+                    take(i, *(*copied)[i]);
+                else
+                {
+                    take(i, work(i));
+                    done(i);
+                }
+            return;
+        }
+    parallelFor(
+        count, threads, [&](std::size_t i) { take(i, work(i)); }, done);
 }
 
 } // namespace abalike

@@ -3,12 +3,15 @@
 
 #include <abalike/design/AimRange.hpp>
 #include <abalike/design/Solver.hpp>
+#include <abalike/game/SessionBranch.hpp>
 #include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelFlight.hpp>
+#include <abalike/util/Bytes.hpp>
 #include <abalike/world/RestCheck.hpp>
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <set>
 #include <tuple>
 
@@ -64,6 +67,10 @@ bool better(const Evaluated& a, const Evaluated& b)
     return std::make_tuple(a.outcome.won, -a.outcome.pigsRemaining, a.outcome.score) >
            std::make_tuple(b.outcome.won, -b.outcome.pigsRemaining, b.outcome.score);
 }
+
+/// A candidate's bytes start with whether it could be played (a launch it refused is no candidate).
+constexpr char kCandidatePlayed = 'p';
+constexpr char kCandidateRefused = 'x';
 
 using ShotKey = std::tuple<std::size_t, double, double, double>;
 
@@ -122,6 +129,7 @@ private:
     std::vector<Evaluated> searchBird(std::size_t birdIndex, const std::vector<std::vector<ScriptedShot>>& prefixes)
     {
         m_seen.clear(); // prefix indices name different sequences from one bird to the next
+        playPrefixes(prefixes);
         const BirdType* bird = m_catalog.findBird(m_level.birds[birdIndex]);
         m_payload = bird->ability ? bird->ability->dropped() : std::nullopt;
         const double top = floorTo(maxLaunchSpeed(m_level.slingshot, *bird, m_catalog), 100);
@@ -262,33 +270,65 @@ private:
             if (m_seen.insert(keyOf(c)).second)
                 fresh.push_back(c);
         std::vector<Evaluated> results(fresh.size());
-        parallelFor(
+        const bool wantDrops = m_payload.has_value();
+        parallelForBytes(
             fresh.size(), m_threads,
-            [&](std::size_t i)
+            [&](std::size_t i) -> std::string
+            {
+                try
+                {
+                    return kCandidatePlayed +
+                           m_branches[fresh[i].prefix]->trial(
+                               fresh[i].shot, [&](const GameSession& session)
+                               { return trialBytes(session, wantDrops && !fresh[i].shot.abilityAtS); });
+                }
+                catch (const LaunchError&)
+                {
+                    return std::string(1, kCandidateRefused);
+                }
+            },
+            [&](std::size_t i, const std::string& bytes)
             {
                 Evaluated& e = results[i];
                 e.shots = prefixes[fresh[i].prefix];
                 e.shots.push_back(fresh[i].shot);
-                try
-                {
-                    const auto session = simulateShots(m_level, e.shots, m_catalog);
-                    e.outcome = outcomeOf(*session);
-                    if (!session->shots().empty() && session->shots().back().actualContact)
-                        e.lastContactS = session->shots().back().actualContact->t;
-                    if (m_payload && !e.shots.back().abilityAtS)
-                        e.drops = dropAims(*session, *m_payload);
-                    e.valid = true;
-                }
-                catch (const LaunchError&)
-                {
-                    e.valid = false;
-                }
+                e.valid = !bytes.empty() && bytes.front() == kCandidatePlayed;
+                if (!e.valid)
+                    return;
+                BytesIn in(std::string_view(bytes).substr(1));
+                e.outcome = in.get<ShotOutcome>();
+                e.lastContactS = in.get<std::optional<double>>();
+                e.drops = in.getVector<DropAim>();
             },
             [&](std::size_t) { report(++m_done); });
         m_simulations += fresh.size();
         ranked.insert(ranked.end(), std::make_move_iterator(results.begin()), std::make_move_iterator(results.end()));
         // Stable: equal sequences keep the order they were generated in, whatever thread finished first.
         std::stable_sort(ranked.begin(), ranked.end(), better);
+    }
+
+    /// What a candidate's play leaves for the ranking: its outcome, when its shot first touched something, and
+    /// where a payload could be dropped on a standing pig.
+    std::string trialBytes(const GameSession& session, bool withDrops) const
+    {
+        std::optional<double> contactS;
+        if (!session.shots().empty() && session.shots().back().actualContact)
+            contactS = session.shots().back().actualContact->t;
+        BytesOut out;
+        out.put(outcomeOf(session)).put(contactS);
+        out.putVector(withDrops ? dropAims(session, *m_payload) : std::vector<DropAim>{});
+        return out.take();
+    }
+
+    /// The games played up to each prefix: played once per bird's search, and every candidate goes on from one.
+    void playPrefixes(const std::vector<std::vector<ScriptedShot>>& prefixes)
+    {
+        m_branches.clear();
+        m_branches.resize(prefixes.size());
+        parallelFor(
+            prefixes.size(), m_threads,
+            [&](std::size_t p) { m_branches[p] = std::make_unique<SessionBranch>(m_level, prefixes[p], m_catalog); },
+            [](std::size_t) {});
     }
 
     void report(std::size_t done)
@@ -306,7 +346,8 @@ private:
     std::size_t m_done = 0;
     std::size_t m_simulations = 0;
     std::set<ShotKey> m_seen;
-    std::optional<DroppedPayload> m_payload; ///< what the bird being searched drops, if anything
+    std::vector<std::unique_ptr<SessionBranch>> m_branches; ///< one per prefix of the bird being searched
+    std::optional<DroppedPayload> m_payload;                ///< what the bird being searched drops, if anything
 };
 
 } // namespace

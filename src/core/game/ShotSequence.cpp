@@ -1,12 +1,16 @@
 #include <abalike/game/ShotSequence.hpp>
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
 namespace abalike
 {
 
-ShotSequence::ShotSequence(std::vector<ScriptedShot> shots, double holdS) : m_shots(std::move(shots)), m_holdS(holdS) {}
+ShotSequence::ShotSequence(std::vector<ScriptedShot> shots, double holdS, std::size_t alreadyFired)
+    : m_shots(std::move(shots)), m_holdS(holdS), m_next(std::min(alreadyFired, m_shots.size()))
+{
+}
 
 ShotSequence::Tick ShotSequence::advance(GameSession& session, double dtS)
 {
