@@ -93,6 +93,9 @@ TEST(CheckCli, SolveRecommendsStarsAndWriteStarsWritesOnlyThem)
     const std::string file = level.path();
     const RunResult dry = runAbalike("check " + file + " --solve --player-runs 4 --json");
     ASSERT_EQ(dry.exitCode, 0) << dry.err;
+    // Difficulty within seconds: the model player's first runs, before the solver (here they are all of them).
+    EXPECT_NE(dry.err.find("ws: first estimate (4 of 4 model player runs, "), std::string::npos) << dry.err;
+    EXPECT_EQ(dry.err.find("refining"), std::string::npos) << dry.err;
     const nlohmann::json report = nlohmann::json::parse(dry.out)["files"][0];
     ASSERT_TRUE(report["recommended_stars"].is_array()) << dry.out;
     const auto stars = report["recommended_stars"].get<std::vector<int>>();

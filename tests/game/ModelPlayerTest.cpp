@@ -25,6 +25,28 @@ TEST(ModelPlayer, AimsItsFirstShotAtAWinWhenOneIsInItsBudget)
     EXPECT_FALSE(shot.abilityAtS);
 }
 
+TEST(ModelPlayer, AMeasurementInPartsIsTheMeasurementOfAllItsRuns)
+{
+    // check --solve's first estimate: run 0 first, runs 1-2 after it, the first aim made once.
+    const LevelDef l = level("1-1-first-flight.json");
+    ModelPlayerOptions options;
+    options.runs = 3;
+    const PlayerDifficulty whole = measurePlayerDifficulty(l, Catalog::builtin(), options);
+    options.runs = 1;
+    const PlayerDifficulty first = measurePlayerDifficulty(l, Catalog::builtin(), options);
+    options.runs = 2;
+    options.firstRun = 1;
+    options.firstShot = first.firstShot;
+    const PlayerDifficulty joined = joinDifficulty(first, measurePlayerDifficulty(l, Catalog::builtin(), options));
+    EXPECT_EQ(joined.runs, 3u);
+    EXPECT_EQ(joined.wins, whole.wins);
+    EXPECT_EQ(joined.winScores, whole.winScores);
+    EXPECT_EQ(joined.simulations, whole.simulations);
+    EXPECT_EQ(joined.low90, whole.low90);
+    ASSERT_TRUE(whole.firstShot && joined.firstShot);
+    EXPECT_EQ(joined.firstShot->angleDeg, whole.firstShot->angleDeg);
+}
+
 TEST(ModelPlayer, TheSameSeedGivesTheSameDifficultyOnAnyNumberOfThreads)
 {
     const LevelDef l = level("2-1-dominoes.json");

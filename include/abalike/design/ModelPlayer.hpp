@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace abalike
@@ -14,6 +15,11 @@ struct ModelPlayerOptions
 {
     std::size_t runs = 40; ///< plays of the level; run i draws its aim errors from its own seed (seed, i)
     std::uint64_t seed = 1;
+    /// The number of the first run: a measurement made in parts (runs 0-3 for a first estimate, then 4-39) joined
+    /// with joinDifficulty equals one measurement of all the runs.
+    std::size_t firstRun = 0;
+    /// The first bird's aim, when an earlier part has made it (PlayerDifficulty::firstShot).
+    std::optional<ScriptedShot> firstShot;
     int threads = 0; ///< 0: every hardware thread
     ProgressCallback progress;
 };
@@ -29,15 +35,19 @@ struct PlayerDifficulty
     std::vector<int> winScores;  ///< the score of every winning run, in run order (star thresholds come from these)
     std::size_t simulations = 0; ///< headless games played in all
     double seconds = 0.0;
+    std::optional<ScriptedShot> firstShot; ///< the first bird's aim, the same for every run (made once)
 };
+
+/// The measurement of runs a..b-1 and that of runs b..c-1 (ModelPlayerOptions::firstRun) as one of runs a..c-1.
+PlayerDifficulty joinDifficulty(const PlayerDifficulty& first, const PlayerDifficulty& next);
 
 /// The 90 % Wilson score interval of a win rate: {low, high}.
 std::array<double, 2> wilsonInterval90(std::size_t wins, std::size_t runs);
 
 /// The next shot the model player aims for, given the shots already fired: its search budget is every angle from
 /// -10 to 80 degrees in 5 degree steps at 60, 80 and 100 % of the bird's full pull (57 candidates, no abilities),
-/// each played headless after the shots so far (simulateShots: the world as it now is), ranked won, then fewer
-/// pigs left, then score, then candidate order.
+/// each played headless after the shots so far (as simulateShots would; a SessionBranch goes on from the world as it
+/// now is), ranked won, then fewer pigs left, then score, then candidate order.
 ScriptedShot modelPlayerShot(const LevelDef& level, const std::vector<ScriptedShot>& fired, const Catalog& catalog,
                              std::size_t* simulations = nullptr);
 

@@ -1,6 +1,7 @@
 #include "cli/Commands.hpp"
 #include "cli/ProgressBar.hpp"
 #include "cli/SolutionJson.hpp"
+#include "cli/StagedDifficulty.hpp"
 #include "cli/UsageError.hpp"
 
 #include <abalike/design/ModelPlayer.hpp>
@@ -369,6 +370,10 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
     }
     if (a.solve && report.rest->passed() && !level.pigs.empty()) // a sandbox scene without pigs has nothing to win
     {
+        // A first estimate of difficulty and stars within seconds, from a few of the model player's runs; the
+        // solver and the other runs refine it.
+        StagedDifficulty player(level, a.playerRuns, a.threads);
+        player.estimate(std::cerr);
         SolverOptions options;
         options.threads = a.threads;
         ProgressBar bar("solving " + level.id);
@@ -395,18 +400,7 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
         else if (report.solution->outcome.stars < 1)
             report.reasons.push_back("the solver's best win earns no star");
         if (a.playerRuns > 0 && report.solution->outcome.won)
-        {
-            ProgressBar playerBar("model player " + level.id);
-            ModelPlayerOptions playerOptions;
-            playerOptions.runs = a.playerRuns;
-            playerOptions.threads = a.threads;
-            playerOptions.progress = [&playerBar](std::size_t done, std::size_t total)
-            {
-                playerBar.update(done, total);
-            };
-            report.player = measurePlayerDifficulty(level, Catalog::builtin(), playerOptions);
-            playerBar.finish();
-        }
+            report.player = player.finish();
         if (report.solution->outcome.won)
         {
             report.recommendedStars =

@@ -3,7 +3,9 @@
 #include <abalike/design/AimRange.hpp>
 #include <abalike/design/ModelPlayer.hpp>
 #include <abalike/game/GameSession.hpp>
+#include <abalike/game/SessionBranch.hpp>
 #include <abalike/level/LevelFlight.hpp>
+#include <abalike/util/Bytes.hpp>
 #include <abalike/util/SplitMix64.hpp>
 #include <abalike/world/RestCheck.hpp>
 #include <algorithm>
@@ -33,9 +35,63 @@ double normal(SplitMix64& random)
 
 using Rank = std::tuple<bool, int, int>; ///< won, -pigs left, score: larger is better
 
-Rank rankOf(const GameSession& session)
+std::string rankBytes(const GameSession& session)
 {
-    return {session.phase() == Phase::Won, -session.pigsRemaining(), session.score().total()};
+    return BytesOut()
+        .put(session.phase() == Phase::Won)
+        .put(-session.pigsRemaining())
+        .put(session.score().total())
+        .take();
+}
+
+Rank rankOf(const std::string& bytes)
+{
+    BytesIn in(bytes);
+    const bool won = in.get<bool>();
+    const int pigs = in.get<int>();
+    return {won, pigs, in.get<int>()};
+}
+
+/// The model player's aim after the shots the branch has played (modelPlayerShot), its candidates played on up to
+/// `threads` workers.
+ScriptedShot bestShotFrom(const SessionBranch& branch, const LevelDef& level, const Catalog& catalog,
+                          std::size_t* simulations, unsigned threads = 1)
+{
+    const BirdType* bird = catalog.findBird(level.birds.at(branch.shots().size()));
+    const SlingshotBand band = slingshotBand(level.slingshot, *bird, catalog);
+    std::vector<ScriptedShot> candidates;
+    for (double angle = kAimMinAngleDeg; angle <= kAimMaxAngleDeg + 1e-9; angle += kAngleStepDeg)
+        for (const double share : kPullShares)
+            candidates.emplace_back(angle, band.atFraction(share).speedMps);
+    std::vector<Rank> ranks(candidates.size());
+    parallelForBytes(
+        candidates.size(), threads, [&](std::size_t i) { return branch.trial(candidates[i], rankBytes); },
+        [&](std::size_t i, const std::string& bytes) { ranks[i] = rankOf(bytes); }, [](std::size_t) {});
+    if (simulations != nullptr)
+        *simulations += candidates.size();
+    // The first of the best, in candidate order.
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < ranks.size(); ++i)
+        if (ranks[i] > ranks[best])
+            best = i;
+    return candidates[best];
+}
+
+/// How one run of the model player ended.
+struct RunResult
+{
+    bool won = false;
+    int score = 0;
+    std::size_t simulations = 0;
+};
+
+/// The win share and its interval, from the wins and runs.
+void setShare(PlayerDifficulty& d)
+{
+    d.winShare = d.runs == 0 ? 0.0 : static_cast<double>(d.wins) / static_cast<double>(d.runs);
+    const auto [low, high] = wilsonInterval90(d.wins, d.runs);
+    d.low90 = low;
+    d.high90 = high;
 }
 
 } // namespace
@@ -55,26 +111,7 @@ std::array<double, 2> wilsonInterval90(std::size_t wins, std::size_t runs)
 ScriptedShot modelPlayerShot(const LevelDef& level, const std::vector<ScriptedShot>& fired, const Catalog& catalog,
                              std::size_t* simulations)
 {
-    const BirdType* bird = catalog.findBird(level.birds.at(fired.size()));
-    const SlingshotBand band = slingshotBand(level.slingshot, *bird, catalog);
-    ScriptedShot best;
-    std::optional<Rank> bestRank;
-    for (double angle = kAimMinAngleDeg; angle <= kAimMaxAngleDeg + 1e-9; angle += kAngleStepDeg)
-        for (const double share : kPullShares)
-        {
-            std::vector<ScriptedShot> shots = fired;
-            shots.emplace_back(angle, band.atFraction(share).speedMps);
-            const auto session = simulateShots(level, shots, catalog);
-            if (simulations != nullptr)
-                ++*simulations;
-            const Rank rank = rankOf(*session);
-            if (!bestRank || rank > *bestRank)
-            {
-                bestRank = rank;
-                best = shots.back();
-            }
-        }
-    return best;
+    return bestShotFrom(SessionBranch(level, fired, catalog), level, catalog, simulations);
 }
 
 PlayerDifficulty measurePlayerDifficulty(const LevelDef& level, const Catalog& catalog,
@@ -91,57 +128,75 @@ PlayerDifficulty measurePlayerDifficulty(const LevelDef& level, const Catalog& c
             return result;
 
     const PlayerAim& aim = catalog.playerAim();
-    // Every run faces the same untouched level with its first bird: aim once.
+    // Every run faces the same untouched level with its first bird: aim once (a later part of the measurement has
+    // the aim from the first part, and its games are counted there).
     std::size_t firstSimulations = 0;
-    const ScriptedShot first = modelPlayerShot(level, {}, catalog, &firstSimulations);
-    std::vector<char> won(options.runs, 0);
-    std::vector<int> scores(options.runs, 0);
-    std::vector<std::size_t> simulations(options.runs, 0);
-    parallelFor(
+    if (!options.firstShot)
+        result.firstShot = bestShotFrom(SessionBranch(level, {}, catalog), level, catalog, &firstSimulations,
+                                        workerCount(options.threads));
+    else
+        result.firstShot = options.firstShot;
+    const ScriptedShot first = *result.firstShot;
+    std::vector<RunResult> runs(options.runs);
+    parallelForBytes(
         options.runs, workerCount(options.threads),
         [&](std::size_t run)
         {
-            SplitMix64 random(options.seed * 0x100000001B3ull + run);
-            std::vector<ScriptedShot> fired;
+            RunResult outcome;
+            SplitMix64 random(options.seed * 0x100000001B3ull + options.firstRun + run);
+            SessionBranch game(level, {}, catalog); // the run's own game, played on shot by shot
             for (std::size_t b = 0; b < level.birds.size(); ++b)
             {
-                ScriptedShot shot = b == 0 ? first : modelPlayerShot(level, fired, catalog, &simulations[run]);
+                ScriptedShot shot = b == 0 ? first : bestShotFrom(game, level, catalog, &outcome.simulations);
                 const BirdType* bird = catalog.findBird(level.birds[b]);
                 const SlingshotBand band = slingshotBand(level.slingshot, *bird, catalog);
                 const double share =
                     std::clamp(band.forSpeed(shot.speedMps).fraction + aim.pullSigma * normal(random), 0.0, 1.0);
                 shot.angleDeg = std::clamp(shot.angleDeg + aim.angleSigmaDeg * normal(random), -90.0, 90.0);
                 shot.speedMps = band.atFraction(share).speedMps;
-                fired.push_back(shot);
-                const auto session = simulateShots(level, fired, catalog);
-                ++simulations[run];
-                if (session->finished())
+                game.play(shot);
+                ++outcome.simulations;
+                if (const GameSession& session = game.session(); session.finished())
                 {
-                    won[run] = session->phase() == Phase::Won ? 1 : 0;
-                    scores[run] = session->score().total();
+                    outcome.won = session.phase() == Phase::Won;
+                    outcome.score = session.score().total();
                     break;
                 }
             }
+            return BytesOut().put(outcome).take();
         },
+        [&](std::size_t run, const std::string& bytes) { runs[run] = BytesIn(bytes).get<RunResult>(); },
         [&, done = std::size_t{0}](std::size_t) mutable
         {
             ++done;
             if (options.progress)
                 options.progress(done, options.runs);
         });
-    result.wins = static_cast<std::size_t>(std::count(won.begin(), won.end(), 1));
-    for (std::size_t run = 0; run < options.runs; ++run)
-        if (won[run] != 0)
-            result.winScores.push_back(scores[run]);
     result.simulations = firstSimulations;
-    for (const std::size_t s : simulations)
-        result.simulations += s;
-    result.winShare = static_cast<double>(result.wins) / static_cast<double>(result.runs);
-    const auto [low, high] = wilsonInterval90(result.wins, result.runs);
-    result.low90 = low;
-    result.high90 = high;
+    for (const RunResult& run : runs)
+    {
+        result.wins += run.won ? 1 : 0;
+        if (run.won)
+            result.winScores.push_back(run.score);
+        result.simulations += run.simulations;
+    }
+    setShare(result);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
+}
+
+PlayerDifficulty joinDifficulty(const PlayerDifficulty& first, const PlayerDifficulty& next)
+{
+    PlayerDifficulty joined = first;
+    joined.runs += next.runs;
+    joined.wins += next.wins;
+    joined.winScores.insert(joined.winScores.end(), next.winScores.begin(), next.winScores.end());
+    joined.simulations += next.simulations;
+    joined.seconds += next.seconds;
+    if (!joined.firstShot)
+        joined.firstShot = next.firstShot;
+    setShare(joined);
+    return joined;
 }
 
 } // namespace abalike
