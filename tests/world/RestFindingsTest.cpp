@@ -62,6 +62,23 @@ TEST(RestFindings, ACantileverFallsPastItsSupportsEdge)
     EXPECT_FALSE(f.snapY);
 }
 
+TEST(RestFindings, APlankPushedOffOneOfItsPostsGoesBackAcrossBoth)
+{
+    // Posts at x = 20 and 22; the plank, pushed 1.3 m right, rests on the right post alone with its centre 17.5 cm
+    // past that post's edge. One centimetre inside the edge it would still tip; across both posts it stands.
+    const auto findings = findingsOf(scene(R"("blocks": [
+        {"material": "wood", "x": 20.0, "y": 0.75, "w": 0.25, "h": 1.5},
+        {"material": "wood", "x": 22.0, "y": 0.75, "w": 0.25, "h": 1.5},
+        {"material": "wood", "x": 22.3, "y": 1.625, "w": 2.6, "h": 0.25}],
+        "pigs": [{"type": "small", "x": 30.0, "y": 0.25}])"));
+    ASSERT_FALSE(findings.empty());
+    const RestFinding& f = findings.back();
+    EXPECT_EQ(f.pointer, "/blocks/2");
+    EXPECT_EQ(f.what.rfind("falls: its centre of mass is 17.5 cm past block 1 (wood)'s edge", 0), 0u) << f.what;
+    EXPECT_EQ(f.fix, "put it back across block 1 (wood) and block 0 (wood) (set x = 21)");
+    EXPECT_EQ(f.fixX, 21.0);
+}
+
 TEST(RestFindings, ABlockFloatingFarAboveItsSupportGetsAFixButNoSnap)
 {
     const auto findings = findingsOf(scene(R"("blocks": [{"material": "wood", "x": 20.0, "y": 0.6, "w": 1.0, "h": 1.0}],

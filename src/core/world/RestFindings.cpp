@@ -244,6 +244,49 @@ void leanOf(Defect& d, const LevelDef& level, const Catalog& catalog, bool pig, 
             " for each), or widen what it stands on";
 }
 
+/// A second support for a body fallen past its support's edge (a plank pushed off one of its two posts): a block
+/// whose flat top is level with that support's, beside it, and the x that centres the body across both, when the
+/// body is long enough to reach over each by a centimetre. The one that moves it least.
+struct SecondSupport
+{
+    std::string name;
+    double centreX = 0.0;
+};
+
+std::optional<SecondSupport> secondSupport(const LevelDef& level, bool pig, int index, const SupportGap& under)
+{
+    if (pig)
+        return std::nullopt;
+    const BlockDef& self = level.blocks[static_cast<std::size_t>(index)];
+    const Bounds own = blockBounds(self);
+    const double half = 0.5 * (own.right - own.left);
+    const double supportTop = own.bottom - under.gapM;
+    std::optional<SecondSupport> best;
+    for (std::size_t i = 0; i < level.blocks.size(); ++i)
+    {
+        const BlockDef& b = level.blocks[i];
+        if (static_cast<int>(i) == index || b.shape == BlockShape::Circle || b.shape == BlockShape::Triangle ||
+            std::abs(std::fmod(b.angleDeg, 90.0)) > 1e-9)
+            continue;
+        const Bounds other = blockBounds(b);
+        const bool beside = other.left >= under.supportRightM || other.right <= under.supportLeftM;
+        if (!beside || std::abs(other.top - supportTop) > kTouchM)
+            continue;
+        const double centre =
+            std::round(0.5 * (std::min(under.supportLeftM, other.left) + std::max(under.supportRightM, other.right)) *
+                       1e3) /
+            1e3;
+        const bool otherRight = other.left >= under.supportRightM;
+        const double innerLeft = otherRight ? under.supportRightM : other.right;
+        const double innerRight = otherRight ? other.left : under.supportLeftM;
+        if (centre - half > innerLeft - 0.01 || centre + half < innerRight + 0.01)
+            continue;
+        if (!best || std::abs(centre - self.x) < std::abs(best->centreX - self.x))
+            best = SecondSupport{"block " + std::to_string(i) + " (" + b.material + ")", centre};
+    }
+    return best;
+}
+
 Defect defectOf(const LevelDef& level, const Catalog& catalog, bool pig, int index, bool moved, double movedM)
 {
     Defect d;
@@ -295,11 +338,22 @@ Defect defectOf(const LevelDef& level, const Catalog& catalog, bool pig, int ind
     }
     else if (!under.support.empty() && (x < under.supportLeftM || x > under.supportRightM))
     {
-        const double past = x < under.supportLeftM ? under.supportLeftM - x : x - under.supportRightM;
+        const bool right = x > under.supportRightM;
+        const double past = right ? x - under.supportRightM : under.supportLeftM - x;
         what << "falls: its centre of mass is " << metres(past) << " past " << under.support << "'s edge";
-        d.x = x < under.supportLeftM ? under.supportLeftM + 0.01 : under.supportRightM - 0.01;
-        d.fix = "move it " + metres(past + 0.01) + (x < under.supportLeftM ? " right" : " left") +
-                " (set x = " + coordinate(*d.x) + ") or support its centre";
+        if (const std::optional<SecondSupport> other = secondSupport(level, pig, index, under))
+        {
+            // A plank pushed off one of its posts: back across both.
+            d.x = other->centreX;
+            d.fix =
+                "put it back across " + under.support + " and " + other->name + " (set x = " + coordinate(*d.x) + ")";
+        }
+        else
+        {
+            d.x = right ? under.supportRightM - 0.01 : under.supportLeftM + 0.01;
+            d.fix = "move it " + metres(past + 0.01) + (right ? " left" : " right") + " (set x = " + coordinate(*d.x) +
+                    ") or support its centre";
+        }
     }
     else if (under.supportIsSlippery && moved)
         what << "slides off " << under.support << " (" << under.supportMaterial << " is slippery: friction "
