@@ -11,6 +11,7 @@
 
 #include <abalike/level/SafeText.hpp>
 #include <abalike/save/DataDirectory.hpp>
+#include <abalike/util/ProcessCopy.hpp>
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/OpenGL.hpp>
@@ -45,6 +46,10 @@ App::App(AppOptions options, Campaign campaign, SaveStore store, std::unique_ptr
       m_ui(m_window, m_font.get(), m_settings), m_run(m_options),
       m_context(m_navigator, m_ui, m_settings, m_progress, m_notices, m_trace, m_run), m_script(m_options.script)
 {
+    // The game's searches (the editor's solver, the endless mode's generator) replay their tries instead of copying
+    // the process: after each copy, every page the render threads write (frame buffers, textures) would be copied
+    // again at ~14 us a page on a virtual machine, a hitch in every frame while a search runs.
+    allowProcessCopies(false);
     // Scripted runs read the player's files (tests point ABALIKE_DATA_DIR at a fixture) but never write them.
     m_notices.takeMessagesOf(*m_store);
     if (!m_options.tracePath.empty() && !m_trace.open(m_options.tracePath))
