@@ -329,6 +329,24 @@ TEST(ScienceBirdsImport, PlatformsOfNegativeScaleAreMirroredAndOfZeroScaleLeftOu
         << all;
 }
 
+TEST(ScienceBirdsImport, APlatformTooThinToSimulateGrowsDownwardsUnderWhatItHolds)
+{
+    // Phy-Q draws ledges 0.15 tiles thick (9.3 cm): our loader refuses a static body under 10 cm, so the importer
+    // makes it 10 cm with its top where it was, and the pig on it stays on it.
+    const ScienceBirdsLevel imported = import("<Level><GameObjects>\n"
+                                              "<Platform x=\"4\" y=\"0\" scaleX=\"3\" scaleY=\"0.15\"/>\n"
+                                              "<Pig type=\"BasicSmall\" x=\"4\" y=\"0.2965\"/>\n"
+                                              "</GameObjects></Level>");
+    ASSERT_EQ(imported.level.terrain.size(), 1u);
+    const TerrainDef& ledge = imported.level.terrain[0];
+    EXPECT_DOUBLE_EQ(ledge.heightM, 0.1);
+    EXPECT_NEAR(ledge.y + 0.5 * ledge.heightM, imported.level.pigs.at(0).y - 0.25, 1e-9) << "its top where it was";
+    EXPECT_EQ(warningAbout(imported, "/terrain/0").message,
+              "<Platform> is 9.3 cm thick, less than the 10 cm a static body needs to simulate well: made 10 cm, "
+              "growing downwards (its top where it was)");
+    EXPECT_TRUE(checkRest(imported.level).passed());
+}
+
 TEST(ScienceBirdsImport, AGapJustOverTheSnapReadsAsMoreThanIt)
 {
     // Positions are read to the millimetre: a box written 10.06 cm up is 10.1 cm up, never "10.0 cm ... more than

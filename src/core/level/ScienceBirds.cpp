@@ -137,6 +137,7 @@ private:
     void readPig(const pugi::xml_node& node);
     void readTnt(const pugi::xml_node& node);
     void readPlatform(const pugi::xml_node& node);
+    void thickenThinPlatform(const pugi::xml_node& node, const std::string& pointer, TerrainDef& platform);
     /// Science Birds' y with its ground at -3.5 to ours at 0, to the millimetre (its files give centimetres, and
     /// generators write float noise such as 4.509999 for 4.51).
     static double ourY(double y) { return tidy(y - kScienceBirdsGroundY); }
@@ -427,8 +428,35 @@ void Importer::readPlatform(const pugi::xml_node& node)
     platform.widthM = tidy(kPlatformTileM * std::abs(*scaleX));
     platform.heightM = tidy(kPlatformTileM * std::abs(*scaleY));
     platform.angleDeg = squared(*rotation);
+    thickenThinPlatform(node, pointer, platform);
     m_placeOf[pointer] = offsetOf(node);
     m_level.terrain.push_back(platform);
+}
+
+void Importer::thickenThinPlatform(const pugi::xml_node& node, const std::string& pointer, TerrainDef& platform)
+{
+    // Science Birds draws platforms of any scale; a static body thinner than limits::kMinBodySizeM is one our loader
+    // refuses (Box2D's contacts need some thickness). Level or upright, it grows downwards so that what rests on its
+    // top still does; tilted, about its centre.
+    const double turn = std::remainder(platform.angleDeg, 180.0);
+    const bool level = std::abs(turn) < 1e-9;
+    const bool upright = std::abs(std::abs(turn) - 90.0) < 1e-9;
+    for (double* size : {&platform.heightM, &platform.widthM})
+    {
+        if (*size >= limits::kMinBodySizeM)
+            continue;
+        const bool vertical = (size == &platform.heightM) ? level : upright;
+        const double before = *size;
+        if (vertical)
+            platform.y = tidy(platform.y - 0.5 * (limits::kMinBodySizeM - before));
+        *size = limits::kMinBodySizeM;
+        warn(node, pointer,
+             "<Platform> is " + shortestNumber(std::round(before * 1000.0) / 10.0) + " cm " + (vertical ? "thick" : "wide") +
+                 ", less than the " + shortestNumber(limits::kMinBodySizeM * 100.0) +
+                 " cm a static body needs to simulate well: made " +
+                 shortestNumber(limits::kMinBodySizeM * 100.0) + " cm" +
+                 (vertical ? ", growing downwards (its top where it was)" : ", about its centre"));
+    }
 }
 
 void Importer::readObjects(const pugi::xml_node& objects)
