@@ -52,12 +52,22 @@ CommandRunner addBenchCommand(CLI::App& app)
         {"generate",
          "time per verified generated level, attempts rejected by reason, kinds, layout distance and toppling",
          runGenerateBench},
+        {"difficulty",
+         "how long check --solve takes per campaign level (rest test, solver, model player, star thresholds)",
+         runDifficultyBench},
     };
     for (const auto& suite : suites)
     {
         CLI::App* sub = cmd->add_subcommand(suite.name, suite.help);
         sub->add_option("--out", args->options.outDir, "output folder (default bench-out)");
         sub->add_flag("--quick", args->options.quick, "fewer repetitions, for smoke tests");
+        if (std::string_view(suite.name) == "difficulty")
+        {
+            sub->add_option("--scene", args->options.scenes, "only this campaign level (1-3); repeat for more");
+            sub->add_flag("--no-copies", args->options.noCopies,
+                          "play every search trial from the level's start, not on a copy of the process (for a "
+                          "ratio)");
+        }
         if (std::string_view(suite.name) == "frames")
             sub->add_option("--scene", args->options.scenes,
                             "only this scene: a level id (1-3), a lesson id (lesson-angle) or a stress scene "
