@@ -350,14 +350,17 @@ TEST(CheckCli, FixLowersAFloatingBodyTogetherWithWhatRestsOnIt)
 
 TEST(CheckCli, FixPushesApartOverlapsOfAnyDepthAndBodiesInTheGround)
 {
-    // A box sunk 5 cm into the one under it and a box 30 cm into the ground: the loader refuses the file for both;
-    // --fix pushes them out (the nearest free place, on the millimetre), and the rest test passes what it wrote.
+    // A box sunk 5 cm into the one under it, a box 30 cm into the ground and a 2 m post sunk 1.3 m into the post
+    // under it (more than a metre, less than its height): the loader refuses the file for each; --fix pushes them
+    // out (the nearest free place, on the millimetre), and the rest test passes what it wrote.
     const ScratchLevel level("fix-overlaps");
     level.write(R"({"format": 1, "id": "deep", "title": "Deep",
   "slingshot": {"x": 0, "y": 1.5}, "birds": ["red"],
   "blocks": [{"material": "wood", "x": 12, "y": 0.5, "w": 1.0, "h": 1.0},
              {"material": "wood", "x": 12, "y": 1.45, "w": 1.0, "h": 1.0},
-             {"material": "stone", "x": 16, "y": 0.2, "w": 1.0, "h": 1.0}],
+             {"material": "stone", "x": 16, "y": 0.2, "w": 1.0, "h": 1.0},
+             {"material": "wood", "x": 24, "y": 1.0, "w": 0.25, "h": 2.0},
+             {"material": "wood", "x": 24, "y": 1.7, "w": 0.25, "h": 2.0}],
   "pigs": [{"type": "small", "x": 20, "y": 0.25}]}
 )");
     const RunResult plain = runAbalike("check " + level.path());
@@ -367,6 +370,8 @@ TEST(CheckCli, FixPushesApartOverlapsOfAnyDepthAndBodiesInTheGround)
     EXPECT_NE(fixed.out.find("/blocks/1/y: 1.45 -> 1.5 (overlapped /blocks/0 by 5.0 cm)"), std::string::npos)
         << fixed.out;
     EXPECT_NE(fixed.out.find("/blocks/2/y: 0.2 -> 0.5 (reached 30.0 cm below the ground)"), std::string::npos)
+        << fixed.out;
+    EXPECT_NE(fixed.out.find("/blocks/4/y: 1.7 -> 3 (overlapped /blocks/3 by 25.0 cm)"), std::string::npos)
         << fixed.out;
     EXPECT_NE(fixed.out.find("PASS "), std::string::npos) << fixed.out;
 }

@@ -24,7 +24,8 @@ struct PushedBody
 /// (Science Birds relies on it: its files hold pigs sunk into pigs and planks sunk into posts). Bodies are taken from
 /// the lowest up; one that overlaps terrain or a body taken before it more than toleranceM is lifted clear of it,
 /// or pushed sideways when that body stands at its own height; positions stay on the millimetre.
-/// Returns the bodies moved, in the order they were; a body that cannot be freed within a metre is left alone.
+/// Returns the bodies moved, in the order they were; a body that cannot be freed within a metre (or its own height,
+/// when it is taller) is left alone.
 std::vector<PushedBody> pushApartOverlaps(LevelDef& level, const Catalog& catalog, double toleranceM);
 
 /// Blocks and pigs that reach below the ground, set onto it (a physics engine pushes them out at its first step):

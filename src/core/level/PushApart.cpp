@@ -13,7 +13,9 @@ namespace abalike
 namespace
 {
 
-constexpr double kFurthestM = 1.0; ///< no body is moved further than this
+/// No body is moved further than this, or than its own height: a post sunk its whole length into the post below it
+/// (a designer's slip of a digit) still comes out.
+constexpr double kFurthestM = 1.0;
 constexpr double kStepM = 0.005;   ///< the search for a free place steps this far
 
 /// A movable body of the level: where it is and how to draw its outline at an offset.
@@ -91,7 +93,8 @@ std::optional<double> nearestFree(const LevelDef& level, const Movable& body, Ve
         return deepest(outlinesAt(level, body, direction.x * t, direction.y * t), obstacles).first <= 1e-4;
     };
     double hi = 0.0;
-    for (double step = kStepM; step <= kFurthestM + 1e-9 && hi == 0.0; step += kStepM)
+    const double furthest = std::max(kFurthestM, body.heightM + kStepM);
+    for (double step = kStepM; step <= furthest + 1e-9 && hi == 0.0; step += kStepM)
         if (freeAt(step))
             hi = step;
     if (hi == 0.0)
@@ -197,7 +200,7 @@ std::vector<PushedBody> pushApartOverlaps(LevelDef& level, const Catalog& catalo
         if (depth > toleranceM && with != nullptr)
         {
             // Lifted off what is below it; pushed aside from a neighbour whose centre is at its own height, or lifted
-            // when that way is blocked within a metre.
+            // when that way is blocked within a metre (or its height).
             const Vec2 centre = centreOf(level, body);
             const bool beside =
                 std::abs(centre.y - with->centreY) < 0.25 * std::min(body.heightM, 2.0 * with->halfHeightM);
