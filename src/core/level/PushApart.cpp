@@ -16,7 +16,7 @@ namespace
 /// No body is moved further than this, or than its own height: a post sunk its whole length into the post below it
 /// (a designer's slip of a digit) still comes out.
 constexpr double kFurthestM = 1.0;
-constexpr double kStepM = 0.005;   ///< the search for a free place steps this far
+constexpr double kStepM = 0.005; ///< the search for a free place steps this far
 
 /// A movable body of the level: where it is and how to draw its outline at an offset.
 struct Movable

@@ -451,11 +451,10 @@ void Importer::thickenThinPlatform(const pugi::xml_node& node, const std::string
             platform.y = tidy(platform.y - 0.5 * (limits::kMinBodySizeM - before));
         *size = limits::kMinBodySizeM;
         warn(node, pointer,
-             "<Platform> is " + shortestNumber(std::round(before * 1000.0) / 10.0) + " cm " + (vertical ? "thick" : "wide") +
-                 ", less than the " + shortestNumber(limits::kMinBodySizeM * 100.0) +
-                 " cm a static body needs to simulate well: made " +
-                 shortestNumber(limits::kMinBodySizeM * 100.0) + " cm" +
-                 (vertical ? ", growing downwards (its top where it was)" : ", about its centre"));
+             "<Platform> is " + shortestNumber(std::round(before * 1000.0) / 10.0) + " cm " +
+                 (vertical ? "thick" : "wide") + ", less than the " + shortestNumber(limits::kMinBodySizeM * 100.0) +
+                 " cm a static body needs to simulate well: made " + shortestNumber(limits::kMinBodySizeM * 100.0) +
+                 " cm" + (vertical ? ", growing downwards (its top where it was)" : ", about its centre"));
     }
 }
 
