@@ -38,6 +38,13 @@ struct PlayerDifficulty
     std::optional<ScriptedShot> firstShot; ///< the first bird's aim, the same for every run (made once)
 };
 
+/// Runs in `check --solve`'s first estimate of difficulty, made before the solver (two rounds of two cores).
+inline constexpr std::size_t kFirstEstimateRuns = 4;
+
+/// The options for the runs after a first part measured with `options`, up to `totalRuns` in all: the next run
+/// numbers and the first part's first aim.
+ModelPlayerOptions runsAfter(ModelPlayerOptions options, const PlayerDifficulty& first, std::size_t totalRuns);
+
 /// The measurement of runs a..b-1 and that of runs b..c-1 (ModelPlayerOptions::firstRun) as one of runs a..c-1.
 PlayerDifficulty joinDifficulty(const PlayerDifficulty& first, const PlayerDifficulty& next);
 

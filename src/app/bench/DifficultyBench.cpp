@@ -28,8 +28,6 @@ namespace
 
 constexpr double kMedianTargetS = 30.0;
 constexpr double kMaxTargetS = 90.0;
-/// Runs in the first estimate, as check --solve makes it (StagedDifficulty::kFirstRuns).
-constexpr std::size_t kFirstEstimateRuns = 4;
 constexpr double kFirstEstimateTargetS = 10.0;
 /// --quick: three levels of growing size, ten runs of the model player.
 const char* const kQuickLevels[] = {"1-1", "2-1", "4-3"};
@@ -68,6 +66,7 @@ Timing measure(const LevelDef& level, std::size_t runs)
     t.restS = secondsSince(partStart);
     if (!rest.passed() || level.pigs.empty())
         return t;
+    // check's order: the model player's first runs (the first estimate), the solver, the other runs.
     partStart = std::chrono::steady_clock::now();
     ModelPlayerOptions options;
     options.runs = std::min(runs, kFirstEstimateRuns);
@@ -81,10 +80,8 @@ Timing measure(const LevelDef& level, std::size_t runs)
     if (!solution.outcome.won)
         return t;
     partStart = std::chrono::steady_clock::now();
-    options.firstRun = options.runs;
-    options.runs = runs - options.runs;
-    options.firstShot = first.firstShot;
-    const PlayerDifficulty player = joinDifficulty(first, measurePlayerDifficulty(level, Catalog::builtin(), options));
+    const PlayerDifficulty player =
+        joinDifficulty(first, measurePlayerDifficulty(level, Catalog::builtin(), runsAfter(options, first, runs)));
     t.playerS += secondsSince(partStart);
     t.games = solution.simulations + player.simulations;
     const auto stars = recommendedStars(player, solution.outcome.score);

@@ -27,29 +27,25 @@ StagedDifficulty::StagedDifficulty(const LevelDef& level, std::size_t runs, int 
 {
 }
 
-PlayerDifficulty StagedDifficulty::play(std::size_t firstRun, std::size_t runs, const std::string& label)
+PlayerDifficulty StagedDifficulty::play(const ModelPlayerOptions& options, const std::string& label)
 {
     ProgressBar bar(label + m_level.id);
-    ModelPlayerOptions options;
-    options.runs = runs;
-    options.firstRun = firstRun;
-    options.threads = m_threads;
-    options.firstShot = m_first ? m_first->firstShot : std::nullopt;
-    options.progress = [&bar](std::size_t done, std::size_t total)
+    ModelPlayerOptions withBar = options;
+    withBar.progress = [&bar](std::size_t done, std::size_t total)
     {
         bar.update(done, total);
     };
-    PlayerDifficulty result = measurePlayerDifficulty(m_level, Catalog::builtin(), options);
+    PlayerDifficulty result = measurePlayerDifficulty(m_level, Catalog::builtin(), withBar);
     bar.finish();
     return result;
 }
 
 void StagedDifficulty::estimate(std::ostream& out)
 {
-    const std::size_t runs = std::min(m_runs, kFirstRuns);
+    const std::size_t runs = std::min(m_runs, kFirstEstimateRuns);
     if (runs == 0)
         return;
-    m_first = play(0, runs, "model player, first estimate ");
+    m_first = play(firstRuns(runs), "model player, first estimate ");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
     const PlayerDifficulty& first = *m_first;
     std::ostringstream line;
@@ -69,10 +65,18 @@ void StagedDifficulty::estimate(std::ostream& out)
 PlayerDifficulty StagedDifficulty::finish()
 {
     if (!m_first)
-        return play(0, m_runs, "model player ");
+        return play(firstRuns(m_runs), "model player ");
     if (m_runs <= m_first->runs)
         return *m_first;
-    return joinDifficulty(*m_first, play(m_first->runs, m_runs - m_first->runs, "model player "));
+    return joinDifficulty(*m_first, play(runsAfter(firstRuns(m_first->runs), *m_first, m_runs), "model player "));
+}
+
+ModelPlayerOptions StagedDifficulty::firstRuns(std::size_t runs) const
+{
+    ModelPlayerOptions options;
+    options.runs = runs;
+    options.threads = m_threads;
+    return options;
 }
 
 } // namespace abalike::app

@@ -16,9 +16,6 @@ namespace abalike::app
 class StagedDifficulty
 {
 public:
-    /// Runs in the first part: two rounds of two cores.
-    static constexpr std::size_t kFirstRuns = 4;
-
     StagedDifficulty(const LevelDef& level, std::size_t runs, int threads);
 
     /// Plays the first part and prints its estimate as one line on out; nothing when no run is asked for.
@@ -28,7 +25,9 @@ public:
     PlayerDifficulty finish();
 
 private:
-    PlayerDifficulty play(std::size_t firstRun, std::size_t runs, const std::string& label);
+    PlayerDifficulty play(const ModelPlayerOptions& options, const std::string& label);
+    /// The options of the first `runs` runs.
+    ModelPlayerOptions firstRuns(std::size_t runs) const;
 
     const LevelDef& m_level;
     std::size_t m_runs;

@@ -185,6 +185,14 @@ PlayerDifficulty measurePlayerDifficulty(const LevelDef& level, const Catalog& c
     return result;
 }
 
+ModelPlayerOptions runsAfter(ModelPlayerOptions options, const PlayerDifficulty& first, std::size_t totalRuns)
+{
+    options.firstRun += first.runs;
+    options.runs = totalRuns > options.firstRun ? totalRuns - options.firstRun : 0;
+    options.firstShot = first.firstShot;
+    return options;
+}
+
 PlayerDifficulty joinDifficulty(const PlayerDifficulty& first, const PlayerDifficulty& next)
 {
     PlayerDifficulty joined = first;

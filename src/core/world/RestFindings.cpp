@@ -106,6 +106,18 @@ std::string RestFinding::message() const
     return fix.empty() ? what : what + "; " + fix;
 }
 
+namespace
+{
+
+/// A block something can rest on anywhere along its top: not round or pointed, turned by whole right angles.
+bool hasFlatTop(const BlockDef& b)
+{
+    return b.shape != BlockShape::Circle && b.shape != BlockShape::Triangle &&
+           std::abs(std::fmod(b.angleDeg, 90.0)) < 1e-9;
+}
+
+} // namespace
+
 SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig, int index)
 {
     const Bounds self = bodyBounds(level, catalog, pig, index);
@@ -165,9 +177,7 @@ SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig,
         const BlockDef& b = level.blocks[i];
         if (!pig && static_cast<int>(i) == index)
             continue;
-        const bool flatTop = b.shape != BlockShape::Circle && b.shape != BlockShape::Triangle &&
-                             std::abs(std::fmod(b.angleDeg, 90.0)) < 1e-9;
-        if (flatTop)
+        if (hasFlatTop(b))
             consider("block " + std::to_string(i) + " (" + b.material + ")", blockBounds(b),
                      catalog.findMaterial(b.material));
     }
@@ -265,8 +275,7 @@ std::optional<SecondSupport> secondSupport(const LevelDef& level, bool pig, int 
     for (std::size_t i = 0; i < level.blocks.size(); ++i)
     {
         const BlockDef& b = level.blocks[i];
-        if (static_cast<int>(i) == index || b.shape == BlockShape::Circle || b.shape == BlockShape::Triangle ||
-            std::abs(std::fmod(b.angleDeg, 90.0)) > 1e-9)
+        if (static_cast<int>(i) == index || !hasFlatTop(b))
             continue;
         const Bounds other = blockBounds(b);
         const bool beside = other.left >= under.supportRightM || other.right <= under.supportLeftM;
