@@ -121,6 +121,13 @@ int runDifficultyBench(const BenchOptions& options)
         if (wanted(level.id))
             levels.push_back(std::move(level));
     }
+    for (const std::string& scene : options.scenes)
+        if (std::none_of(levels.begin(), levels.end(), [&](const LevelDef& l) { return l.id == scene; }))
+        {
+            std::cerr << "bench difficulty: no campaign level \"" << scene
+                      << "\" (expected a campaign level id such as 1-3)\n";
+            return 2;
+        }
     ReportTable table({"level", "bodies", "birds", "first estimate s", "rest s", "solver s", "model player s",
                        "total s", "games", "recommended stars"});
     std::vector<double> totals;
