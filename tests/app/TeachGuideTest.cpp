@@ -2,6 +2,7 @@
 #include "teach/Guide.hpp"
 #include "teach/PathHistory.hpp"
 
+#include <abalike/level/LevelFlight.hpp>
 #include <abalike/level/LevelIO.hpp>
 #include <cmath>
 #include <cstdio>
@@ -37,17 +38,21 @@ TEST(TeachGuides, EveryNumberInALessonsStepsIsRecomputedFromItsLevel)
         SCOPED_TRACE(lesson.id);
         const LevelDef level = sourceLevel("levels/lessons/" + lesson.file);
         std::set<std::string> allowed{"1", "2", "30", "45", "60", "90"};
-        const double energy = 0.5 * level.slingshot.maxForceN * level.slingshot.maxPullM;
+        const BandDef band = levelBand(level, Catalog::builtin());
+        const double energy = 0.5 * band.maxForceN * band.maxPullM;
         allowed.insert(fixed(energy, 0));
+        allowed.insert(fixed(band.bandMassKg, 0));
         for (const char* name : {"red", "black"})
         {
             const double m = Catalog::builtin().findBird(name)->massKg;
-            const double v = std::sqrt(2.0 * energy / m);
+            const double v = std::sqrt(2.0 * energy / (m + band.bandMassKg));
             allowed.insert(fixed(m, 0));
+            allowed.insert(fixed(m + band.bandMassKg, 0));
             allowed.insert(fixed(v, 1));
             allowed.insert(fixed(m * v, 0));
+            allowed.insert(fixed(100.0 * m / (m + band.bandMassKg), 0)); // the bird's share of E in %
         }
-        allowed.insert(fixed(100.0 * std::sqrt(4.0 / 8.0), 0)); // sqrt(m_red / m_black) in %
+        allowed.insert(fixed(100.0 * std::sqrt((4.0 + band.bandMassKg) / (8.0 + band.bandMassKg)), 0));
         for (const char* material : {"ice", "wood", "stone"})
             allowed.insert(fixed(Catalog::builtin().findMaterial(material)->strengthNs, 0));
         allowed.insert(fixed(level.environment.gravity, 2));
@@ -92,20 +97,21 @@ TEST(TeachGuides, EveryLessonHasALevelThatLoadsAndAGuide)
 }
 
 /// The mass lesson's numbers are its own slingshot's: 1 250 J at full pull, red 25.0 m/s, black 17.7 m/s.
-TEST(TeachGuides, TheMassLessonTellsTheSameEnergyWithItsOwnNumbers)
+TEST(TeachGuides, TheMassLessonTellsTheSharedEnergyWithItsOwnNumbers)
 {
     const LevelDef level = sourceLevel("levels/lessons/lesson-mass.json");
     const std::optional<Guide> guide = guideFor(level, Catalog::builtin());
     ASSERT_TRUE(guide);
     ASSERT_EQ(guide->steps.size(), 3u);
-    const double energy = 0.5 * level.slingshot.maxForceN * level.slingshot.maxPullM;
-    const double red = std::sqrt(2.0 * energy / 4.0);
-    const double black = std::sqrt(2.0 * energy / 8.0);
+    const BandDef band = levelBand(level, Catalog::builtin());
+    const double energy = 0.5 * band.maxForceN * band.maxPullM;
+    const double red = std::sqrt(2.0 * energy / (4.0 + band.bandMassKg));
+    const double black = std::sqrt(2.0 * energy / (8.0 + band.bandMassKg));
     EXPECT_NEAR(red, 25.0, 1e-9);
     const std::string& second = guide->steps[1].text;
-    EXPECT_NE(second.find("same 1250 J"), std::string::npos) << second;
-    EXPECT_NE(second.find("leaves at 17.7 m/s instead of 25.0 m/s"), std::string::npos) << second;
-    EXPECT_NE(second.find("= 71 %"), std::string::npos) << second;
+    EXPECT_NE(second.find("same 5625 J now moves 22 kg instead of 18 kg"), std::string::npos) << second;
+    EXPECT_NE(second.find("leaves at 22.6 m/s instead of 25.0 m/s"), std::string::npos) << second;
+    EXPECT_NE(second.find("= 90 %) and takes 36 % of the energy, not 22 %"), std::string::npos) << second;
     const std::string& third = guide->steps[2].text;
     EXPECT_NE(third.find(std::to_string(static_cast<int>(std::lround(8.0 * black))) + " N\u00B7s for the heavy"),
               std::string::npos)

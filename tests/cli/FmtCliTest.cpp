@@ -53,7 +53,7 @@ TEST_F(FmtCli, RewritesAHandWrittenLevelInTheEditorsLayoutAndKeepsItsSchemaRefer
   "format": 1,
   "id": "hand",
   "title": "Hand",
-  "slingshot": {"x": 0, "y": 1.5},
+  "slingshot": {"x": 0, "y": 1.5, "max_force_n": 1800},
   "birds": ["red"],
   "blocks": [
     {"material": "wood", "x": 22, "y": 1, "w": 0.25, "h": 2}

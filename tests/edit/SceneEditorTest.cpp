@@ -89,7 +89,7 @@ TEST(SceneEditor, PlacesPigsOfEveryTypeTerrainAndTheSlingshot)
     }
     expectUndoable(editor, [&] { editor.place(TerrainDef{30.0, 2.0, 6.0, 4.0, 10.0, {}}); });
     EXPECT_EQ(editor.level().terrain.size(), 1u);
-    expectUndoable(editor, [&] { editor.place(SlingshotDef{-3.0, 2.0, 1200.0}); });
+    expectUndoable(editor, [&] { editor.place(SlingshotDef{-3.0, 2.0, 1200.0, std::nullopt, std::nullopt}); });
     EXPECT_EQ(editor.level().slingshot.x, -3.0);
     EXPECT_EQ(editor.selection(), (std::vector<ObjectRef>{{ObjectKind::Slingshot, 0}}));
 }

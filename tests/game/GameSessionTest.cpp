@@ -18,8 +18,10 @@ TEST(GameSession, LaunchSpeedIsTheBandsEnergyGivenToTheBird)
     const GameSession session(firstLevel());
     ASSERT_NE(session.currentBird(), nullptr);
     EXPECT_EQ(session.currentBird()->name, "red");
-    // A third of the pull: 0.667 m, 600 N, 200 J; v0 = sqrt(2 x 200 J / 4 kg) = 10 m/s.
-    EXPECT_DOUBLE_EQ(session.band()->atFraction(1.0 / 3.0).energyJ, 200.0);
+    // A third of Earth's band: 0.667 m, 2 700 N, 900 J, shared with the band's 14 kg: v0 = sqrt(2 x 900 J / 18 kg)
+    // = 10 m/s, and the bird takes 4/18 of it, 200 J.
+    EXPECT_DOUBLE_EQ(session.band()->atFraction(1.0 / 3.0).energyJ, 900.0);
+    EXPECT_NEAR(session.band()->atFraction(1.0 / 3.0).birdEnergyJ, 200.0, 1e-9);
     EXPECT_NEAR(session.band()->atFraction(1.0 / 3.0).speedMps, 10.0, 1e-12);
     EXPECT_DOUBLE_EQ(session.maxLaunchSpeed(), 30.0);
 }

@@ -4,6 +4,7 @@
 
 #include <abalike/design/Generator.hpp>
 #include <abalike/design/LayoutTwins.hpp>
+#include <abalike/level/LevelFlight.hpp>
 #include <abalike/level/LevelWriter.hpp>
 #include <abalike/level/WorldTheme.hpp>
 #include <abalike/world/RestCheck.hpp>
@@ -229,10 +230,11 @@ TEST(Generator, TheWorldSetsGravityAirLookAndBand)
     EXPECT_DOUBLE_EQ(moon.environment.gravity, 1.62);
     EXPECT_DOUBLE_EQ(moon.environment.airDensity, 0.0);
     EXPECT_EQ(moon.theme, WorldTheme::Moon);
-    EXPECT_DOUBLE_EQ(moon.slingshot.maxForceN, 600.0) << "a third of Earth's band at least: a full pull breaks wood";
+    EXPECT_FALSE(moon.slingshot.ownsBand()) << "the Moon's band, from the catalog";
+    EXPECT_DOUBLE_EQ(levelBand(moon, Catalog::builtin()).maxForceN, 2756.25);
     LevelDef jupiter;
     applyGeneratorWorld(jupiter, "jupiter");
-    EXPECT_NEAR(jupiter.slingshot.maxForceN, 1800.0 * 24.79 / 9.81, 1e-9);
+    EXPECT_DOUBLE_EQ(levelBand(jupiter, Catalog::builtin()).maxForceN, 22500.0);
     LevelDef earth;
     applyGeneratorWorld(earth, "earth");
     EXPECT_EQ(earth, LevelDef{});

@@ -74,6 +74,7 @@ TEST(Slingshot, SamePullSendsAHeavyBirdSlowerAndTheErrorNamesTheTopSpeed)
     LevelDef level = scoringLevel();
     level.birds = {"blue", "black"};
     level.slingshot.maxForceN = 1200.0; // 1 200 J at the full 2 m pull
+    level.slingshot.bandMassKg = 0.0;   // a massless band: all of it to the bird
     GameSession session(level);
     const double blue = session.band()->atFraction(0.5).speedMps;
     EXPECT_DOUBLE_EQ(session.band()->forSpeed(blue).fraction, 0.5);

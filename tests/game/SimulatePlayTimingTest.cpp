@@ -119,7 +119,7 @@ TEST(SimulatePlayTiming, ImportedScienceBirdsLevelsEndTheSame)
         {
             const BirdType* bird = Catalog::builtin().findBird(imported.level.birds[i]);
             ASSERT_NE(bird, nullptr);
-            const double top = maxLaunchSpeed(imported.level.slingshot, *bird, Catalog::builtin());
+            const double top = maxLaunchSpeed(imported.level, *bird, Catalog::builtin());
             shots.emplace_back(i % 2 == 0 ? 15.0 : 40.0, (i % 2 == 0 ? 0.95 : 0.8) * top);
         }
         ++files;

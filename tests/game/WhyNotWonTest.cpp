@@ -40,7 +40,8 @@ TEST(WhyNotWon, APigNoLaunchComesNearIsOutOfReach)
 {
     // A weak band (300 N: the red bird leaves at 12.2 m/s) and a pig 25 m away; the reader's reach check would
     // refuse the file, so the level is built in code.
-    LevelDef level = levelWith("", R"({"type": "small", "x": 8, "y": 0.25})", R"(, "max_force_n": 300)");
+    LevelDef level =
+        levelWith("", R"({"type": "small", "x": 8, "y": 0.25})", R"(, "max_force_n": 300, "band_mass_kg": 0)");
     level.pigs.push_back({"small", 25.0, 0.25});
     const std::string why = whyPigSurvives(level, Catalog::builtin(), 1);
     EXPECT_EQ(why.rfind("out of reach (at full pull the red bird's nearest path passes ", 0), 0u) << why;

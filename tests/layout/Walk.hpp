@@ -112,7 +112,7 @@ inline std::vector<ScriptedShot> walkedShots(const LevelDef& level)
     ScriptedShot second = first;
     if (level.birds.size() > 1)
         if (const BirdType* bird = Catalog::builtin().findBird(level.birds[1]))
-            second.speedMps = std::min(second.speedMps, maxLaunchSpeed(level.slingshot, *bird, Catalog::builtin()));
+            second.speedMps = std::min(second.speedMps, maxLaunchSpeed(level, *bird, Catalog::builtin()));
     return {first, second};
 }
 

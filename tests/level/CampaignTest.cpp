@@ -42,11 +42,12 @@ TEST(Campaign, ALevelsNumberIsItsPlaceAndItsProgressKeyIsItsId)
         EXPECT_EQ(level.key, level.level.id);
         EXPECT_EQ(campaign.indexOfNumber(level.number), i);
     }
-    // Episode 2 starts 2-4, 2-2, 2-3: the second tile is 2-2 Heavy Hitter, whose id is 2-2; the sixth, numbered
-    // 2-6, is Wrecking Crew, saved as 2-8.
-    const std::size_t crew = *campaign.indexOfNumber("2-6");
-    EXPECT_EQ(campaign.levels[crew].level.title, "Wrecking Crew");
-    EXPECT_EQ(campaign.levels[crew].key, "2-8");
+    // Episode 2 starts 2-5, 2-4, 2-2: the third tile is 2-2 Heavy Hitter, whose id is 2-2; the sixth, numbered
+    // 2-6, is Dominoes, saved as 2-1.
+    EXPECT_EQ(campaign.levels[*campaign.indexOfNumber("2-3")].key, "2-2");
+    const std::size_t dominoes = *campaign.indexOfNumber("2-6");
+    EXPECT_EQ(campaign.levels[dominoes].level.title, "Dominoes");
+    EXPECT_EQ(campaign.levels[dominoes].key, "2-1");
     EXPECT_FALSE(campaign.indexOfNumber("2-9").has_value());
     EXPECT_EQ(campaign.levelArguments().front(), "1-1");
 }
@@ -133,10 +134,10 @@ TEST(Campaign, ASaveOfTheFirstTwentyFiveLevelsKeepsItsStarsAndOpensTheNewLevelsI
     unlockCampaign(progress, ids);
 
     EXPECT_EQ(progress.levels, saved.levels) << "every star and best score stays";
-    // ... with the level it was won on, whatever number that level now shows: 2-4 Rolling Ball is tile 2-1.
+    // ... with the level it was won on, whatever number that level now shows: 2-4 Rolling Ball is tile 2-2.
     const Campaign campaign =
         loadCampaignLevels(std::string(ABALIKE_SOURCE_DIR) + "/levels/campaign.json", Catalog::builtin());
-    EXPECT_EQ(progress.levels.at(campaign.levels[*campaign.indexOfNumber("2-1")].key).bestScore, 20000);
+    EXPECT_EQ(progress.levels.at(campaign.levels[*campaign.indexOfNumber("2-2")].key).bestScore, 20000);
     for (const std::string& id : saved.unlocked)
         EXPECT_TRUE(progress.isUnlocked(id)) << id << " stays open";
     for (std::size_t i = 1; i < ids.size(); ++i)

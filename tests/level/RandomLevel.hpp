@@ -35,7 +35,8 @@ public:
         level.sandbox = coin();
         if (coin())
             level.groundY = number(-50, 50);
-        level.slingshot = {number(-2000, 2000), number(-2000, 2000), coin() ? 1200.0 : number(1, 1e6)};
+        level.slingshot = {number(-2000, 2000), number(-2000, 2000), coin() ? 1200.0 : number(1, 1e6), std::nullopt,
+                           std::nullopt};
         if (coin())
             level.customBird = CustomBirdDef{number(0.01, 5000), number(0.01, 3), number(0.04, 1.2)};
         for (int i = integer(1, 20); i > 0; --i)

@@ -99,19 +99,22 @@ TEST(TextValues, EveryBundledTextFillsAndTypesNoPhysicsNumber)
 TEST(TextValues, ValuesAreTheLevelsOwnPhysicsRecomputedFromFirstPrinciples)
 {
     const Catalog& catalog = Catalog::builtin();
-    const LevelDef level = levelWithTexts(R"(, "slingshot": {"x": 0, "y": 2.5, "max_force_n": 1250, "max_pull_m": 1.6},
-        "environment": {"gravity": 3.71, "air_density": 0.5, "wind": [-3, 4]},
+    const LevelDef level = levelWithTexts(R"(, "slingshot": {"x": 0, "y": 2.5, "max_force_n": 1250, "max_pull_m": 1.6,
+        "band_mass_kg": 6}, "environment": {"gravity": 3.71, "air_density": 0.5, "wind": [-3, 4]},
         "materials": {"ice": {"strength_ns": 30, "density_kg_per_m3": 600}}, "time_limit_s": 42)");
     const double energy = 0.5 * 1250.0 * 1.6; // E = 1/2 F x, 1000 J
     EXPECT_DOUBLE_EQ(textValue(level, catalog, "energy", ""), energy);
     EXPECT_DOUBLE_EQ(textValue(level, catalog, "force", ""), 1250.0);
     EXPECT_DOUBLE_EQ(textValue(level, catalog, "pull", ""), 1.6);
+    EXPECT_DOUBLE_EQ(textValue(level, catalog, "band_mass", ""), 6.0);
     for (const auto& [bird, mass] :
          std::vector<std::pair<std::string, double>>{{"red", 4.0}, {"blue", 1.5}, {"black", 8.0}})
     {
-        const double v = std::sqrt(2.0 * energy / mass); // 1/2 m v^2 = E
+        const double v = std::sqrt(2.0 * energy / (mass + 6.0)); // 1/2 (m + m_b) v^2 = E
         EXPECT_NEAR(textValue(level, catalog, "v_max", bird), v, 1e-12) << bird;
-        EXPECT_NEAR(textValue(level, catalog, "p_max", bird), std::sqrt(2.0 * mass * energy), 1e-9) << bird;
+        EXPECT_NEAR(textValue(level, catalog, "p_max", bird), mass * v, 1e-9) << bird;
+        EXPECT_NEAR(textValue(level, catalog, "e_bird", bird), energy * mass / (mass + 6.0), 1e-9) << bird;
+        EXPECT_NEAR(textValue(level, catalog, "share", bird), 100.0 * mass / (mass + 6.0), 1e-9) << bird;
         EXPECT_NEAR(textValue(level, catalog, "range_flat", bird), v * v / 3.71, 1e-9) << bird;
         EXPECT_DOUBLE_EQ(textValue(level, catalog, "mass", bird), mass);
     }
@@ -158,8 +161,8 @@ TEST(TextValues, FillFormatsDecimalsAndExpressions)
     const LevelDef level = levelWithTexts(
         R"(, "environment": {"gravity": 1.62, "air_density": 0.01, "gusts": [{"t": 1, "wx": -10, "wy": 0}, {"t": 2.5, "wx": 3, "wy": 0}]})");
     EXPECT_EQ(fillText("red {v_max:red} m/s, {p_max:red} N s, {energy} J", level, catalog),
-              "red 30.0 m/s, 120 N s, 1800 J");
-    EXPECT_EQ(fillText("{earth_g / g|1} times, {v_max:blue / v_max:red|2}", level, catalog), "6.1 times, 1.63");
+              "red 17.5 m/s, 70 N s, 2756 J"); // the Moon's band
+    EXPECT_EQ(fillText("{earth_g / g|1} times, {v_max:blue / v_max:red|2}", level, catalog), "6.1 times, 1.08");
     EXPECT_EQ(fillText("{-gust_wx:1} then {gust_wx:2} for {gust_t:2 - gust_t:1} s", level, catalog),
               "10 then 3 for 1.50 s");
     EXPECT_EQ(fillText("{sqrt(4) * (1 + 2)|0} {{braces}}", level, catalog), "6 {braces}");

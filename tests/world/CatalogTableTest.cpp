@@ -61,6 +61,24 @@ TEST(CatalogTable, IceIsLightSlipperyAndBrittleStoneHeavyAndTough)
     EXPECT_GT(stone.strengthNs, wood.strengthNs);
 }
 
+TEST(CatalogTable, TheSlingshotGivesABandForEachKnownWorldAndEarthsAtLeast)
+{
+    nlohmann::json catalog = nlohmann::json::parse(Catalog::builtinJson());
+    catalog["slingshot"]["max_force_n"]["marz"] = 1400;
+    std::string error = test::catalogLoadError(catalog.dump(2));
+    EXPECT_NE(error.find("unknown world \"marz\" (expected earth, moon, mars, titan or jupiter)"), std::string::npos)
+        << error;
+    catalog["slingshot"]["max_force_n"].erase("marz");
+    catalog["slingshot"]["max_force_n"].erase("earth");
+    error = test::catalogLoadError(catalog.dump(2));
+    EXPECT_NE(error.find("Earth's band force"), std::string::npos) << error;
+    const SlingshotRules& rules = Catalog::builtin().slingshot();
+    EXPECT_DOUBLE_EQ(rules.forceFor("earth"), 8100.0);
+    EXPECT_DOUBLE_EQ(rules.forceFor("mars"), 1406.25);
+    EXPECT_DOUBLE_EQ(rules.forceFor("pluto"), 8100.0) << "a world the catalog does not list takes Earth's";
+    EXPECT_DOUBLE_EQ(rules.bandMassKg, 14.0);
+}
+
 TEST(CatalogTable, ABirdWithAnotherBirdsMassOrSizeIsALocatedError)
 {
     // The rule is checked where the catalog loads: a bird copied from the first one and given only a new name must be

@@ -112,7 +112,7 @@ TEST(ImpactBalance, APigPinnedAgainstTheGroundLeavesUpwardAndTheGroundsShareSays
 TEST(ImpactBalance, AFloatingBodyHasNoSupportAndKeepsMomentum)
 {
     const LevelDef level = parseLevel(R"({"format": 1, "id": "t", "title": "zero g", "environment": {"gravity": 0.0},
-        "ground": {"y": 0.0}, "slingshot": {"x": 0.0, "y": 5.0, "max_force_n": 1200}, "birds": ["red"],
+        "ground": {"y": 0.0}, "slingshot": {"x": 0.0, "y": 5.0, "max_force_n": 1200, "band_mass_kg": 0}, "birds": ["red"],
         "blocks": [{"material": "stone", "x": 10.0, "y": 5.0, "w": 1.0, "h": 1.0}],
         "pigs": [{"type": "small", "x": 30.0, "y": 0.35}], "stars": [1, 2, 3]})",
                                       "zero-g.json", Catalog::builtin());

@@ -27,16 +27,18 @@ TEST(LaunchCap, IsOneNumberFromTheCatalogThatTheWorldCanFly)
     EXPECT_DOUBLE_EQ(catalog.maxLaunchSpeedMps(), 864.0);
     LevelDef level = towerScene(3);
     level.birds = {"blue"};
-    level.slingshot.maxForceN = 1e6; // 1 155 m/s by the band alone
+    level.slingshot.maxForceN = 1e6; // 1 155 m/s by a massless band alone
+    level.slingshot.bandMassKg = 0.0;
     const GameSession session(level, catalog);
     // The world sub-steps so that no body moves more than 90 % of b2_maxTranslation per sub-step: the cap must not
     // ask more of it.
     EXPECT_LE(catalog.maxLaunchSpeedMps(), session.world().maxSpeedMps());
     EXPECT_DOUBLE_EQ(session.maxLaunchSpeed(), catalog.maxLaunchSpeedMps());
-    EXPECT_DOUBLE_EQ(maxLaunchSpeed(level.slingshot, *catalog.findBird("blue"), catalog), catalog.maxLaunchSpeedMps());
-    // Below the cap the band decides: v0 = sqrt(F x / m).
+    EXPECT_DOUBLE_EQ(maxLaunchSpeed(level, *catalog.findBird("blue"), catalog), catalog.maxLaunchSpeedMps());
+    // Below the cap the band decides: v0 = sqrt(F x / (m + m_b)).
     level.slingshot.maxForceN = 1200.0;
-    EXPECT_DOUBLE_EQ(GameSession(level, catalog).maxLaunchSpeed(), std::sqrt(1200.0 * 2.0 / 1.5));
+    level.slingshot.bandMassKg.reset();
+    EXPECT_DOUBLE_EQ(GameSession(level, catalog).maxLaunchSpeed(), std::sqrt(1200.0 * 2.0 / (1.5 + 14.0)));
 }
 
 TEST(LaunchCap, EveryBirdAtTheCapLandsWhereThePreviewSaysAndStopsAtTheWall)
@@ -49,6 +51,7 @@ TEST(LaunchCap, EveryBirdAtTheCapLandsWhereThePreviewSaysAndStopsAtTheWall)
             level.birds = {bird.name};
             level.pigs = {{"small", 170.0, 0.25}};
             level.slingshot.maxForceN = 1e6;
+            level.slingshot.bandMassKg = 0.0;
             if (dynamicWall)
                 level.blocks.push_back({BlockShape::Box, "stone", 150.0, 1.5, 0.2, 3.0, 0.0});
             else

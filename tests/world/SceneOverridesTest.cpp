@@ -86,7 +86,8 @@ TEST(SceneOverrides, ACustomBirdFliesWithItsOwnMassSizeAndDrag)
     EXPECT_EQ(bird->name, "custom");
     EXPECT_EQ(bird->massKg, 10.0);
     EXPECT_EQ(bird->radiusM, 0.3);
-    EXPECT_DOUBLE_EQ(session.maxLaunchSpeed(), std::sqrt(1800.0 * 2.0 / 10.0)); // v0 = sqrt(F x / m) = 19.0 m/s
+    // Earth's band: v0 = sqrt(F x / (m + m_b)) = 26.0 m/s.
+    EXPECT_DOUBLE_EQ(session.maxLaunchSpeed(), std::sqrt(8100.0 * 2.0 / (10.0 + 14.0)));
     const FlightModel model = session.flightModelFor(*bird);
     EXPECT_DOUBLE_EQ(model.quadraticDrag, 0.5 * 1.2 * 0.3 * M_PI * 0.09);
     EXPECT_EQ(model.massKg, 10.0);
@@ -99,6 +100,7 @@ TEST(SceneOverrides, PreviewAndWorldAgreeForACustomBirdOnOverriddenMaterials)
     level.birds = {kCustomBirdName};
     level.materials = {{"wood", 900.0, 0.3, 0.1, 40.0}};
     level.slingshot.maxForceN = 2000;
+    level.slingshot.bandMassKg = 0.0; // a massless band: 40 m/s for the 2.5 kg bird
     for (const ScriptedShot shot : {ScriptedShot{20, 30}, {35, 25}, {45, 22}, {10, 40}})
     {
         const auto session = simulateShots(level, {shot});
@@ -144,6 +146,7 @@ TEST(SceneOverrides, ExtremeCustomBirdsFlyAndCollideWithoutBreakingTheWorld)
                 level.birds = {kCustomBirdName};
                 level.slingshot.y = 2.0;
                 level.slingshot.maxForceN = 1.0e6;
+                level.slingshot.bandMassKg = 0.0;
                 level.blocks.push_back({BlockShape::Box, "ice", 20.0, 1.5, 1.0, 1.0, 0.0, 0.1});
                 GameSession session(level);
                 const double speed = std::min(30.0, session.maxLaunchSpeed());

@@ -62,15 +62,18 @@ struct TerrainDef
     bool operator==(const TerrainDef&) const = default;
 };
 
-/// Where birds are launched from and how hard. The band is a linear spring (SlingshotBand): drawn back maxPullM it
-/// pulls with maxForceN and stores 1/2 maxForceN maxPullM of energy for the bird.
+/// Where birds are launched from, and the level's own band if it has one. Without one a level uses the catalog's
+/// slingshot with its world's band force (Catalog::slingshot, levelBand in LevelFlight.hpp): one band per world, so
+/// the same pull throws a bird as far on every level of that world. `check` warns when a level sets its own.
 struct SlingshotDef
 {
     double x = 0.0;
-    double y = 1.5;          ///< height of the pouch, where the bird leaves the slingshot
-    double maxForceN = 1800; ///< the band's force at full pull (N)
-    double maxPullM = 2.0;   ///< full pull (m)
+    double y = 1.5;                   ///< height of the pouch, where the bird leaves the slingshot
+    std::optional<double> maxForceN;  ///< the band's force at full pull (N)
+    std::optional<double> maxPullM;   ///< full pull (m)
+    std::optional<double> bandMassKg; ///< the band's moving mass (kg); 0: a massless band (a lesson comparing bands)
 
+    bool ownsBand() const { return maxForceN || maxPullM || bandMassKg; }
     bool operator==(const SlingshotDef&) const = default;
 };
 

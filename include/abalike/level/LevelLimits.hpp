@@ -22,6 +22,8 @@ inline constexpr double kMaxForceN = 1.0e6;
 /// The slingshot's full pull: a hand catapult's 0.1 m to a siege engine's 10 m.
 inline constexpr double kMinPullM = 0.1;
 inline constexpr double kMaxPullM = 10.0;
+/// The band's moving mass: 0 (massless) to a siege engine's arm.
+inline constexpr double kMaxBandMassKg = 1000.0;
 inline constexpr double kMaxGravity = 100.0;    // m/s^2; Jupiter is 24.79
 inline constexpr double kMaxAirDensity = 100.0; // kg/m^3; Venus's surface is about 65
 inline constexpr double kMaxWindMps = 100.0;

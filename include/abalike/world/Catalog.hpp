@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace abalike
@@ -73,6 +74,20 @@ struct PlayerAim
     double pullSigma = 0.01;    ///< standard deviation of the pull, as a share of the full pull
 };
 
+/// The game's one slingshot (assets/catalog.json "slingshot"): a linear band of full pull maxPullM whose pouch and
+/// rubber move with the bird as a lumped mass bandMassKg, and one band force per world, so that the same pull throws
+/// the same bird as far on every level of a world (docs/slingshot.md).
+struct SlingshotRules
+{
+    double maxPullM = 2.0;
+    double bandMassKg = 14.0;
+    /// A world's band force at full pull (N), by world name (WorldTheme: "earth", "moon", ...); Earth's is required.
+    std::vector<std::pair<std::string, double>> worldForceN;
+
+    /// The band force of the named world; Earth's for a name the catalog does not list.
+    double forceFor(std::string_view world) const;
+};
+
 /// A number of an ability that level texts may name as a placeholder ("{egg_mass}"): declared in the ability's block
 /// of the catalog ("text_values"), so that no code names an ability.
 struct AbilityTextValue
@@ -128,6 +143,8 @@ public:
     /// Fastest launch the game allows (m/s), whatever the slingshot: the measured speed up to which the world
     /// neither tunnels nor leaves the preview (docs/world-physics.md, "Tunneling").
     double maxLaunchSpeedMps() const { return m_maxLaunchSpeedMps; }
+    /// The slingshot every level uses unless it sets its own band.
+    const SlingshotRules& slingshot() const { return m_slingshot; }
     /// Depth of the slab a 2D block stands for (m): areal density = bulk density x depth.
     double slabDepthM() const { return m_slabDepthM; }
 
@@ -143,6 +160,7 @@ private:
     double m_groundFriction = 0.8;
     double m_rollingResistance = 0.0;
     double m_maxLaunchSpeedMps = 100.0;
+    SlingshotRules m_slingshot;
     double m_slabDepthM = 0.1;
 };
 

@@ -9,6 +9,7 @@
 #include <abalike/design/StarThresholds.hpp>
 #include <abalike/design/WhyNotWon.hpp>
 #include <abalike/level/Campaign.hpp>
+#include <abalike/level/LevelFlight.hpp>
 #include <abalike/level/LevelIO.hpp>
 #include <abalike/level/LevelLimits.hpp>
 #include <abalike/level/LevelText.hpp>
@@ -340,6 +341,8 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
         report.issues.insert(report.issues.end(), falseClaims.begin(), falseClaims.end());
     }
 
+    if (std::string own = ownBandWarning(level, Catalog::builtin()); !own.empty())
+        report.warnings.push_back(std::move(own));
     if (a.fix)
         for (std::string& change : fixRestFindings(item.file, *report.level))
             report.fixes.push_back(std::move(change));

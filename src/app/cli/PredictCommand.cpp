@@ -27,7 +27,7 @@ constexpr double kMaxSteps = 2.0e6;
 struct PredictArgs
 {
     std::string angle, speed, x0 = "0", y0 = "0", dt, untilT, maxT = "60";
-    std::string pull, maxForce = "1800", maxPull = "2"; ///< a launch by the slingshot's band instead of a speed
+    std::string pull, maxForce = "8100", maxPull = "2", bandMass = "14"; ///< a launch by a band instead of a speed
     std::string stepper = "rk4", tol = "1e-9";
     FlightModelArgs model;
     bool json = false;
@@ -40,14 +40,17 @@ std::optional<BandPull> bandLaunch(const PredictArgs& a, double massKg)
 {
     if (a.pull.empty())
         return std::nullopt;
-    SlingshotDef sling;
+    BandDef sling;
     sling.maxForceN = parseFinite(a.maxForce, "--max-force");
     sling.maxPullM = parseFinite(a.maxPull, "--max-pull");
+    sling.bandMassKg = parseFinite(a.bandMass, "--band-mass");
     const double pull = parseFinite(a.pull, "--pull");
     if (sling.maxForceN <= 0.0)
         throw UsageError("--max-force: must be > 0 N, got " + a.maxForce);
     if (sling.maxPullM <= 0.0)
         throw UsageError("--max-pull: must be > 0 m, got " + a.maxPull);
+    if (sling.bandMassKg < 0.0)
+        throw UsageError("--band-mass: must be >= 0 kg, got " + a.bandMass);
     if (pull < 0.0 || pull > sling.maxPullM)
         throw UsageError("--pull: must be between 0 and the full pull " + a.maxPull + " m, got " + a.pull);
     const SlingshotBand band(sling, massKg, std::numeric_limits<double>::infinity());
@@ -131,6 +134,8 @@ int runPredict(const PredictArgs& a)
         out["launch"] = {{"pull_m", band->pullM},
                          {"force_n", band->forceN},
                          {"energy_j", band->energyJ},
+                         {"bird_energy_j", band->birdEnergyJ},
+                         {"band_energy_j", band->bandEnergyJ},
                          {"speed_mps", band->speedMps}};
     out["stepper"] = stepperName(settings.stepper);
     out["dt"] = settings.dtS;
@@ -167,10 +172,13 @@ CommandRunner addPredictCommand(CLI::App& app)
     cmd->add_option("--angle", args->angle, "launch angle in degrees above horizontal")->required();
     auto* speed = cmd->add_option("--speed", args->speed, "launch speed in m/s (or --pull)");
     auto* pull = cmd->add_option("--pull", args->pull,
-                                 "launch by the slingshot's band drawn back this far (m): v0 = sqrt(2E/m) with "
-                                 "E = 1/2 F x (instead of --speed; --mass is the bird's)");
+                                 "launch by the slingshot's band drawn back this far (m): v0 = sqrt(2E/(m + m_b)) "
+                                 "with E = 1/2 F x (instead of --speed; --mass is the bird's)");
     speed->excludes(pull);
-    cmd->add_option("--max-force", args->maxForce, "with --pull: the band's force at full pull in N (default 1800)")
+    cmd->add_option("--max-force", args->maxForce, "with --pull: the band's force at full pull in N (default 8100)")
+        ->needs(pull);
+    cmd->add_option("--band-mass", args->bandMass,
+                    "with --pull: the band's mass moving with the bird in kg (default 14; 0: a massless band)")
         ->needs(pull);
     cmd->add_option("--max-pull", args->maxPull, "with --pull: the band's full pull in m (default 2)")->needs(pull);
     cmd->add_option("--x0", args->x0, "launch x in m (default 0)");

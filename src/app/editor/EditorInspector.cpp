@@ -14,6 +14,7 @@
 #include <abalike/flight/GravityPresets.hpp>
 #include <abalike/flight/StandardAtmosphere.hpp>
 #include <abalike/level/LevelCatalog.hpp>
+#include <abalike/level/LevelFlight.hpp>
 #include <abalike/level/LevelLimits.hpp>
 #include <abalike/level/WorldTheme.hpp>
 #include <abalike/world/BirdBody.hpp>
@@ -252,8 +253,6 @@ void EditorInspector::selectionTab()
         {
             changed |= inputDouble("x (m)", sling->x, m_ctx.fieldReleased);
             changed |= inputDouble("Pouch y (m)", sling->y, m_ctx.fieldReleased);
-            changed |= inputDouble("Force at full pull (N)", sling->maxForceN, m_ctx.fieldReleased, "%.0f");
-            changed |= inputDouble("Full pull (m)", sling->maxPullM, m_ctx.fieldReleased);
         }
         ImGui::PopItemWidth();
         (void)key;
@@ -486,7 +485,7 @@ void EditorInspector::birdTab()
         const auto band = m_play.play().session().band();
         if (m_play.aimByPull && band)
         {
-            // The band stores E = 1/2 F x; the same pull gives every bird the same energy.
+            // The band stores E = 1/2 F x, shared by the bird and the band's moving mass.
             double pullM = band->forSpeed(m_play.speedMps).pullM;
             if (sliderDouble("Pull (m)", pullM, 0.0, band->maxPullM(), "%.2f"))
             {
@@ -606,20 +605,46 @@ void EditorInspector::birdListAndSlingshot(LevelDef& next)
     }
 
     heading("Slingshot");
-    double force = next.slingshot.maxForceN;
+    // One band per world: a level without its own uses its world's, and follows it when the gravity changes.
+    const BandDef band = levelBand(next, Catalog::builtin());
+    bool own = next.slingshot.ownsBand();
+    if (ImGui::Checkbox("Own band (check warns: each world has one)", &own))
+    {
+        SlingshotDef& sling = next.slingshot;
+        sling.maxForceN = own ? std::optional(band.maxForceN) : std::nullopt;
+        sling.maxPullM = own ? std::optional(band.maxPullM) : std::nullopt;
+        sling.bandMassKg = own ? std::optional(band.bandMassKg) : std::nullopt;
+        setProperties(next, own ? "Own band" : "World's band", "band");
+    }
+    if (!own)
+        ImGui::TextWrapped("%s band: %.0f N at a %.1f m pull, %.0f kg moving with the bird",
+                           worldThemeTitle(levelTheme(next)), band.maxForceN, band.maxPullM, band.bandMassKg);
+    else
+        ownBandSliders(next, band);
+    endGestureIfReleased();
+}
+
+void EditorInspector::ownBandSliders(LevelDef& next, const BandDef& band)
+{
+    double force = band.maxForceN;
     if (sliderDouble("Force at full pull (N)", force, limits::kMinForceN, limits::kMaxForceN, "%.0f",
                      ImGuiSliderFlags_Logarithmic))
     {
         next.slingshot.maxForceN = force;
         setProperties(next, "Slingshot force", "force");
     }
-    double pull = next.slingshot.maxPullM;
+    double pull = band.maxPullM;
     if (sliderDouble("Full pull (m)", pull, limits::kMinPullM, limits::kMaxPullM, "%.2f"))
     {
         next.slingshot.maxPullM = pull;
         setProperties(next, "Slingshot pull", "pull");
     }
-    endGestureIfReleased();
+    double mass = band.bandMassKg;
+    if (sliderDouble("Band's moving mass (kg)", mass, 0.0, 100.0, "%.1f"))
+    {
+        next.slingshot.bandMassKg = mass;
+        setProperties(next, "Band mass", "band mass");
+    }
 }
 
 void EditorInspector::materialsTab()

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <abalike/edit/SceneEditor.hpp>
+#include <abalike/level/SlingshotBand.hpp>
 #include <map>
 #include <string>
 #include <vector>
@@ -35,6 +36,8 @@ private:
     void environmentTab();
     void birdTab();
     void birdListAndSlingshot(LevelDef& next);
+    /// The sliders of a level's own band, starting from the band it has now.
+    void ownBandSliders(LevelDef& next, const BandDef& band);
     void materialsTab();
     void levelTab();
     void checksTab();

@@ -17,6 +17,7 @@ AimReadout aimReadout(const SlingshotBand& band, double angleDeg, const BandPull
     readout.massKg = band.birdMassKg();
     readout.maxPullM = band.maxPullM();
     readout.maxForceN = band.maxForceN();
+    readout.bandMassKg = band.bandMassKg();
     return readout;
 }
 
@@ -41,12 +42,26 @@ std::string aimSummary(const AimReadout& aim)
 
 std::string aimLesson(const AimReadout& aim)
 {
-    // The band is a spring: F = k x, its stored energy the area under F, all of it given to the bird.
-    std::string text =
-        "F = k x,  E = \u00BD F x,  v\u2080 = \u221A(2E / m) with m = " + formatFixed(aim.massKg, 1) + " kg";
+    // The band is a spring: F = k x, its stored energy the area under F, shared by the bird and the band's moving
+    // mass, which reach the same speed when the band goes slack.
+    std::string text = "F = k x,  E = \u00BD F x,  ";
+    if (aim.bandMassKg > 0.0)
+        text += "v\u2080 = \u221A(2E / (m + m_b))";
+    else
+        text += "v\u2080 = \u221A(2E / m) with m = " + formatFixed(aim.massKg, 1) + " kg";
     if (aim.pull.capped)
         text += ", capped at " + formatFixed(aim.speedMps, 0) + " m/s";
     return text;
+}
+
+std::string aimShare(const AimReadout& aim)
+{
+    if (aim.bandMassKg <= 0.0)
+        return {};
+    const double share = aim.massKg / (aim.massKg + aim.bandMassKg);
+    return "bird (" + formatFixed(aim.massKg, 1) + " kg) " + readable(aim.pull.birdEnergyJ, 0) +
+           " J = " + formatFixed(100.0 * share, 0) + " % of E,  band (" + readable(aim.bandMassKg, 0) + " kg) " +
+           readable(aim.pull.bandEnergyJ, 0) + " J";
 }
 
 } // namespace abalike::app

@@ -1,5 +1,6 @@
 #include "render/Hud.hpp"
 
+#include <abalike/level/WorldTheme.hpp>
 #include <abalike/teach/TextValues.hpp>
 
 #include "render/Label.hpp"
@@ -46,7 +47,7 @@ void Hud::draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& s
     sf::FloatRect status;
     {
         const TextKindScope kind(TextKind::Hud);
-        status = drawStatus(target, size, scale, session, levelLabel);
+        status = drawStatus(target, size, scale, session, levelLabel, mode);
     }
     const float environmentBottom =
         drawEnvironment(target, status.top + status.height + 6.0f * scale, scale, session.level(), mode);
@@ -78,7 +79,7 @@ std::optional<float> topSlot(float width, sf::Vector2u size, float left, float r
 } // namespace
 
 sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float scale, const GameSession& session,
-                              std::string_view levelLabel) const
+                              std::string_view levelLabel, PlayMode mode) const
 {
     const LevelDef& level = session.level();
     const unsigned titleSize = scaled(scale, 24.0f);
@@ -94,6 +95,26 @@ sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float
     const sf::String counts = utf8("Birds left  " + std::to_string(session.birdsRemaining()) + "     Pigs left  " +
                                    std::to_string(session.pigsRemaining()));
 
+    // Until the first launch the status names the world's slingshot (Learn mode: and what a full pull gives this
+    // bird), so that a player who moves between worlds knows the hand's pull means something else here. At large
+    // text it shortens, then gives way, rather than widen the panel into the toolbar.
+    sf::String band;
+    if (const std::optional<SlingshotBand> b = session.band();
+        b && session.phase() == Phase::Aiming && session.birdsRemaining() == static_cast<int>(level.birds.size()))
+    {
+        const std::string world =
+            std::string(level.slingshot.ownsBand() ? "This level's" : worldThemeTitle(levelTheme(level))) +
+            " slingshot";
+        const std::string speed =
+            mode == PlayMode::Learn ? "full pull " + formatFixed(b->maxSpeedMps(), 1) + " m/s" : world;
+        for (const std::string& text : {mode == PlayMode::Learn ? world + "  " + speed : world, speed})
+            if (measureText(*m_font, utf8(text), lineSize).x <= titleRoom)
+            {
+                band = utf8(text);
+                break;
+            }
+    }
+
     sf::String time;
     if (level.timeLimitS)
         time = utf8("Time  " + formatFixed(std::min(session.simTime(), *level.timeLimitS), 1) + " / " +
@@ -104,8 +125,9 @@ sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float
     const float titleHeight = m_font->getLineSpacing(titleSize);
     const float lineHeight = m_font->getLineSpacing(lineSize);
     const float width = std::max({measureText(*m_font, title, titleSize).x, measureText(*m_font, score, lineSize).x,
-                                  measureText(*m_font, counts, lineSize).x, measureText(*m_font, time, lineSize).x});
-    const float lines = time.isEmpty() ? 2.0f : 3.0f;
+                                  measureText(*m_font, counts, lineSize).x, measureText(*m_font, time, lineSize).x,
+                                  measureText(*m_font, band, lineSize).x});
+    const float lines = 2.0f + (time.isEmpty() ? 0.0f : 1.0f) + (band.isEmpty() ? 0.0f : 1.0f);
     const float height = titleHeight + lines * lineHeight + 2.0f * pad;
     const sf::FloatRect rect(margin, margin, width + 2.0f * pad, height);
     panel(target, rect, "status");
@@ -116,11 +138,12 @@ sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float
     drawLabel(target, *m_font, score, at, lineSize, palette::kStar);
     at.y += lineHeight;
     drawLabel(target, *m_font, counts, at, lineSize, palette::kTextDim);
-    if (!time.isEmpty())
-    {
-        at.y += lineHeight;
-        drawLabel(target, *m_font, time, at, lineSize, palette::kTextDim);
-    }
+    for (const sf::String* line : {&time, &band})
+        if (!line->isEmpty())
+        {
+            at.y += lineHeight;
+            drawLabel(target, *m_font, *line, at, lineSize, palette::kTextDim);
+        }
     return rect;
 }
 
@@ -174,21 +197,31 @@ void Hud::drawAim(sf::RenderTarget& target, sf::Vector2u size, float scale, cons
     const unsigned lessonSize = scaled(scale, 16.0f);
     const sf::String main = utf8(aimSummary(aim));
     const sf::String lesson = utf8(aimLesson(aim));
+    const sf::String share = utf8(aimShare(aim));
     const float pad = 10.0f * scale;
     const float mainHeight = m_font->getLineSpacing(mainSize);
-    const float width =
-        std::max(measureText(*m_font, main, mainSize).x, measureText(*m_font, lesson, lessonSize).x) + 2.0f * pad;
+    const float lessonHeight = m_font->getLineSpacing(lessonSize);
+    const float width = std::max({measureText(*m_font, main, mainSize).x, measureText(*m_font, lesson, lessonSize).x,
+                                  measureText(*m_font, share, lessonSize).x}) +
+                        2.0f * pad;
     const std::optional<float> slot = topSlot(width, size, left, right);
     const float x = slot ? *slot : 12.0f * scale;
     const float top = slot ? 12.0f * scale : below;
     const float centre = x + 0.5f * width;
-    panel(target, {x, top, width, mainHeight + m_font->getLineSpacing(lessonSize) + 2.0f * pad}, "aim readout");
+    const float lines = share.isEmpty() ? 1.0f : 2.0f;
+    panel(target, {x, top, width, mainHeight + lines * lessonHeight + 2.0f * pad}, "aim readout");
     {
         const TextKindScope kind(TextKind::Physics);
         drawLabel(target, *m_font, main, {centre, top + pad}, mainSize, palette::kText, Align::Centre);
     }
     const TextKindScope kind(TextKind::Formula);
     drawLabel(target, *m_font, lesson, {centre, top + pad + mainHeight}, lessonSize, palette::kTextDim, Align::Centre);
+    if (!share.isEmpty())
+    {
+        const TextKindScope numbers(TextKind::Physics);
+        drawLabel(target, *m_font, share, {centre, top + pad + mainHeight + lessonHeight}, lessonSize,
+                  palette::kTextDim, Align::Centre);
+    }
 }
 
 void Hud::drawPowerBar(sf::RenderTarget& target, sf::Vector2u size, float scale, const AimReadout& aim, float left,

@@ -48,7 +48,7 @@ private:
     std::vector<BottomText> bottomText(sf::Vector2u size, float scale, const LevelDef& level) const;
     /// Returns the panel it drew.
     sf::FloatRect drawStatus(sf::RenderTarget& target, sf::Vector2u size, float scale, const GameSession& session,
-                             std::string_view levelLabel) const;
+                             std::string_view levelLabel, PlayMode mode) const;
     /// Returns the bottom edge of the panel it drew (top when it drew none).
     float drawEnvironment(sf::RenderTarget& target, float top, float scale, const LevelDef& level, PlayMode mode) const;
     /// Centred at the top between `left` and `right` if it fits there, else at the left from `below`.

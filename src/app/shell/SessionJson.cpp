@@ -141,7 +141,11 @@ nlohmann::ordered_json sessionToJson(const GameSession& session)
         s["bird"] = shot.bird;
         s["angle_deg"] = shot.angleDeg;
         s["speed"] = shot.speedMps;
-        s["slingshot"] = {{"pull_m", shot.pull.pullM}, {"force_n", shot.pull.forceN}, {"energy_j", shot.pull.energyJ}};
+        s["slingshot"] = {{"pull_m", shot.pull.pullM},
+                          {"force_n", shot.pull.forceN},
+                          {"energy_j", shot.pull.energyJ},
+                          {"bird_energy_j", shot.pull.birdEnergyJ},
+                          {"band_energy_j", shot.pull.bandEnergyJ}};
         s["predicted_contact"] = contactJson(shot.predictedContact);
         s["actual_contact"] = contactJson(shot.actualContact);
         s["deviation_m"] = shot.deviationM ? Json(*shot.deviationM) : Json(nullptr);

@@ -69,11 +69,12 @@ Guide massLesson(const LevelDef& level, const Catalog& catalog)
     const BirdType* heavy = catalog.findBird("black");
     if (light == nullptr || heavy == nullptr)
         return {};
-    const SlingshotBand lightBand = slingshotBand(level.slingshot, *light, catalog);
-    const SlingshotBand heavyBand = slingshotBand(level.slingshot, *heavy, catalog);
+    const SlingshotBand lightBand = slingshotBand(level, *light, catalog);
+    const SlingshotBand heavyBand = slingshotBand(level, *heavy, catalog);
     const double energy = lightBand.fullEnergyJ();
     const double vLight = lightBand.maxSpeedMps();
     const double vHeavy = heavyBand.maxSpeedMps();
+    const double band = lightBand.bandMassKg();
     const auto kg = [](double m)
     {
         return formatFixed(m, 0) + " kg";
@@ -82,23 +83,30 @@ Guide massLesson(const LevelDef& level, const Catalog& catalog)
     {
         return formatFixed(v, 1) + " m/s";
     };
-    return {
-        "Lesson: heavy and light birds",
-        {{"Pull all the way and launch the red bird (" + kg(light->massKg) +
-              "). The aim panel shows the band's pull, its force, the energy E = \u00BD F x it stores, and "
-              "v\u2080 = \u221A(2E / m).",
-          launched},
-         {"The black bird weighs " + kg(heavy->massKg) + ". Launch it at full pull too: the band gives it the same " +
-              formatFixed(energy, 0) + " J, so it leaves at " + mps(vHeavy) + " instead of " + mps(vLight) +
-              " (\u221A(" + kg(light->massKg) + " / " + kg(heavy->massKg) +
-              ") = " + formatFixed(100.0 * std::sqrt(light->massKg / heavy->massKg), 0) + " %).",
-          launched},
-         {"Same energy, different momentum: p = m v\u2080 = \u221A(2 m E) is " +
-              formatFixed(heavy->massKg * vHeavy, 0) + " N\u00B7s for the heavy bird and " +
-              formatFixed(light->massKg * vLight, 0) + " N\u00B7s for the light one. Knock out the pig.",
-          won}},
-        "Same pull, same energy: v\u2080 \u221D 1/\u221Am. Light birds fly fast and far; heavy birds carry "
-        "more momentum into what they hit."};
+    const auto percent = [](double share)
+    {
+        return formatFixed(100.0 * share, 0) + " %";
+    };
+    return {"Lesson: heavy and light birds",
+            {{"Pull all the way and launch the red bird (" + kg(light->massKg) +
+                  "). The aim panel shows the band's pull, its force, the energy E = \u00BD F x it stores, the bird's "
+                  "share "
+                  "of it and v\u2080 = \u221A(2E / (m + m_b)): the band's pouch and rubber (m_b = " +
+                  kg(band) + ") fly forward with the bird.",
+              launched},
+             {"The black bird weighs " + kg(heavy->massKg) + ". Launch it at full pull too: the same " +
+                  formatFixed(energy, 0) + " J now moves " + kg(heavy->massKg + band) + " instead of " +
+                  kg(light->massKg + band) + ", so it leaves at " + mps(vHeavy) + " instead of " + mps(vLight) +
+                  " (\u221A(" + kg(light->massKg + band) + " / " + kg(heavy->massKg + band) +
+                  ") = " + percent(vHeavy / vLight) + ") and takes " + percent(heavyBand.birdShare()) +
+                  " of the energy, not " + percent(lightBand.birdShare()) + ".",
+              launched},
+             {"Nearly the same speed, twice the mass: the momentum p = m v\u2080 is " +
+                  formatFixed(heavy->massKg * vHeavy, 0) + " N\u00B7s for the heavy bird and " +
+                  formatFixed(light->massKg * vLight, 0) + " N\u00B7s for the light one. Knock out the pig.",
+              won}},
+            "Same pull, nearly the same speed: the band's own moving mass evens the birds out, so a heavy bird carries "
+            "more momentum and more of the band's energy into what it hits."};
 }
 
 /// Materials: the strengths are the lesson level's own (its overrides applied), never typed.

@@ -30,7 +30,7 @@ Difficulty measureDifficulty(const LevelDef& level, std::size_t samples, std::ui
     std::vector<double> topSpeed;
     const Catalog levelTable = levelCatalog(level, catalog); // with the level's custom bird
     for (const std::string& name : level.birds)
-        topSpeed.push_back(maxLaunchSpeed(level.slingshot, *levelTable.findBird(name), levelTable));
+        topSpeed.push_back(maxLaunchSpeed(level, *levelTable.findBird(name), levelTable));
     std::vector<ShotOutcome> outcomes(samples);
     std::size_t done = 0;
     parallelFor(

@@ -392,7 +392,6 @@ void applyGeneratorWorld(LevelDef& level, const std::string& world)
             continue;
         level.environment.gravity = preset.gravity;
         level.environment.airDensity = preset.airDensity;
-        level.slingshot.maxForceN = SlingshotDef{}.maxForceN * std::clamp(preset.gravity / 9.81, 1.0 / 3.0, 3.0);
     }
     level.theme = theme;
 }

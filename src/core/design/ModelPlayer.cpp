@@ -58,7 +58,7 @@ ScriptedShot bestShotFrom(const SessionBranch& branch, const LevelDef& level, co
                           std::size_t* simulations, unsigned threads = 1)
 {
     const BirdType* bird = catalog.findBird(level.birds.at(branch.shots().size()));
-    const SlingshotBand band = slingshotBand(level.slingshot, *bird, catalog);
+    const SlingshotBand band = slingshotBand(level, *bird, catalog);
     std::vector<ScriptedShot> candidates;
     for (double angle = kAimMinAngleDeg; angle <= kAimMaxAngleDeg + 1e-9; angle += kAngleStepDeg)
         for (const double share : kPullShares)
@@ -149,7 +149,7 @@ PlayerDifficulty measurePlayerDifficulty(const LevelDef& level, const Catalog& c
             {
                 ScriptedShot shot = b == 0 ? first : bestShotFrom(game, level, catalog, &outcome.simulations);
                 const BirdType* bird = catalog.findBird(level.birds[b]);
-                const SlingshotBand band = slingshotBand(level.slingshot, *bird, catalog);
+                const SlingshotBand band = slingshotBand(level, *bird, catalog);
                 const double share =
                     std::clamp(band.forSpeed(shot.speedMps).fraction + aim.pullSigma * normal(random), 0.0, 1.0);
                 shot.angleDeg = std::clamp(shot.angleDeg + aim.angleSigmaDeg * normal(random), -90.0, 90.0);

@@ -61,7 +61,7 @@ std::string whyPigSurvives(const LevelDef& level, const Catalog& base, int pigIn
     const PigType* pigType = catalog.findPig(pig.type);
     if (bird == nullptr || pigType == nullptr)
         return {};
-    const double speed = maxLaunchSpeed(level.slingshot, *bird, catalog);
+    const double speed = maxLaunchSpeed(level, *bird, catalog);
     const FlightModel model = levelFlightModel(level.environment, *bird);
     PredictionLimits limits;
     limits.maxTimeS = kWhyFlightS;

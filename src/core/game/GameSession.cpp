@@ -50,13 +50,13 @@ std::optional<SlingshotBand> GameSession::band() const
     const BirdType* bird = currentBird();
     if (bird == nullptr)
         return std::nullopt;
-    return slingshotBand(m_level.slingshot, *bird, m_catalog);
+    return slingshotBand(m_level, *bird, m_catalog);
 }
 
 double GameSession::maxLaunchSpeed() const
 {
     const BirdType* bird = currentBird();
-    return bird == nullptr ? 0.0 : abalike::maxLaunchSpeed(m_level.slingshot, *bird, m_catalog);
+    return bird == nullptr ? 0.0 : abalike::maxLaunchSpeed(m_level, *bird, m_catalog);
 }
 
 Vec2 GameSession::launchPoint() const
@@ -108,8 +108,9 @@ void GameSession::launch(double angleDeg, double speedMps)
         why << "speed must be >= 0 m/s, got " << speedMps;
     else if (speedMps > maxLaunchSpeed() * (1.0 + 1e-12))
         why << "bird " << m_nextBird + 1 << " (" << bird->name << ", " << bird->massKg
-            << " kg) can be launched at most " << maxLaunchSpeed() << " m/s (slingshot " << m_level.slingshot.maxForceN
-            << " N at a " << m_level.slingshot.maxPullM << " m pull), asked " << speedMps << " m/s";
+            << " kg) can be launched at most " << maxLaunchSpeed() << " m/s (slingshot " << band()->maxForceN()
+            << " N at a " << band()->maxPullM() << " m pull, band mass " << band()->bandMassKg() << " kg), asked "
+            << speedMps << " m/s";
     if (!why.str().empty())
         throw LaunchError(why.str());
 

@@ -113,7 +113,8 @@ LevelDef referenceShotLevel(const ReferenceShot& shot)
     level.groundY = 0.0;
     level.slingshot.x = 0.0;
     level.slingshot.y = 1.5;
-    level.slingshot.maxForceN = 1.0e6; // the world's own speed limit is the only one
+    level.slingshot.maxForceN = 1.0e6; // with a massless band, the world's own speed limit is the only one
+    level.slingshot.bandMassKg = 0.0;
     level.birds = {shot.bird};
     level.environment.gravity = shot.gravity;
     level.environment.airDensity = shot.airDensity;

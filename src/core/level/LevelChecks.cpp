@@ -172,7 +172,7 @@ void checkReach(const LevelDef& level, const Catalog& catalog, LevelReader& r)
         const BirdType* bird = catalog.findBird(name);
         if (bird == nullptr)
             continue;
-        const double speed = maxLaunchSpeed(level.slingshot, *bird, catalog);
+        const double speed = maxLaunchSpeed(level, *bird, catalog);
         fastest = std::max(fastest, speed);
         birdRadius = std::max(birdRadius, collisionRadius(*bird));
         const ReachEnvelope envelope = reachEnvelope(levelFlightModel(level.environment, *bird), level.slingshot.x,
@@ -208,7 +208,7 @@ void checkReferenceShot(const LevelDef& level, const Catalog& catalog, LevelRead
     const BirdType* bird = catalog.findBird(level.birds.front());
     if (bird == nullptr)
         return;
-    const double top = maxLaunchSpeed(level.slingshot, *bird, catalog);
+    const double top = maxLaunchSpeed(level, *bird, catalog);
     if (level.referenceShot->speedMps > top * (1.0 + 1e-12))
     {
         std::ostringstream message;

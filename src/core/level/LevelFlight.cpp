@@ -1,4 +1,7 @@
 #include <abalike/level/LevelFlight.hpp>
+#include <abalike/level/WorldTheme.hpp>
+#include <sstream>
+#include <utility>
 
 namespace abalike
 {
@@ -15,14 +18,49 @@ FlightModel levelFlightModel(const EnvironmentDef& environment, const BirdType& 
     return model;
 }
 
-SlingshotBand slingshotBand(const SlingshotDef& slingshot, const BirdType& bird, const Catalog& catalog)
+BandDef levelBand(const LevelDef& level, const Catalog& catalog)
 {
-    return SlingshotBand(slingshot, bird.massKg, catalog.maxLaunchSpeedMps());
+    const SlingshotRules& rules = catalog.slingshot();
+    const SlingshotDef& own = level.slingshot;
+    BandDef band;
+    band.maxForceN = own.maxForceN.value_or(rules.forceFor(worldThemeName(levelTheme(level))));
+    band.maxPullM = own.maxPullM.value_or(rules.maxPullM);
+    band.bandMassKg = own.bandMassKg.value_or(rules.bandMassKg);
+    return band;
 }
 
-double maxLaunchSpeed(const SlingshotDef& slingshot, const BirdType& bird, const Catalog& catalog)
+std::string ownBandWarning(const LevelDef& level, const Catalog& catalog)
 {
-    return slingshotBand(slingshot, bird, catalog).maxSpeedMps();
+    const SlingshotDef& own = level.slingshot;
+    if (!own.ownsBand())
+        return {};
+    LevelDef world = level;
+    world.slingshot.maxForceN = world.slingshot.maxPullM = world.slingshot.bandMassKg = std::nullopt;
+    const BandDef theirs = levelBand(world, catalog);
+    std::ostringstream text;
+    text << "sets its own band (";
+    const char* sep = "";
+    if (own.maxForceN)
+        text << std::exchange(sep, ", ") << "/slingshot/max_force_n " << *own.maxForceN << " N";
+    if (own.maxPullM)
+        text << std::exchange(sep, ", ") << "/slingshot/max_pull_m " << *own.maxPullM << " m";
+    if (own.bandMassKg)
+        text << std::exchange(sep, ", ") << "/slingshot/band_mass_kg " << *own.bandMassKg << " kg";
+    text << "; the band of its world, " << worldThemeTitle(levelTheme(level)) << ", is " << theirs.maxForceN << " N at "
+         << theirs.maxPullM << " m with " << theirs.bandMassKg
+         << " kg moving): the same pull throws a bird differently here than on the world's other levels; remove "
+            "the key(s) to use the world's band";
+    return text.str();
+}
+
+SlingshotBand slingshotBand(const LevelDef& level, const BirdType& bird, const Catalog& catalog)
+{
+    return SlingshotBand(levelBand(level, catalog), bird.massKg, catalog.maxLaunchSpeedMps());
+}
+
+double maxLaunchSpeed(const LevelDef& level, const BirdType& bird, const Catalog& catalog)
+{
+    return slingshotBand(level, bird, catalog).maxSpeedMps();
 }
 
 } // namespace abalike

@@ -298,20 +298,27 @@ void readBirds(LevelReader& r, const json& root, LevelDef& level, const Catalog&
     }
 }
 
+/// An optional number of the slingshot: absent leaves the catalog's.
+std::optional<double> ownBandNumber(LevelReader& r, const json& sling, const char* key, const NumberRange& range)
+{
+    const auto it = sling.find(key);
+    if (it == sling.end())
+        return std::nullopt;
+    return r.numberAt(*it, std::string("/slingshot/") + key, range);
+}
+
 void readSlingshot(LevelReader& r, const json& root, LevelDef& level)
 {
     const auto sling = root.find("slingshot");
     if (sling == root.end())
-        r.error("", "missing required key \"slingshot\" (expected {\"x\", \"y\", \"max_force_n\", \"max_pull_m\"})");
-    else if (r.object(*sling, "/slingshot", {"x", "y", "max_force_n", "max_pull_m"}))
+        r.error("", "missing required key \"slingshot\" (expected {\"x\", \"y\"})");
+    else if (r.object(*sling, "/slingshot", {"x", "y", "max_force_n", "max_pull_m", "band_mass_kg"}))
     {
         level.slingshot.x = r.number(*sling, "/slingshot", "x", 0.0, true, kCoordinate);
         level.slingshot.y = r.number(*sling, "/slingshot", "y", 1.5, true, kCoordinate);
-        const SlingshotDef defaults;
-        level.slingshot.maxForceN = r.number(*sling, "/slingshot", "max_force_n", defaults.maxForceN, false,
-                                             NumberRange{kMinForceN, kMaxForceN, "N"});
-        level.slingshot.maxPullM = r.number(*sling, "/slingshot", "max_pull_m", defaults.maxPullM, false,
-                                            NumberRange{kMinPullM, kMaxPullM, "m"});
+        level.slingshot.maxForceN = ownBandNumber(r, *sling, "max_force_n", NumberRange{kMinForceN, kMaxForceN, "N"});
+        level.slingshot.maxPullM = ownBandNumber(r, *sling, "max_pull_m", NumberRange{kMinPullM, kMaxPullM, "m"});
+        level.slingshot.bandMassKg = ownBandNumber(r, *sling, "band_mass_kg", NumberRange{0.0, kMaxBandMassKg, "kg"});
     }
 }
 

@@ -258,10 +258,12 @@ std::string writeLevelJson(const LevelDef& level, const std::string& schemaRefer
     if (level.groundY != 0.0)
         root["ground"] = {{"y", num(level.groundY)}};
     OrderedJson sling = {{"x", num(level.slingshot.x)}, {"y", num(level.slingshot.y)}};
-    if (level.slingshot.maxForceN != defaults.slingshot.maxForceN)
-        sling["max_force_n"] = num(level.slingshot.maxForceN);
-    if (level.slingshot.maxPullM != defaults.slingshot.maxPullM)
-        sling["max_pull_m"] = num(level.slingshot.maxPullM);
+    if (level.slingshot.maxForceN)
+        sling["max_force_n"] = num(*level.slingshot.maxForceN);
+    if (level.slingshot.maxPullM)
+        sling["max_pull_m"] = num(*level.slingshot.maxPullM);
+    if (level.slingshot.bandMassKg)
+        sling["band_mass_kg"] = num(*level.slingshot.bandMassKg);
     root["slingshot"] = std::move(sling);
     root["birds"] = level.birds;
     if (level.customBird)

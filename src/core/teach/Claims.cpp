@@ -73,7 +73,7 @@ ClaimResult evaluateOutcome(const OutcomeClaimDef& outcome, const LevelDef& leve
         result.message = "cannot be computed: the level has no bird to shoot";
         return result;
     }
-    const double fastest = maxLaunchSpeed(level.slingshot, *bird, own);
+    const double fastest = maxLaunchSpeed(level, *bird, own);
     try
     {
         for (const double da : {-kOutcomeFanAngleStepDeg, 0.0, kOutcomeFanAngleStepDeg})

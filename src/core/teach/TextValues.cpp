@@ -23,13 +23,18 @@ const std::vector<TextValueName>& textValueNames()
         // The level's and the birds' values, then the abilities' numbers their catalog blocks declare, then the air's
         // and the rest.
         std::vector<TextValueName> list{
-            {"v_max", "BIRD", "launch speed at full pull, v0 = sqrt(2E/m) (at most the catalog's speed cap)", "m/s", 1},
+            {"v_max", "BIRD", "launch speed at full pull, v0 = sqrt(2E/(m + m_b)) (at most the catalog's speed cap)",
+             "m/s", 1},
             {"p_max", "BIRD", "momentum at full pull, m v0", "N s", 0},
+            {"e_bird", "BIRD", "the bird's kinetic energy at full pull, 1/2 m v0^2: its share m/(m + m_b) of E", "J",
+             0},
+            {"share", "BIRD", "the share of the band's energy the bird takes, m/(m + m_b)", "%", 0},
             {"mass", "BIRD", "the bird's mass", "kg", -1},
             {"radius", "BIRD", "the bird's radius", "m", -1},
             {"energy", "", "energy the band stores at full pull, E = 1/2 F x", "J", 0},
             {"force", "", "the band's force at full pull (max_force_n)", "N", 0},
             {"pull", "", "the full pull (max_pull_m)", "m", -1},
+            {"band_mass", "", "the band's moving mass m_b (band_mass_kg)", "kg", -1},
             {"range_flat", "BIRD", "v_max^2 / g: the range at 45 degrees in vacuum from ground level", "m", 1},
             {"best_angle", "BIRD",
              "the angle that throws farthest at full pull, in this level's air, from its slingshot", "degrees", 1},
@@ -184,7 +189,7 @@ RangeChart fullPullChart(const LevelDef& level, const Catalog& catalog, const Bi
     }
     if (air == Air::None)
         launch.model.linearDrag = launch.model.quadraticDrag = 0.0;
-    launch.speedMps = maxLaunchSpeed(level.slingshot, bird, catalog);
+    launch.speedMps = maxLaunchSpeed(level, bird, catalog);
     launch.heightM = std::max(0.0, level.slingshot.y - level.groundY);
     return rangeChart(launch, 0.0, 89.0, 1.0);
 }
@@ -218,11 +223,15 @@ double evaluate(const LevelDef& level, const Catalog& seen, std::string_view nam
         const BirdType& bird = birdArgument(seen, name, arg);
         if (!compute)
             return 0.0;
-        const double speed = maxLaunchSpeed(level.slingshot, bird, seen);
+        const double speed = maxLaunchSpeed(level, bird, seen);
         if (name == "v_max")
             return speed;
         if (name == "p_max")
             return bird.massKg * speed;
+        if (name == "e_bird")
+            return 0.5 * bird.massKg * speed * speed;
+        if (name == "share")
+            return 100.0 * slingshotBand(level, bird, seen).birdShare();
         if (name == "mass")
             return bird.massKg;
         if (name == "radius")
@@ -280,12 +289,15 @@ double evaluate(const LevelDef& level, const Catalog& seen, std::string_view nam
             fail("{time_limit}: the level has no time_limit_s");
         return *level.timeLimitS;
     }
+    const BandDef band = levelBand(level, seen);
     if (name == "energy")
-        return 0.5 * level.slingshot.maxForceN * level.slingshot.maxPullM;
+        return 0.5 * band.maxForceN * band.maxPullM;
     if (name == "force")
-        return level.slingshot.maxForceN;
+        return band.maxForceN;
     if (name == "pull")
-        return level.slingshot.maxPullM;
+        return band.maxPullM;
+    if (name == "band_mass")
+        return band.bandMassKg;
     for (const AbilityTextValue& value : Catalog::builtin().abilityTextValues())
         if (name == value.name)
         {

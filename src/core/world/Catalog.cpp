@@ -2,6 +2,8 @@
 #include "level/LevelReader.hpp"
 #include "world/CatalogLooks.hpp"
 
+#include <abalike/level/WorldTheme.hpp>
+
 #include <abalike/world/Catalog.hpp>
 #include <algorithm>
 #include <cmath>
@@ -28,6 +30,29 @@ double positive(const json& object, const char* key, const std::string& where)
     if (!(value > 0.0))
         throw std::runtime_error(where + "." + key + " must be > 0");
     return value;
+}
+
+SlingshotRules readSlingshot(const json& sling)
+{
+    SlingshotRules rules;
+    rules.maxPullM = positive(sling, "max_pull_m", "slingshot");
+    rules.bandMassKg = sling.at("band_mass_kg").get<double>();
+    if (!(rules.bandMassKg >= 0.0))
+        throw std::runtime_error("slingshot.band_mass_kg must be >= 0");
+    const json& forces = sling.at("max_force_n");
+    if (!forces.is_object() || forces.empty())
+        throw std::runtime_error(
+            "slingshot.max_force_n must be an object of band forces by world, {\"earth\": N, ...}");
+    for (const auto& [world, force] : forces.items())
+    {
+        if (!parseWorldTheme(world))
+            throw std::runtime_error("slingshot.max_force_n: unknown world \"" + world +
+                                     "\" (expected earth, moon, mars, titan or jupiter)");
+        rules.worldForceN.emplace_back(world, positive(forces, world.c_str(), "slingshot.max_force_n"));
+    }
+    if (!forces.contains("earth"))
+        throw std::runtime_error("slingshot.max_force_n must give Earth's band force (\"earth\")");
+    return rules;
 }
 
 template <class T>
@@ -164,6 +189,7 @@ Catalog Catalog::fromJson(std::string_view text, const std::string& fileName)
         const json root = json::parse(text);
         catalog.m_slabDepthM = root.contains("slab_depth_m") ? positive(root, "slab_depth_m", "catalog") : 0.1;
         catalog.m_maxLaunchSpeedMps = positive(root.at("slingshot"), "max_launch_speed_mps", "slingshot");
+        catalog.m_slingshot = readSlingshot(root.at("slingshot"));
         const json& scoring = root.at("scoring");
         catalog.m_scoring.pointsPerUnusedBird = scoring.at("points_per_unused_bird").get<int>();
         catalog.m_scoring.efficiencyPointsPerExtraPig = scoring.value("efficiency_points_per_extra_pig", 5000);
@@ -305,6 +331,19 @@ void Catalog::putBird(const BirdType& bird)
 const PigType* Catalog::findPig(std::string_view name) const
 {
     return findByName(m_pigs, name);
+}
+
+double SlingshotRules::forceFor(std::string_view world) const
+{
+    double earth = 0.0;
+    for (const auto& [name, force] : worldForceN)
+    {
+        if (name == world)
+            return force;
+        if (name == "earth")
+            earth = force;
+    }
+    return earth;
 }
 
 } // namespace abalike

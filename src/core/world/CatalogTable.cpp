@@ -33,9 +33,16 @@ std::string materialsTable(const Catalog& catalog)
     return md.str();
 }
 
+/// The catalog's slingshot on Earth, the band the tables show.
+BandDef earthBand(const Catalog& catalog)
+{
+    const SlingshotRules& rules = catalog.slingshot();
+    return BandDef{rules.forceFor("earth"), rules.maxPullM, rules.bandMassKg};
+}
+
 double fullPullSpeed(const Catalog& catalog, const BirdType& bird)
 {
-    return SlingshotBand(SlingshotDef{}, bird.massKg, catalog.maxLaunchSpeedMps()).maxSpeedMps();
+    return SlingshotBand(earthBand(catalog), bird.massKg, catalog.maxLaunchSpeedMps()).maxSpeedMps();
 }
 
 std::string birdsTable(const Catalog& catalog)
@@ -54,18 +61,20 @@ std::string birdsTable(const Catalog& catalog)
     return md.str();
 }
 
-/// The same band, every bird: one energy, speeds and momenta that differ by mass.
+/// The same band, every bird: one stored energy, shared between the bird and the band's moving mass.
 std::string launchTable(const Catalog& catalog)
 {
-    const SlingshotDef sling;
-    const double energy = 0.5 * sling.maxForceN * sling.maxPullM;
+    const BandDef band = earthBand(catalog);
+    const double energy = 0.5 * band.maxForceN * band.maxPullM;
     std::ostringstream md;
-    md << "| Bird | Mass (kg) | v0 = √(2E/m) | Momentum m·v0 | Energy ½·m·v0² |\n|---|---:|---:|---:|---:|\n";
+    md << "| Bird | Mass (kg) | v0 = √(2E/(m + m_b)) | Momentum m·v0 | Bird's energy ½·m·v0² | Share m/(m + m_b) |\n"
+       << "|---|---:|---:|---:|---:|---:|\n";
     for (const BirdType& b : catalog.birds())
     {
         const double v0 = fullPullSpeed(catalog, b);
         md << "| " << b.name << " | " << fixed(b.massKg, 1) << " | " << fixed(v0, 1) << " m/s | "
-           << fixed(b.massKg * v0, 0) << " N·s | " << fixed(std::min(energy, 0.5 * b.massKg * v0 * v0), 0) << " J |\n";
+           << fixed(b.massKg * v0, 0) << " N·s | " << fixed(std::min(energy, 0.5 * b.massKg * v0 * v0), 0) << " J | "
+           << fixed(100.0 * b.massKg / (b.massKg + band.bandMassKg), 0) << " % |\n";
     }
     return md.str();
 }
@@ -202,13 +211,14 @@ std::string catalogMarkdown(const Catalog& catalog)
           "level and\n"
        << "stress scene at or below 10.\n\n";
 
-    const SlingshotDef sling;
+    const BandDef band = earthBand(catalog);
     md << "## Birds\n\n"
-       << "The slingshot's band is a linear spring: the default slingshot pulls with " << fixed(sling.maxForceN, 0)
-       << " N at its full " << fixed(sling.maxPullM, 1)
-       << " m pull and stores E = 1/2 F x = " << fixed(0.5 * sling.maxForceN * sling.maxPullM, 0)
-       << " J, which the bird leaves with as kinetic energy: v0 = sqrt(2 E / m), so the same pull sends a bird\n"
-       << "twice as heavy 1/sqrt(2) as fast (docs/slingshot.md).\n\n"
+       << "The slingshot's band is a linear spring whose pouch and rubber move with the bird: on Earth it pulls with "
+       << fixed(band.maxForceN, 0) << " N at its full " << fixed(band.maxPullM, 1)
+       << " m pull and stores E = 1/2 F x = " << fixed(0.5 * band.maxForceN * band.maxPullM, 0)
+       << " J, which the bird and the band's\nmoving " << fixed(band.bandMassKg, 0)
+       << " kg share: v0 = sqrt(2 E / (m + m_b)), so every bird leaves within 10 % of the red bird's speed and the "
+          "heavy\nbirds carry more momentum (docs/slingshot.md).\n\n"
        << birdsTable(catalog);
 
     md << "\n## Abilities (click or Space in flight)\n\n" << abilitiesTable(catalog);
