@@ -39,8 +39,14 @@ void HelpScreen::turnPage(int delta)
 
 void HelpScreen::handleEvent(const sf::Event& event)
 {
-    // F1 and '?' are the app's (they toggle this screen); page keys turn pages; any other deliberate input closes.
-    if (event.type == sf::Event::KeyPressed)
+    // F1 and '?' are the app's (they toggle this screen); page keys turn pages; any other deliberate key closes it
+    // when it is let go (the key press of a '?' comes before its text, which the app toggles the screen with).
+    if (event.type == sf::Event::KeyReleased)
+    {
+        if (m_pressed.count(event.key.code) != 0)
+            m_app.navigator().screens().pop();
+    }
+    else if (event.type == sf::Event::KeyPressed)
     {
         switch (event.key.code)
         {
@@ -68,7 +74,7 @@ void HelpScreen::handleEvent(const sf::Event& event)
         default:
             break;
         }
-        m_app.navigator().screens().pop();
+        m_pressed.insert(event.key.code);
     }
     else if (event.type == sf::Event::MouseButtonReleased)
     {

@@ -3,6 +3,8 @@
 #include "shell/Screen.hpp"
 
 #include <SFML/Graphics/Font.hpp>
+#include <SFML/Window/Keyboard.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -43,6 +45,10 @@ private:
     AppContext& m_app;
     int m_page = 0;
     int m_pages = 1; ///< as last drawn
+    /// Keys pressed while this screen was on top: it closes when one of them is released, so that the key press of a
+    /// '?' (whose text the app turns into a toggle) does not close it a second time, and a key that opened it does
+    /// not close it on its release.
+    std::set<sf::Keyboard::Key> m_pressed;
 };
 
 } // namespace abalike::app
