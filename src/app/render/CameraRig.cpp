@@ -97,7 +97,10 @@ void CameraRig::update(const CameraFocus& focus, double frameS)
     if (focus.shotUnderWay && !m_shotUnderWay)
         m_mode = Mode::Follow; // launch: follow, whatever the player had panned to (or the opening pan showed)
     else if (!focus.shotUnderWay && m_shotUnderWay)
-        m_mode = Mode::Home; // the world settled: back to the level
+    {
+        m_mode = Mode::Home; // the world settled: back to the level, in kReturnS
+        startReturn();
+    }
     m_shotUnderWay = focus.shotUnderWay;
 
     if (m_mode == Mode::Opening)
@@ -114,12 +117,36 @@ void CameraRig::update(const CameraFocus& focus, double frameS)
         rebuild();
         return;
     }
-    const CameraView goal = target(focus);
+    CameraView goal = target(focus);
+    // In flight the camera never comes closer than the aiming view (a short shot filled the window with the
+    // slingshot), unless the aiming view draws the bird smaller than kMinBirdPx.
+    if (m_mode == Mode::Follow)
+        goal.pixelsPerMetre = std::min(goal.pixelsPerMetre,
+                                       std::max(homeView(focus).pixelsPerMetre,
+                                                focus.birdDiameterM > 0.0f ? kMinBirdPx / focus.birdDiameterM : 0.0f));
+    const auto moved = [](const CameraView& a, const CameraView& b)
+    {
+        return a.centreM != b.centreM || a.pixelsPerMetre != b.pixelsPerMetre;
+    };
+    if (m_mode == Mode::Home && !m_snap && moved(goal, m_returnGoal))
+        startReturn();
+    m_returnGoal = goal;
     if (m_snap)
         m_view = goal;
+    else if (m_mode == Mode::Home && m_returnS < kReturnS)
+    {
+        m_returnS = std::min(kReturnS, m_returnS + std::max(frameS, 0.0));
+        const auto t = static_cast<float>(m_returnS / kReturnS);
+        const float s = t * t * (3.0f - 2.0f * t);
+        m_view.centreM = m_returnFrom.centreM + (goal.centreM - m_returnFrom.centreM) * s;
+        m_view.pixelsPerMetre = std::exp(std::log(m_returnFrom.pixelsPerMetre) +
+                                         (std::log(goal.pixelsPerMetre) - std::log(m_returnFrom.pixelsPerMetre)) * s);
+    }
+    else if (m_mode == Mode::Home)
+        m_view = goal; // home, and at rest
     else if (m_mode != Mode::Manual)
     {
-        const float k = easing(frameS, m_mode == Mode::Follow ? kFollowTimeS : kReturnTimeS);
+        const float k = easing(frameS, kFollowTimeS);
         m_view.centreM += (goal.centreM - m_view.centreM) * k;
         // Zoom eases in log space, so zooming in and out feel alike.
         const float logPpm = std::log(m_view.pixelsPerMetre);
@@ -211,6 +238,13 @@ void CameraRig::clampManual()
 void CameraRig::recentre()
 {
     m_mode = m_shotUnderWay ? Mode::Follow : Mode::Home;
+    startReturn();
+}
+
+void CameraRig::startReturn()
+{
+    m_returnFrom = m_view;
+    m_returnS = 0.0;
 }
 
 CameraView CameraRig::homeView(const CameraFocus& focus) const

@@ -52,9 +52,11 @@ public:
     const CameraView& view() const { return m_view; }
     Mode mode() const { return m_mode; }
 
-    /// Seconds for the view to cover about 63 % of the way to its target.
+    /// Seconds for the view to cover about 63 % of the way to its target while it follows a shot.
     static constexpr double kFollowTimeS = 0.3;
-    static constexpr double kReturnTimeS = 0.45;
+    /// The way back home once the world settles takes exactly this long and then stops, so that the camera is at
+    /// rest soon after the next bird is ready (an exponential ease crept on for about 3 s).
+    static constexpr double kReturnS = 0.5;
     /// The opening pan's length.
     static constexpr double kOpeningS = 2.5;
 
@@ -66,6 +68,8 @@ private:
     /// Manual views stay near the level and within the scale limits.
     void clampManual();
     void rebuild();
+    /// Starts the way back home from where the view is now.
+    void startReturn();
 
     CameraView m_view;
     Camera m_camera = Camera::centredOn({0.0f, 0.0f}, 1.0f, {1, 1});
@@ -77,6 +81,9 @@ private:
     bool m_snap = true;      ///< jump to the next target instead of easing (new level, resize in home view)
     double m_openingS = 0.0; ///< time into the opening pan
     CameraView m_openingFrom;
+    double m_returnS = kReturnS; ///< time into the way back home
+    CameraView m_returnFrom;
+    CameraView m_returnGoal; ///< the home view it heads for: a new one (the banner moved the ground) starts again
 };
 
 } // namespace abalike::app
