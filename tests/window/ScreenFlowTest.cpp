@@ -7,6 +7,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <regex>
 
 namespace abalike::test
 {
@@ -46,6 +47,24 @@ TEST_F(ScreenFlow, NoLevelOpensTheTitleAlsoWithFramesAndScripts)
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"title"}));
     EXPECT_TRUE(run.values("level", "id").empty()) << "no level starts by itself";
+}
+
+TEST_F(ScreenFlow, AQuestionMarkOnTheHelpClosesOnlyTheHelp)
+{
+    // A real '?' is a key press (Slash with Shift), its text, and the release, in one frame. Pressed twice, and
+    // after F1, it toggles the help over the level and never closes the level too (issue 57: it popped play).
+    const std::string question = R"({"frame": F, "key": "Slash", "shift": true, "action": "press"},
+        {"frame": F, "text": "?"}, {"frame": F, "key": "Slash", "shift": true, "action": "release"})";
+    std::string events;
+    for (const int frame : {5, 10, 20, 30})
+        events += (events.empty() ? "" : ", ") + std::regex_replace(question, std::regex("F"), std::to_string(frame));
+    const GameRun run = play(sourceFile("levels/1-1-first-flight.json") + " --frames 40" +
+                             script("[" + events + R"(, {"frame": 15, "key": "F1"}, {"frame": 25, "key": "F1"}])"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    // ? opens, ? closes, F1 opens, ? closes, F1 opens, ? closes.
+    EXPECT_EQ(run.values("push", "screen"), (std::vector<std::string>{"play", "help", "help", "help"}));
+    EXPECT_EQ(run.values("pop", "screen"), (std::vector<std::string>{"help", "help", "help"}));
+    EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"play"}));
 }
 
 TEST_F(ScreenFlow, PlayThenPauseThenResume)

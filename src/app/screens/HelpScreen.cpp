@@ -37,20 +37,37 @@ void HelpScreen::turnPage(int delta)
     m_page = std::clamp(m_page + delta, 0, m_pages - 1);
 }
 
+void HelpScreen::close()
+{
+    if (m_closing)
+        return;
+    m_closing = true;
+    m_app.navigator().screens().pop();
+}
+
 void HelpScreen::handleEvent(const sf::Event& event)
 {
-    // F1 and '?' are the app's (they toggle this screen); page keys turn pages; any other deliberate key closes it
-    // when it is let go (the key press of a '?' comes before its text, which the app toggles the screen with).
-    if (event.type == sf::Event::KeyReleased)
+    // F1 and the text '?' close it at once; page keys turn pages; any other deliberate key closes it when it is let
+    // go (the key press of a '?' comes before its text).
+    if (m_closing)
+        return;
+    if (event.type == sf::Event::TextEntered)
+    {
+        if (event.text.unicode == '?')
+            close();
+    }
+    else if (event.type == sf::Event::KeyReleased)
     {
         if (m_pressed.count(event.key.code) != 0)
-            m_app.navigator().screens().pop();
+            close();
     }
     else if (event.type == sf::Event::KeyPressed)
     {
         switch (event.key.code)
         {
         case sf::Keyboard::F1:
+            close();
+            return;
         case sf::Keyboard::LShift:
         case sf::Keyboard::RShift:
             return;
@@ -81,7 +98,7 @@ void HelpScreen::handleEvent(const sf::Event& event)
         if (m_page + 1 < m_pages)
             turnPage(+1);
         else
-            m_app.navigator().screens().pop();
+            close();
     }
 }
 

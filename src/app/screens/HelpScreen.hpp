@@ -45,10 +45,13 @@ private:
     AppContext& m_app;
     int m_page = 0;
     int m_pages = 1; ///< as last drawn
-    /// Keys pressed while this screen was on top: it closes when one of them is released, so that the key press of a
-    /// '?' (whose text the app turns into a toggle) does not close it a second time, and a key that opened it does
-    /// not close it on its release.
+    /// Keys pressed while this screen was on top: it closes when one of them is released, so that a key that opened
+    /// it does not close it on its release, and a '?' (a key press, its text and a release, often in one frame)
+    /// closes it once by its text.
     std::set<sf::Keyboard::Key> m_pressed;
+    /// It asked to be closed: every later event of that frame belongs to the screen under it, not to a second pop.
+    bool m_closing = false;
+    void close();
 };
 
 } // namespace abalike::app

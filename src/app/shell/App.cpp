@@ -307,7 +307,7 @@ bool App::handleGlobal(const sf::Event& event)
         }
         return false;
     case sf::Event::KeyPressed:
-        if (event.key.code == sf::Keyboard::F1)
+        if (event.key.code == sf::Keyboard::F1 && !helpOnTop())
         {
             toggleHelp();
             return true;
@@ -316,7 +316,7 @@ bool App::handleGlobal(const sf::Event& event)
     case sf::Event::TextEntered:
     {
         const Screen* top = screens().top();
-        if (event.text.unicode == '?' && (top == nullptr || !top->wantsTextInput()))
+        if (event.text.unicode == '?' && (top == nullptr || !top->wantsTextInput()) && !helpOnTop())
         {
             toggleHelp();
             return true;
@@ -328,15 +328,20 @@ bool App::handleGlobal(const sf::Event& event)
     }
 }
 
+bool App::helpOnTop() const
+{
+    const Screen* top = m_navigator.screens().top();
+    return top != nullptr && top->name() == kHelpScreenName;
+}
+
 void App::toggleHelp()
 {
     if (!m_options.helpScreen)
         return;
     const Screen* top = screens().top();
     if (top != nullptr && top->name() == kHelpScreenName)
-        screens().pop();
-    else
-        screens().push(m_options.helpScreen(m_context));
+        return; // the help screen closes itself on F1 and '?', once (a '?' is a key press, its text and a release)
+    screens().push(m_options.helpScreen(m_context));
 }
 
 void App::drawFrame(bool reuseCovered)

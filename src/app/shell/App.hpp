@@ -54,7 +54,9 @@ private:
     void settingsApplied(const Settings& before, const Settings& after);
     void openFirstScreen();
     void dispatch(const sf::Event& event);
+    /// Opens the help (F1 or '?'); on the help itself those keys are the help screen's, which closes.
     void toggleHelp();
+    bool helpOnTop() const;
     /// True when the app handled the event itself (window close, resize, global keys).
     bool handleGlobal(const sf::Event& event);
     /// One frame: events, the physics steps due, the frame update, then drawing (or laying out, every layoutEvery
