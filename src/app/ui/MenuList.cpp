@@ -108,6 +108,12 @@ float MenuList::draw(sf::RenderTarget& target, const sf::Font* font, float centr
     const float lineHeight = font != nullptr ? font->getLineSpacing(textSize) : static_cast<float>(textSize);
     const float height = lineHeight + 14.0f * scale;
     const float gap = 8.0f * scale;
+    // Every button is as wide as the widest label needs (the title's "Learn: lessons, tutorial, physics" ran past
+    // its button), within the window.
+    if (font != nullptr)
+        for (const MenuItem& item : m_items)
+            width = std::max(width, measureText(*font, utf8(item.label), textSize).x + 32.0f * scale);
+    width = std::min(width, static_cast<float>(target.getSize().x) - 16.0f * scale);
     m_rects.assign(m_items.size(), {});
     float y = top;
     for (std::size_t i = 0; i < m_items.size(); ++i)
