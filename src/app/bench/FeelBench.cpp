@@ -3,6 +3,7 @@
 // measurement, never asserted.
 #include "bench/BenchSuite.hpp"
 #include "bench/BirdRoles.hpp"
+#include "bench/HitTable.hpp"
 #include "bench/ReportTable.hpp"
 #include "render/TextFormat.hpp"
 #include "shell/DataPaths.hpp"
@@ -340,6 +341,13 @@ int runFeelBench(const BenchOptions& options)
         }
         md << " " << (*role.material != '\0' ? role.material : "-") << " | " << verdictText << " |\n";
     }
+
+    const HitTable hits = measureHits(levels, options.quick ? 20 : 2);
+    md << "\n## Hits\n\nEvery campaign level" << (options.quick ? " (--quick: 3 levels, 20 deg steps)" : "")
+       << ", the launch at 0-60 deg in 2 deg steps and 70, 85 and 100 % pull, each bird the level has as its first "
+          "bird: a strike is the bird's first contact when it is a block, a break that block destroyed within 0.5 s. "
+       << hits.shots << " shots. Targets of issue 57 (red into stone is a counter-target: nothing simply softened).\n\n"
+       << hitTableMarkdown(hits);
 
     md << "\n## Break-through\n\nFirst contacts with a wood or ice block whose impulse reached the block's remaining "
           "strength (it broke in that step), and what the bird's horizontal velocity did across that step:\n\n"
