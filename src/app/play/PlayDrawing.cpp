@@ -90,8 +90,13 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
     const sf::View still = target.getView();
     if (shakePx != sf::Vector2f(0.0f, 0.0f))
     {
+        // Moved, the picture would leave a strip of bare window at one edge: it also zooms in by as much, so the
+        // shaken view stays inside what the still one shows.
         sf::View shaken = still;
         shaken.move(-shakePx);
+        const sf::Vector2f size = still.getSize();
+        const float margin = std::max(std::abs(shakePx.x) / size.x, std::abs(shakePx.y) / size.y);
+        shaken.zoom(std::max(0.5f, 1.0f - 2.0f * margin));
         target.setView(shaken);
     }
     // While the next bird is aimed, the last shot stays as a faded reference.
