@@ -43,6 +43,22 @@ TEST(Particles, AThousandBlockCollapseIsCapped)
     EXPECT_EQ(particles.size(), 1500u);
 }
 
+TEST(Particles, DebrisLandsOnTheGroundInsteadOfSinkingIntoIt)
+{
+    for (const char* material : {"wood", "ice", "stone"})
+    {
+        Particles particles;
+        particles.reset();
+        particles.setFloor(0.0f);
+        particles.burstBlock(lookOf(material), {5.0f, 0.4f}, 0.6f, 16);
+        for (int frame = 0; frame < 60; ++frame) // 1 s: every piece has come down
+            particles.update(1.0f / 60.0f);
+        ASSERT_GT(particles.size(), 0u) << material;
+        for (const sf::Vector2f p : particles.positionsM())
+            EXPECT_GE(p.y, 0.0f) << material << ": a splinter inside the ground";
+    }
+}
+
 TEST(Particles, ResetGivesTheSamePiecesAgainAndDebrisFalls)
 {
     // Seeded: the same events give the same picture, so screenshots are reproducible.

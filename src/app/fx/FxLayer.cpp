@@ -68,6 +68,7 @@ private:
 void FxLayer::onLevelStart(PlayView& view)
 {
     m_particles.reset();
+    m_particles.setFloor(static_cast<float>(view.session().level().groundY));
     m_popUps.clear();
     m_seen = view.session().destroyed().size();
     m_abilitiesSeen = view.session().shots().size();

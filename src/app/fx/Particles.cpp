@@ -160,13 +160,23 @@ void Particles::update(float dtS)
     for (Piece& piece : m_pieces)
     {
         piece.ageS += dtS;
-        // Puffs and flashes float; debris falls.
-        if (piece.shape != Shape::Puff && piece.shape != Shape::Flash && piece.shape != Shape::Ring &&
-            piece.shape != Shape::Smoke)
+        // Puffs and flashes float; debris falls, and lands on the ground rather than sinking into it.
+        const bool falls = piece.shape != Shape::Puff && piece.shape != Shape::Flash && piece.shape != Shape::Ring &&
+                           piece.shape != Shape::Smoke;
+        if (falls)
             piece.velocityMps.y -= kGravityMps2 * dtS;
         piece.velocityMps *= std::max(0.0f, 1.0f - kDragPerS * dtS);
         piece.positionM += piece.velocityMps * dtS;
         piece.angleRad += piece.spinRadps * dtS;
+        const float bottom = m_floorY + 0.5f * piece.sizeM;
+        if (falls && piece.positionM.y < bottom)
+        {
+            piece.positionM.y = bottom;
+            if (piece.velocityMps.y < 0.0f)
+                piece.velocityMps.y *= -0.3f;
+            piece.velocityMps.x *= 0.7f;
+            piece.spinRadps *= 0.7f;
+        }
     }
     std::erase_if(m_pieces, [](const Piece& piece) { return piece.ageS >= piece.lifeS; });
 }

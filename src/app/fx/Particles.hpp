@@ -6,6 +6,7 @@
 #include <SFML/System/Vector2.hpp>
 #include <abalike/world/Looks.hpp>
 #include <cstdint>
+#include <limits>
 #include <string_view>
 #include <vector>
 
@@ -41,6 +42,8 @@ public:
     /// and dark smoke that rises for a second or two; count sets how many fire and smoke puffs (fewer with reduced
     /// motion).
     void burstBlast(sf::Vector2f centreM, float radiusM, int count);
+    /// The level's ground line (m): falling debris lands on it and bounces a little instead of sinking through it.
+    void setFloor(float yM) { m_floorY = yM; }
     /// Moves every piece on by dtS (ballistic, with a little air drag) and retires the expired ones.
     void update(float dtS);
     /// Adds every piece to the mesh, in world metres.
@@ -77,6 +80,7 @@ private:
     float uniform(float lo, float hi);
 
     std::vector<Piece> m_pieces;
+    float m_floorY = -std::numeric_limits<float>::infinity();
     std::uint32_t m_state = 1;
 };
 
