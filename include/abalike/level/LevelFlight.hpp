@@ -13,6 +13,9 @@ namespace abalike
 /// the bird's size (absent in vacuum), and the wind and gusts that act through that drag.
 FlightModel levelFlightModel(const EnvironmentDef& environment, const BirdType& bird);
 
+/// The catalog's slingshot with the force of the level's world (levelTheme), whatever the level sets itself.
+BandDef worldBand(const LevelDef& level, const Catalog& catalog);
+
 /// The band a level's slingshot has: the catalog's slingshot with the force of the level's world (levelTheme), each
 /// number the level sets itself replacing the catalog's.
 BandDef levelBand(const LevelDef& level, const Catalog& catalog);

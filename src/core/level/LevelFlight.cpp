@@ -18,15 +18,18 @@ FlightModel levelFlightModel(const EnvironmentDef& environment, const BirdType& 
     return model;
 }
 
-BandDef levelBand(const LevelDef& level, const Catalog& catalog)
+BandDef worldBand(const LevelDef& level, const Catalog& catalog)
 {
     const SlingshotRules& rules = catalog.slingshot();
+    return BandDef{rules.forceFor(worldThemeName(levelTheme(level))), rules.maxPullM, rules.bandMassKg};
+}
+
+BandDef levelBand(const LevelDef& level, const Catalog& catalog)
+{
     const SlingshotDef& own = level.slingshot;
-    BandDef band;
-    band.maxForceN = own.maxForceN.value_or(rules.forceFor(worldThemeName(levelTheme(level))));
-    band.maxPullM = own.maxPullM.value_or(rules.maxPullM);
-    band.bandMassKg = own.bandMassKg.value_or(rules.bandMassKg);
-    return band;
+    const BandDef world = worldBand(level, catalog);
+    return BandDef{own.maxForceN.value_or(world.maxForceN), own.maxPullM.value_or(world.maxPullM),
+                   own.bandMassKg.value_or(world.bandMassKg)};
 }
 
 std::string ownBandWarning(const LevelDef& level, const Catalog& catalog)
@@ -34,9 +37,7 @@ std::string ownBandWarning(const LevelDef& level, const Catalog& catalog)
     const SlingshotDef& own = level.slingshot;
     if (!own.ownsBand())
         return {};
-    LevelDef world = level;
-    world.slingshot.maxForceN = world.slingshot.maxPullM = world.slingshot.bandMassKg = std::nullopt;
-    const BandDef theirs = levelBand(world, catalog);
+    const BandDef theirs = worldBand(level, catalog);
     std::ostringstream text;
     text << "sets its own band (";
     const char* sep = "";

@@ -1,5 +1,6 @@
 #include <abalike/world/CatalogTable.hpp>
 
+#include <abalike/level/LevelFlight.hpp>
 #include <abalike/level/SlingshotBand.hpp>
 #include <cmath>
 #include <iomanip>
@@ -33,11 +34,10 @@ std::string materialsTable(const Catalog& catalog)
     return md.str();
 }
 
-/// The catalog's slingshot on Earth, the band the tables show.
+/// The catalog's slingshot on Earth (a level with no world of its own), the band the tables show.
 BandDef earthBand(const Catalog& catalog)
 {
-    const SlingshotRules& rules = catalog.slingshot();
-    return BandDef{rules.forceFor("earth"), rules.maxPullM, rules.bandMassKg};
+    return worldBand(LevelDef{}, catalog);
 }
 
 double fullPullSpeed(const Catalog& catalog, const BirdType& bird)
