@@ -5,9 +5,11 @@
 #include "render/CameraControls.hpp"
 #include "render/CameraFocus.hpp"
 #include "render/LabelPlacement.hpp"
+#include "render/PullReach.hpp"
 
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/Campaign.hpp>
+#include <abalike/level/LevelIO.hpp>
 #include <abalike/world/Catalog.hpp>
 #include <box2d/box2d.h>
 #include <cmath>
@@ -401,6 +403,68 @@ TEST(CameraFit, AResizeKeepsTheLevelInViewWithoutStretching)
                     << entry.level.id << " " << window.x << "x" << window.y;
         }
     }
+}
+
+/// Every campaign level and every lesson.
+std::vector<LevelDef> everyLevel()
+{
+    std::vector<LevelDef> levels;
+    for (const CampaignLevel& entry : campaign().levels)
+        levels.push_back(entry.level);
+    for (const std::string& path : levelFilesIn(std::string(ABALIKE_SOURCE_DIR) + "/levels/lessons"))
+        levels.push_back(loadLevel(path, Catalog::builtin()));
+    return levels;
+}
+
+TEST(PullReach, AFullPullInEveryLaunchDirectionStaysInsideEveryLevelsAimingViewInEveryWindowShape)
+{
+    // The layout walk's windows and the camera tests' (a tall one among them), with the HUD's and the teaching
+    // overlay's top and the ground line where large text lifts it.
+    std::vector<sf::Vector2u> windows = windowShapes();
+    windows.insert(windows.end(), {{1024, 768}, {1280, 400}});
+    const std::vector<LevelDef> levels = everyLevel();
+    ASSERT_GE(levels.size(), 59u);
+    int checked = 0;
+    for (const LevelDef& level : levels)
+        for (const sf::Vector2u window : windows)
+            for (const float topReserved : {camera_limits::kTopReserved, 0.4f})
+                for (const float groundFromBottom : {camera_limits::kGroundFromBottom, 0.3f})
+                {
+                    // The teaching overlay at large text leaves the level less than half the window: the ground
+                    // stays where the panels put it (a steep full pull may end below the window; the keys reach it).
+                    const bool roomBelow = 1.0f - topReserved - groundFromBottom >= 0.45f;
+                    SCOPED_TRACE(level.id + " in " + std::to_string(window.x) + "x" + std::to_string(window.y) +
+                                 " top " + std::to_string(topReserved) + " ground " + std::to_string(groundFromBottom));
+                    GameSession session(level);
+                    CameraFocus focus = cameraFocusOf(session);
+                    focus.topReserved = topReserved;
+                    focus.groundFromBottom = groundFromBottom;
+                    CameraRig rig;
+                    rig.reset(focus, window);
+                    const auto launch = session.launchPoint();
+                    const sf::Vector2f pouch =
+                        rig.camera().toScreen({static_cast<float>(launch.x), static_cast<float>(launch.y)});
+                    const float pull = fullPullPx(window);
+                    for (int angle = -10; angle <= 80; angle += 2)
+                    {
+                        // The pointer at a full pull: behind the pouch, against the launch (screen y points down).
+                        const double a = angle * 3.14159265358979 / 180.0;
+                        const sf::Vector2f hand = pouch + pull * sf::Vector2f(-static_cast<float>(std::cos(a)),
+                                                                              static_cast<float>(std::sin(a)));
+                        EXPECT_GE(hand.x, pull_reach::kMarginPx - 0.01f) << angle << " deg";
+                        EXPECT_GE(hand.y, pull_reach::kMarginPx - 0.01f) << angle << " deg";
+                        EXPECT_LE(hand.x, static_cast<float>(window.x) - pull_reach::kMarginPx + 0.01f) << angle;
+                        if (roomBelow || angle <= 0)
+                        {
+                            EXPECT_LE(hand.y, static_cast<float>(window.y) - pull_reach::kMarginPx + 0.01f) << angle;
+                        }
+                        ++checked;
+                    }
+                    // Still the level: the slingshot and its stand in view, not the sky above it.
+                    EXPECT_TRUE(inside(rig.camera().visibleWorld(),
+                                       {static_cast<float>(launch.x), static_cast<float>(level.groundY)}));
+                }
+    EXPECT_GT(checked, 20000);
 }
 
 TEST(LabelPlacement, ALabelGoesNextToItsAnchorOffTheStructureWhenThereIsRoom)

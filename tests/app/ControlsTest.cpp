@@ -2,6 +2,7 @@
 #include "input/AimController.hpp"
 #include "input/Gamepad.hpp"
 #include "input/InputState.hpp"
+#include "render/PullReach.hpp"
 
 #include <gtest/gtest.h>
 
@@ -87,9 +88,10 @@ TEST(AimKeys, AltTakesFineStepsOfATenthOfADegreeAndAFifthOfAPercent)
 
 TEST(AimDrag, TheDragsScreenLengthIsThePullAtAnyZoom)
 {
-    // 200 px at 720 px of window height is a full pull; at half the zoom the same drag is the same pull.
-    EXPECT_FLOAT_EQ(AimController::fullPullPx({1280u, 720u}), 200.0f);
-    EXPECT_FLOAT_EQ(AimController::fullPullPx({1920u, 1080u}), 300.0f);
+    // 200 px at 720 px of the window's shorter side is a full pull; at half the zoom the same drag is the same pull.
+    EXPECT_FLOAT_EQ(fullPullPx({1280u, 720u}), 200.0f);
+    EXPECT_FLOAT_EQ(fullPullPx({1920u, 1080u}), 300.0f);
+    EXPECT_FLOAT_EQ(fullPullPx({600u, 1000u}), 600.0f * 200.0f / 720.0f); // a tall window: its width counts
     for (const float pixelsPerMetre : {50.0f, 25.0f, 8.0f})
     {
         const Camera camera = Camera::fromView({-12.8f, 7.2f}, pixelsPerMetre, {1280u, 720u});

@@ -1,5 +1,7 @@
 #include "input/AimController.hpp"
 
+#include "render/PullReach.hpp"
+
 #include <abalike/util/Angles.hpp>
 #include <algorithm>
 #include <cmath>
@@ -16,8 +18,6 @@ constexpr double kFineAngleStepDeg = 0.1;
 constexpr double kPowerStep = 0.01;
 constexpr double kCoarsePowerStep = 0.10;
 constexpr double kFinePowerStep = 0.002;
-/// A full pull is this far from the pouch on the screen at 720 px of window height: one pixel is 0.5 % of the pull.
-constexpr float kFullPullPxAt720 = 200.0f;
 constexpr float kGrabRadiusM = 1.0f;
 constexpr float kGrabRadiusPx = 36.0f;
 
@@ -52,11 +52,6 @@ sf::Vector2f AimController::pullOffset() const
     const double pull = m_power * kMaxPullM;
     return {static_cast<float>(-pull * std::cos(m_angleDeg * kDegToRad)),
             static_cast<float>(-pull * std::sin(m_angleDeg * kDegToRad))};
-}
-
-float AimController::fullPullPx(sf::Vector2u windowSize)
-{
-    return kFullPullPxAt720 * static_cast<float>(windowSize.y) / 720.0f;
 }
 
 bool AimController::grabs(sf::Vector2f pixel, const Camera& camera, sf::Vector2f pouch) const
@@ -172,7 +167,7 @@ bool AimController::handleKey(sf::Keyboard::Key key, Step size)
     }
 }
 
-void AimController::aimFromPointer(sf::Vector2f pointerPx, sf::Vector2f pouchPx, float fullPullPx)
+void AimController::aimFromPointer(sf::Vector2f pointerPx, sf::Vector2f pouchPx, float fullPullLengthPx)
 {
     // The launch goes opposite to the drag, from the pointer through the pouch; the drag's length on the screen is the
     // pull fraction, whatever the zoom (y points down on the screen, up in the world).
@@ -184,7 +179,7 @@ void AimController::aimFromPointer(sf::Vector2f pointerPx, sf::Vector2f pouchPx,
         return;
     }
     m_angleDeg = std::atan2(-pull.y, pull.x) / kDegToRad;
-    m_power = std::min(length / fullPullPx, 1.0);
+    m_power = std::min(length / fullPullLengthPx, 1.0);
 }
 
 } // namespace abalike::app

@@ -32,12 +32,10 @@ public:
 
     /// Handles mouse and keyboard input while a bird is ready; `pouch` is where the bird leaves the slingshot.
     /// Arrows step the angle by 0.5° and the power by 1 % (Shift: 5° and 10 %; Alt: 0.1° and 0.2 %). A drag sets the
-    /// power by its length on the screen: fullPullPx() is a full pull, at any zoom. Losing the window's focus cancels
-    /// a drag. Returns true when the player let go of a drag or pressed Space or Enter: launch with the current aim.
+    /// power by its length on the screen: fullPullPx() (render/PullReach.hpp) is a full pull, at any zoom. Losing the
+    /// window's focus cancels a drag. Returns true when the player let go of a drag or pressed Space or Enter: launch
+    /// with the current aim.
     bool handleEvent(const sf::Event& event, const Camera& camera, sf::Vector2f pouch);
-
-    /// How far from the pouch a drag is a full pull: 200 px at 720 px of window height, scaled with the height.
-    static float fullPullPx(sf::Vector2u windowSize);
 
     /// Whether a left press at this window pixel takes hold of the bird (near the pouch or the bird).
     bool grabs(sf::Vector2f pixel, const Camera& camera, sf::Vector2f pouch) const;
@@ -69,7 +67,7 @@ private:
         Fine,   ///< Alt
     };
     bool handleKey(sf::Keyboard::Key key, Step size);
-    void aimFromPointer(sf::Vector2f pointerPx, sf::Vector2f pouchPx, float fullPullPx);
+    void aimFromPointer(sf::Vector2f pointerPx, sf::Vector2f pouchPx, float fullPullLengthPx);
 
     double m_angleDeg = kDefaultAngleDeg;
     double m_power = kDefaultPower;

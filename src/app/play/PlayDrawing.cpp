@@ -7,6 +7,7 @@
 #include "render/LabelPlacement.hpp"
 #include "render/Mesh.hpp"
 #include "render/Palette.hpp"
+#include "render/PullReach.hpp"
 #include "render/TrailPainter.hpp"
 #include "shell/AppContext.hpp"
 #include "shell/Notices.hpp"
@@ -33,7 +34,7 @@ void drawPullLimit(sf::RenderTarget& target, const Camera& camera, const GameSes
 {
     const auto launch = session.launchPoint();
     const sf::Vector2f pouch = camera.toScreen({static_cast<float>(launch.x), static_cast<float>(launch.y)});
-    const float radius = AimController::fullPullPx(camera.windowSize());
+    const float radius = fullPullPx(camera.windowSize());
     const sf::Color colour = faded(palette::kPreviewDot, pulling ? 0.85f : 0.3f);
     const float width = (pulling ? 2.5f : 1.5f) * uiScale;
     constexpr int kDashes = 36;

@@ -30,6 +30,8 @@ CameraFocus cameraFocusOf(const GameSession& session)
     CameraFocus focus;
     focus.home = levelHomeBox(session.level(), session.catalog());
     focus.groundY = static_cast<float>(session.level().groundY);
+    const Vec2 pouch = session.launchPoint();
+    focus.pouchM = sf::Vector2f(static_cast<float>(pouch.x), static_cast<float>(pouch.y));
     for (const PigDef& pig : session.level().pigs)
         if (const PigType* type = session.catalog().findPig(pig.type))
         {

@@ -34,6 +34,9 @@ struct CameraFocus
     /// The smallest pig of the level as designed (its diameter): the view while aiming never draws it under
     /// kMinPigPx, showing the slingshot and as much of the level as fits instead of all of it.
     float smallestPigM = 0.0f;
+    /// Where the bird sits in the slingshot: the view while aiming keeps room around it for a full pull with the mouse
+    /// (render/PullReach.hpp). None: no room is kept (a focus made up by hand).
+    std::optional<sf::Vector2f> pouchM;
 };
 
 /// While aiming, a small pig is drawn at least this tall: wider levels show the slingshot's end of the level and

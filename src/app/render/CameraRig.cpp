@@ -1,5 +1,7 @@
 #include "render/CameraRig.hpp"
 
+#include "render/PullReach.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -13,6 +15,18 @@ constexpr float kBirdMarginPx = 24.0f;    ///< ... and never less than this on s
 constexpr float kLeadS = 0.6f;            ///< the camera looks this far ahead of the bird
 constexpr float kStructureMarginM = 1.5f; ///< room around the structure
 constexpr float kManualZoomOut = 4.0f;    ///< the player may zoom out to this many times the home view
+/// The ground line goes up at most this far to make room for a full pull (a short wide window): beyond it the
+/// view slides instead.
+constexpr float kMostGroundUp = 0.45f;
+
+/// Panels that leave the level less than this share of the window's height (the teaching overlay at large text) keep
+/// the ground where they put it: raising it for a steep full pull would push the pigs under the panels.
+constexpr float kLeastLevelShareForRoomBelow = 0.45f;
+
+bool keepsRoomBelow(const CameraFocus& focus)
+{
+    return 1.0f - focus.topReserved - focus.groundFromBottom >= kLeastLevelShareForRoomBelow;
+}
 
 float easing(double frameS, double timeS)
 {
@@ -247,11 +261,11 @@ void CameraRig::startReturn()
     m_returnS = 0.0;
 }
 
-CameraView CameraRig::homeView(const CameraFocus& focus) const
+CameraRig::HomeFit CameraRig::fitHome(const CameraFocus& focus, const WorldBox& box, float groundFromBottom) const
 {
-    const CameraView whole = fitBox(focus.home, focus.groundY, m_window, focus.topReserved, focus.groundFromBottom);
-    if (!homeLeavesLevelOut(focus))
-        return whole;
+    const CameraView whole = fitBox(box, focus.groundY, m_window, focus.topReserved, groundFromBottom);
+    if (focus.smallestPigM <= 0.0f || whole.pixelsPerMetre * focus.smallestPigM >= kMinPigPx)
+        return {whole, false};
     // The scale that draws the smallest pig kMinPigPx tall, the slingshot's end of the level at the left edge, the
     // ground where fitBox keeps it.
     const float ppm = std::min(kMinPigPx / focus.smallestPigM, camera_limits::kMaxPixelsPerMetre);
@@ -259,16 +273,53 @@ CameraView CameraRig::homeView(const CameraFocus& focus) const
                               static_cast<float>(std::max(m_window.y, 1u)));
     const float visibleWidth = window.x / ppm;
     const float visibleHeight = window.y / ppm;
-    const float base = std::min(focus.home.bottom, focus.groundY);
-    return {{focus.home.left + 0.5f * visibleWidth, base + (0.5f - focus.groundFromBottom) * visibleHeight}, ppm};
+    const float base = std::min(box.bottom, focus.groundY);
+    return {{{box.left + 0.5f * visibleWidth, base + (0.5f - groundFromBottom) * visibleHeight}, ppm}, true};
+}
+
+CameraRig::HomeFit CameraRig::homeFit(const CameraFocus& focus) const
+{
+    HomeFit fit = fitHome(focus, focus.home, focus.groundFromBottom);
+    if (!focus.pouchM)
+        return fit;
+    // Room for a full pull: the box reaches further left of the pouch and the ground line goes up until the pouch has
+    // the room at the scale that results. Each pass lowers the scale a little less; a few are plenty.
+    const PullRoom room = pullRoomPx(m_window);
+    const auto windowHeight = static_cast<float>(std::max(m_window.y, 1u));
+    const sf::Vector2f pouch = *focus.pouchM;
+    WorldBox box = focus.home;
+    float ground = focus.groundFromBottom;
+    constexpr int kPasses = 6;
+    for (int pass = 0; pass < kPasses; ++pass)
+    {
+        const float ppm = fit.view.pixelsPerMetre;
+        box.left = std::min(focus.home.left, pouch.x - room.left / ppm);
+        const float pouchAboveGroundPx = (pouch.y - std::min(focus.home.bottom, focus.groundY)) * ppm;
+        if (keepsRoomBelow(focus))
+            ground =
+                std::clamp((room.below - pouchAboveGroundPx) / windowHeight, focus.groundFromBottom, kMostGroundUp);
+        fit = fitHome(focus, box, ground);
+    }
+    // What the last pass's scale still lacks (a fraction of a pixel, or beyond the most the ground may go up): slide.
+    CameraView& view = fit.view;
+    const Camera camera = Camera::centredOn(view.centreM, view.pixelsPerMetre, m_window);
+    const sf::Vector2f pouchPx = camera.toScreen(pouch);
+    view.centreM.x -= std::max(room.left - pouchPx.x, 0.0f) / view.pixelsPerMetre;
+    // A slingshot on a high hill may sit so near the top that a flat pull would leave it: the view goes up.
+    const float belowLacksPx = keepsRoomBelow(focus) ? std::max(room.below - (windowHeight - pouchPx.y), 0.0f) : 0.0f;
+    const float pouchDownPx = std::max(room.above - pouchPx.y, 0.0f) - belowLacksPx;
+    view.centreM.y += pouchDownPx / view.pixelsPerMetre;
+    return fit;
+}
+
+CameraView CameraRig::homeView(const CameraFocus& focus) const
+{
+    return homeFit(focus).view;
 }
 
 bool CameraRig::homeLeavesLevelOut(const CameraFocus& focus) const
 {
-    if (focus.smallestPigM <= 0.0f)
-        return false;
-    const CameraView whole = fitBox(focus.home, focus.groundY, m_window, focus.topReserved, focus.groundFromBottom);
-    return whole.pixelsPerMetre * focus.smallestPigM < kMinPigPx;
+    return homeFit(focus).leavesLevelOut;
 }
 
 bool CameraRig::startOpening(const CameraFocus& focus)

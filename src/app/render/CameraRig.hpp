@@ -42,7 +42,9 @@ public:
     /// Ends the opening pan at the home view at once.
     void skipOpening();
     /// The view while aiming: the whole level when its smallest pig is then drawn at least kMinPigPx tall, else the
-    /// slingshot's end of the level at the scale that draws it so.
+    /// slingshot's end of the level at the scale that draws it so; either way with room around the pouch for a full
+    /// pull with the mouse in every launch direction of render/PullReach.hpp (the ground line goes up, the view
+    /// reaches further left, as far as needed).
     CameraView homeView(const CameraFocus& focus) const;
     /// True when the home view leaves part of the level out (and the level opens with a pan).
     bool homeLeavesLevelOut(const CameraFocus& focus) const;
@@ -61,6 +63,15 @@ public:
     static constexpr double kOpeningS = 2.5;
 
 private:
+    /// The home view of a box with the ground line this far up the window, before the pull's room is kept.
+    struct HomeFit
+    {
+        CameraView view;
+        bool leavesLevelOut = false;
+    };
+    HomeFit fitHome(const CameraFocus& focus, const WorldBox& box, float groundFromBottom) const;
+    /// The home view with the pull's room kept.
+    HomeFit homeFit(const CameraFocus& focus) const;
     /// Where the automatic camera wants to be now.
     CameraView target(const CameraFocus& focus) const;
     /// The shot's birds inside the view, whatever the smoothing did: move the least, zoom out only if needed.
