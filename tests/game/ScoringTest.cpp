@@ -16,7 +16,8 @@ LevelDef scoringLevel()
 TEST(Scoring, AccuracyFallsLinearlyToZeroAtTheTolerance)
 {
     EXPECT_EQ(accuracyPointsFor(0.0, 1000, 0.05), 1000);
-    EXPECT_EQ(accuracyPointsFor(0.0003, 1000, 0.05), 994);
+    EXPECT_EQ(accuracyPointsFor(0.0003, 1000, 0.05), 990);   // 994 in steps of ten
+    EXPECT_EQ(accuracyPointsFor(0.00005, 1000, 0.05), 1000); // 999: a perfect shot to the eye
     EXPECT_EQ(accuracyPointsFor(0.025, 1000, 0.05), 500);
     EXPECT_EQ(accuracyPointsFor(0.05, 1000, 0.05), 0);
     EXPECT_EQ(accuracyPointsFor(3.0, 1000, 0.05), 0);

@@ -156,7 +156,7 @@ void PlayScreen::goToNextLevel()
 void PlayScreen::resetShot()
 {
     resetAim();
-    m_aimedBird = 0;
+    m_aimedBird = kNoBirdAimed;
     m_script.dropAbility();
 }
 

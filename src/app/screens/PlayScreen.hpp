@@ -126,7 +126,9 @@ private:
     /// `--shot`: the timing `abalike simulate` uses; each shot's preview shows for kScriptedHoldS first, without
     /// the world moving, so the window replays what the headless run computes.
     ShotSequence m_script;
-    int m_aimedBird = 0; ///< the bird the aim belongs to (game mode pulls each bird afresh)
+    static constexpr int kNoBirdAimed = -1;
+    /// The bird the aim belongs to (game mode pulls each bird afresh, the first one too): none before the first.
+    int m_aimedBird = kNoBirdAimed;
 
     std::optional<LevelWatcher> m_watcher;
     std::vector<std::string> m_reloadErrors;           ///< problems of the last edit that did not load

@@ -21,7 +21,8 @@ int accuracyPointsFor(double deviationM, int fullPoints, double toleranceM)
 {
     if (!(deviationM >= 0.0) || !(toleranceM > 0.0))
         return 0;
-    return static_cast<int>(std::lround(fullPoints * std::max(0.0, 1.0 - deviationM / toleranceM)));
+    const double points = fullPoints * std::max(0.0, 1.0 - deviationM / toleranceM);
+    return kAccuracyStepPoints * static_cast<int>(std::lround(points / kAccuracyStepPoints));
 }
 
 } // namespace abalike
