@@ -78,16 +78,22 @@ std::vector<std::pair<std::string, std::string>> shownKinds(const GameRun& run)
 
 TEST_F(TeachFlow, TheTutorialHasItsOwnLevelAndEveryStepCanBeDone)
 {
-    // Angle, power, launch, T, a path reading (M), a second launch: the sixth step done, the tutorial is kept as
-    // finished (a "result" for "tutorial"), so nothing starts it again. Its three pigs stand apart, so the first
-    // shot does not end the level on step 5 as 1-1 under another name did.
-    const GameRun run = play(sourceFile("levels/lessons/tutorial.json") + " --frames 700" + script(R"([
+    // Angle, power, launch, T, a path reading (M), a second launch at the same aim (it strikes the stone block, as
+    // the first did: "hit a pig" stays), a third 1.2 m/s faster onto the medium pig: the sixth step done, the
+    // tutorial is kept as finished (a "result" for "tutorial"), so nothing starts it again. Its three pigs stand
+    // apart, so the first shot does not end the level on step 5 as 1-1 under another name did.
+    const GameRun run = play(sourceFile("levels/lessons/tutorial.json") + " --frames 1200" + script(R"([
         {"frame": 200, "key": "Up"}, {"frame": 204, "key": "Right"}, {"frame": 208, "key": "Space"},
-        {"frame": 215, "key": "T"}, {"frame": 260, "key": "M"}, {"frame": 620, "key": "Space"}])"));
+        {"frame": 215, "key": "T"}, {"frame": 260, "key": "M"}, {"frame": 620, "key": "Space"},
+        {"frame": 1000, "key": "Right"}, {"frame": 1002, "key": "Right"}, {"frame": 1004, "key": "Right"},
+        {"frame": 1006, "key": "Right"}, {"frame": 1020, "key": "Space"}])"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"tutorial"}));
-    EXPECT_EQ(run.values("launch", "frame").size(), 2u);
+    EXPECT_EQ(run.values("launch", "frame"), (std::vector<std::string>{"208", "620", "1020"}));
     EXPECT_EQ(run.values("result", "level"), (std::vector<std::string>{"tutorial"}));
+    const std::vector<std::string> finished = run.values("result", "frame");
+    ASSERT_EQ(finished.size(), 1u);
+    EXPECT_GT(std::stoi(finished.front()), 1020) << "a miss does not finish the tutorial";
     EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"play"})) << "the level goes on after the tutorial";
 }
 
@@ -284,16 +290,19 @@ TEST_F(TeachFlow, PredictThenLaunchSetsThePredictionAgainstTheFlightAndTheFormul
 
 TEST_F(TeachFlow, TheTutorialCompletesEvenWithTheOverlayHiddenAgain)
 {
-    // A new player: aim, power, launch, the overlay on and off again, a tape with the right button, a second launch.
-    // The measuring step used to wait for the overlay forever; and a single 0.5 degree key step must count as aiming.
+    // A new player: aim, power, launch, the overlay on and off again, a tape with the right button, a second launch
+    // 4 % harder, onto the medium pig (the last step wants a pig hit, not any launch). The measuring step used to wait
+    // for the overlay forever; and a single 0.5 degree key step must count as aiming.
     // Title: Learn (the fourth entry), then its Tutorial.
-    const GameRun run = play("--frames 385" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"},
+    const GameRun run = play("--frames 520" + script(R"([{"frame": 2, "key": "Down"}, {"frame": 3, "key": "Down"},
         {"frame": 4, "key": "Down"}, {"frame": 5, "key": "Enter"}, {"frame": 7, "key": "Down"},
         {"frame": 8, "key": "Enter"}, {"frame": 15, "key": "Up"}, {"frame": 17, "key": "Right"},
         {"frame": 19, "key": "Space"}, {"frame": 25, "key": "T"}, {"frame": 35, "key": "T"},
         {"frame": 45, "mouse": "press", "button": "right", "x": 300, "y": 500},
         {"frame": 50, "mouse": "move", "x": 500, "y": 500},
-        {"frame": 55, "mouse": "release", "button": "right", "x": 500, "y": 500}, {"frame": 355, "key": "Space"}])"));
+        {"frame": 55, "mouse": "release", "button": "right", "x": 500, "y": 500}, {"frame": 340, "key": "Right"},
+        {"frame": 342, "key": "Right"}, {"frame": 344, "key": "Right"}, {"frame": 346, "key": "Right"},
+        {"frame": 355, "key": "Space"}])"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const std::string texts = shownTexts(run);
     EXPECT_NE(texts.find("Tutorial: the controls\ndone\nThat is every control."), std::string::npos) << texts;

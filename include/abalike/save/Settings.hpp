@@ -22,7 +22,7 @@ const char* paletteName(Palette palette);
 enum class PreviewMode
 {
     Full,  ///< the whole path to the first contact, with the contact ring
-    Short, ///< the first half second of dots, as the original game shows them: the aim, not the answer
+    Short, ///< the dots of the climb to the top of the arc (at least half a second): the aim, not the answer
     Off,
 };
 

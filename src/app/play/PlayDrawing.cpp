@@ -69,11 +69,12 @@ void drawWorldPicture(sf::RenderTarget& target, PlayView& view, WorldRenderer& w
         drawPullLimit(target, camera, session, pulling, view.app().ui().scale());
     if (lastShot != nullptr)
         overlay.drawShotMarkers(target, camera, *lastShot, opacity);
-    // The preview setting: the whole path, its first half second (30 steps of 1/60 s), or none.
+    // The preview setting: the whole path, its climb to the top of the arc (at least half a second), or none.
     const PreviewMode previewMode = view.app().settings().current().previewFor(view.playMode());
     if (const PredictedFlight* preview = view.preview();
         preview != nullptr && previewMode != PreviewMode::Off && !previewHidden)
-        overlay.drawPreview(target, camera, *preview, previewMode == PreviewMode::Short ? 30 : 0);
+        overlay.drawPreview(target, camera, *preview,
+                            previewMode == PreviewMode::Short ? shortPreviewDots(*preview) : 0);
 }
 } // namespace
 

@@ -141,6 +141,15 @@ void OverlayRenderer::addAbility(const Camera& camera, const AbilityUse& ability
     }
 }
 
+std::size_t shortPreviewDots(const PredictedFlight& preview)
+{
+    constexpr std::size_t kLeastDots = 30; // half a second of 1/60 s steps
+    std::size_t dots = 0;
+    while (dots < preview.path.size() && preview.path[dots].state.velocity.y > 0.0)
+        ++dots;
+    return std::min(std::max(dots, kLeastDots), preview.path.size());
+}
+
 void OverlayRenderer::drawPreview(sf::RenderTarget& target, const Camera& camera, const PredictedFlight& preview,
                                   std::size_t maxDots)
 {

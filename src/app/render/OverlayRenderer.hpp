@@ -14,6 +14,10 @@ namespace abalike::app
 /// Draws prediction against reality: the RK4 preview as dots, the flown path as a solid orange line, rings
 /// and crosses where each says the first contact is, and how far apart they are; where an ability was used and
 /// the impulses it applied.
+/// How many of a preview's dots the short preview (Game mode's, "first dots") shows: the climb to the top of the arc,
+/// and never less than half a second (a shot aimed level or down has no climb). The aim, not the landing.
+std::size_t shortPreviewDots(const PredictedFlight& preview);
+
 class OverlayRenderer
 {
 public:
@@ -21,7 +25,7 @@ public:
     explicit OverlayRenderer(const sf::Font* font) : m_font(font) {}
 
     /// The preview of the current aim: a dot per step and a ring at the predicted contact; with maxDots, only the
-    /// first dots and no ring.
+    /// first dots and no ring (shortPreviewDots).
     void drawPreview(sf::RenderTarget& target, const Camera& camera, const PredictedFlight& preview,
                      std::size_t maxDots = 0);
     /// The paths of a fired shot, at the given opacity (older shots fade); drawn behind blocks and birds.

@@ -46,6 +46,15 @@ bool hitABody(const GuideContext& c)
     return !c.session->shots().empty() && c.session->shots().back().impact.has_value();
 }
 
+/// A shot launched during this step touched a pig first or defeated one (a miss does not count).
+bool hitAPig(const GuideContext& c)
+{
+    if (!launched(c))
+        return false;
+    const ShotRecord& shot = c.session->shots().back();
+    return shot.pigsDefeated > 0 || shot.firstTouched == EntityKind::Pig;
+}
+
 bool brokenMaterial(const GuideContext& c, const std::string& material)
 {
     for (const Entity& e : c.session->world().entities())
@@ -260,7 +269,8 @@ Guide tutorialGuide()
               {
                   return c.measured;
               }},
-             {"Launch again and hit a pig. F1 lists every key.", launched}},
+             {"Launch again and hit a pig (a miss keeps this step; R restarts with every bird). F1 lists every key.",
+              hitAPig}},
             "That is every control. The campaign teaches the physics; the title menu has a short lesson on each idea."};
 }
 
