@@ -15,6 +15,8 @@ constexpr float kStructureReachM = 8.0f; ///< targets this far beyond the aimed-
 constexpr float kLookAheadS = 2.0f;      ///< without a predicted contact, the stretch the bird covers in this time
 constexpr float kMovingMps = 0.3f;       ///< faster than this a block or pig is part of the action
 constexpr float kSpinningRadps = 0.5f;
+constexpr float kSettlingMps = 3.0f;
+constexpr float kSettlingRadps = 2.0f * kSettlingMps;
 
 WorldBox entityBox(const Entity& entity)
 {
@@ -44,17 +46,35 @@ CameraFocus cameraFocusOf(const GameSession& session)
 
     const GameWorld& world = session.world();
     const ShotRecord& latest = session.shots().back();
-    if (latest.actualContact || latest.contactTimeS)
+    // A payload (the white bird's egg) is the shot's story from the moment it is laid: the camera follows it down and
+    // what it sets moving, not the emptied bird climbing away.
+    const auto isPayload = [](const Entity& entity)
+    {
+        return entity.kind == EntityKind::Bird && !entity.shotBird;
+    };
+    const bool payloadLaid = std::any_of(world.entities().begin(), world.entities().end(), isPayload);
+    if (latest.actualContact || latest.contactTimeS || payloadLaid)
     {
         // After the first contact: the action, not the bird that caused it (a rolling bird is no story).
         focus.afterImpact = true;
         std::vector<sf::Vector2f> moving;
+        bool nearlyStill = true; // nothing faster than kSettlingMps: the world is about to be calm
+        for (const Entity& entity : world.entities())
+            if (isPayload(entity) && entity.alive && entity.body != nullptr)
+            {
+                focus.action.push_back(entityBox(entity));
+                moving.push_back({entity.body->GetPosition().x, entity.body->GetPosition().y});
+                nearlyStill = false;
+            }
         for (const Entity& entity : world.entities())
         {
             if (!entity.alive || entity.body == nullptr ||
                 (entity.kind != EntityKind::Block && entity.kind != EntityKind::Pig))
                 continue;
             const b2Vec2 v = entity.body->GetLinearVelocity();
+            if (entity.body->IsAwake() &&
+                (std::hypot(v.x, v.y) > kSettlingMps || std::abs(entity.body->GetAngularVelocity()) > kSettlingRadps))
+                nearlyStill = false;
             if (std::hypot(v.x, v.y) > kMovingMps || std::abs(entity.body->GetAngularVelocity()) > kSpinningRadps)
             {
                 focus.action.push_back(entityBox(entity));
@@ -75,6 +95,10 @@ CameraFocus cameraFocusOf(const GameSession& session)
                 focus.action.push_back(focus.actionPigs.back());
             }
         }
+        // The next bird is ready kReadyAfterContactS after the contact at the latest (or sooner, once all is calm).
+        const double sinceContact = latest.contactTimeS ? world.time() - *latest.contactTimeS : 0.0;
+        focus.settling = nearlyStill;
+        focus.birdDue = sinceContact >= GameSession::kReadyAfterContactS - kReturnHomeS - 1e-9;
         return focus;
     }
     const Entity* bird = world.bird();

@@ -25,8 +25,14 @@ struct CameraFocus
     /// From the shot's first contact until the next bird is ready the camera frames the action, not the bird: every
     /// moving block and pig, and every live pig within kActionReachM of one.
     bool afterImpact = false;
-    std::vector<WorldBox> action;                    ///< the moving bodies and the pigs near them
-    std::vector<WorldBox> actionPigs;                ///< of those, the live pigs: they must stay inside the window
+    std::vector<WorldBox> action;     ///< the moving bodies and the pigs near them
+    std::vector<WorldBox> actionPigs; ///< of those, the live pigs: they must stay inside the window
+    /// After the impact, nothing moves fast any more (the world is about to be calm): the camera may head home, so
+    /// that it is at rest when the next bird is ready.
+    bool settling = false;
+    /// After the impact, the next bird is due within kReturnHomeS (GameSession::kReadyAfterContactS): the camera
+    /// heads home whatever still moves.
+    bool birdDue = false;
     float topReserved = camera_limits::kTopReserved; ///< the window's top fraction panels cover
     /// Where the ground line sits, as a fraction of the window up from its bottom: higher when the text at the bottom
     /// (the keys, the hint) reaches above the usual place, at large text sizes.
@@ -42,6 +48,9 @@ struct CameraFocus
 /// While aiming, a small pig is drawn at least this tall: wider levels show the slingshot's end of the level and
 /// open with a pan over the rest.
 inline constexpr float kMinPigPx = 12.0f;
+
+/// The way home (to the aiming view) takes this long, then the camera stops.
+inline constexpr double kReturnHomeS = 0.5;
 
 /// A pig this near a moving body may be hit by it: the camera keeps it in view after an impact.
 inline constexpr float kActionReachM = 15.0f;

@@ -58,6 +58,19 @@ void CameraRig::resize(sf::Vector2u windowSize)
     rebuild();
 }
 
+bool CameraRig::homeShowsEveryActionPig(const CameraFocus& focus) const
+{
+    const WorldBox home = visibleBox(homeView(focus), m_window);
+    return std::all_of(focus.actionPigs.begin(), focus.actionPigs.end(),
+                       [&home](const WorldBox& pig) { return home.contains(pig); });
+}
+
+bool CameraRig::homeShowsTheSettling(const CameraFocus& focus) const
+{
+    // A pig the last of the action may still reach stays in view: a home view that leaves it out waits for the world.
+    return focus.settling && homeShowsEveryActionPig(focus);
+}
+
 CameraView CameraRig::target(const CameraFocus& focus) const
 {
     if (m_mode == Mode::Manual)
@@ -110,10 +123,18 @@ void CameraRig::update(const CameraFocus& focus, double frameS)
     m_groundY = focus.groundY;
     if (focus.shotUnderWay && !m_shotUnderWay)
         m_mode = Mode::Follow; // launch: follow, whatever the player had panned to (or the opening pan showed)
-    else if (!focus.shotUnderWay && m_shotUnderWay)
+    else if ((focus.shotUnderWay && m_mode == Mode::Follow && (focus.birdDue || homeShowsTheSettling(focus))) ||
+             (!focus.shotUnderWay && m_shotUnderWay && m_mode != Mode::Home))
     {
-        m_mode = Mode::Home; // the world settled: back to the level, in kReturnS
+        m_mode = Mode::Home; // the shot is settling or the world settled: back to the level, in kReturnS
+        m_settledEarly = focus.shotUnderWay;
         startReturn();
+    }
+    else if (focus.shotUnderWay && m_mode == Mode::Home && m_settledEarly && !focus.birdDue &&
+             !homeShowsEveryActionPig(focus))
+    {
+        m_mode = Mode::Follow; // it moved again near a pig the home view leaves out: follow the action once more
+        m_settledEarly = false;
     }
     m_shotUnderWay = focus.shotUnderWay;
 
@@ -253,6 +274,12 @@ void CameraRig::recentre()
 {
     m_mode = m_shotUnderWay ? Mode::Follow : Mode::Home;
     startReturn();
+}
+
+void CameraRig::holdStill()
+{
+    if (m_mode == Mode::Home && m_returnS < kReturnS)
+        m_mode = Mode::Manual;
 }
 
 void CameraRig::startReturn()

@@ -36,6 +36,9 @@ public:
     void zoomAt(float factor, sf::Vector2f pixel);
     /// Back to automatic: home, or following if a shot is under way.
     void recentre();
+    /// The player took hold of the bird: a camera still on its way home stops where it is (as if panned there), so
+    /// that nothing moves under the hand; the next launch takes over as always.
+    void holdStill();
     /// On a level wider than its home view (see homeView), pans from the far end of the level to the slingshot over
     /// kOpeningS; any input ends it (skipOpening), and so does a launch. Returns whether it started.
     bool startOpening(const CameraFocus& focus);
@@ -56,9 +59,10 @@ public:
 
     /// Seconds for the view to cover about 63 % of the way to its target while it follows a shot.
     static constexpr double kFollowTimeS = 0.3;
-    /// The way back home once the world settles takes exactly this long and then stops, so that the camera is at
-    /// rest soon after the next bird is ready (an exponential ease crept on for about 3 s).
-    static constexpr double kReturnS = 0.5;
+    /// The way back home takes exactly this long and then stops (an exponential ease crept on for about 3 s). It
+    /// starts when the focus is settling (nothing moves, or the next bird is due within this time), so the camera is
+    /// at rest when the next bird is ready.
+    static constexpr double kReturnS = kReturnHomeS;
     /// The opening pan's length.
     static constexpr double kOpeningS = 2.5;
 
@@ -72,6 +76,10 @@ private:
     HomeFit fitHome(const CameraFocus& focus, const WorldBox& box, float groundFromBottom) const;
     /// The home view with the pull's room kept.
     HomeFit homeFit(const CameraFocus& focus) const;
+    /// The home view shows every pig the action may still reach.
+    bool homeShowsEveryActionPig(const CameraFocus& focus) const;
+    /// The focus is settling and the home view shows every pig the action may still reach: time to head home.
+    bool homeShowsTheSettling(const CameraFocus& focus) const;
     /// Where the automatic camera wants to be now.
     CameraView target(const CameraFocus& focus) const;
     /// The shot's birds inside the view, whatever the smoothing did: move the least, zoom out only if needed.
@@ -89,8 +97,9 @@ private:
     float m_groundY = 0.0f;
     Mode m_mode = Mode::Home;
     bool m_shotUnderWay = false;
-    bool m_snap = true;      ///< jump to the next target instead of easing (new level, resize in home view)
-    double m_openingS = 0.0; ///< time into the opening pan
+    bool m_settledEarly = false; ///< headed home while the shot was still under way (CameraFocus::settling)
+    bool m_snap = true;          ///< jump to the next target instead of easing (new level, resize in home view)
+    double m_openingS = 0.0;     ///< time into the opening pan
     CameraView m_openingFrom;
     double m_returnS = kReturnS; ///< time into the way back home
     CameraView m_returnFrom;

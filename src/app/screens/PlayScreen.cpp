@@ -258,6 +258,8 @@ void PlayScreen::handleEvent(const sf::Event& event)
     if (click && mayAim)
         leftIsFree = !m_aim.grabs({static_cast<float>(event.mouseButton.x), static_cast<float>(event.mouseButton.y)},
                                   m_rig.camera(), pouch);
+    if (click && mayAim && !leftIsFree)
+        m_rig.holdStill(); // a press on the bird grabs it, and the view stops moving under the hand
     if (!m_aim.dragging() && m_cameraControls.handleEvent(event, m_rig, leftIsFree))
         return;
     if (!mayAim)
