@@ -40,6 +40,7 @@ struct AbilityUse
     /// How far from (x, y) the ability reached (a blast's radius; 0 when it acted on the bird alone).
     double reachM = 0.0;
     std::vector<AbilityImpulse> impulses;
+    bool byFuse = false; ///< it went off by itself (Ability::fuseS), the player never used it
 };
 
 /// When a bird's ability can be used (once per bird).
@@ -116,6 +117,9 @@ public:
     /// An ability that drops a payload (the egg) describes it, so the solver can time the drop over a target; none
     /// for every other ability.
     virtual std::optional<DroppedPayload> dropped() const { return std::nullopt; }
+    /// An ability that goes off by itself if the player never uses it (the black bird's fuse, as in the genre): this
+    /// long after the bird's first contact, or as the bird comes to rest, whichever is first. None: it waits.
+    virtual std::optional<double> fuseS() const { return std::nullopt; }
 };
 
 /// Makes an ability from its block in the catalog's "abilities" (an empty object when the catalog has none: the

@@ -113,6 +113,9 @@ public:
     bool canActivateAbility() const;
     /// Uses the launched bird's ability now (between steps); returns what it did, or nullopt if it cannot.
     std::optional<AbilityUse> activateAbility();
+    /// What an ability with a fuse (Ability::fuseS) did when it went off by itself in the last step, once; the session
+    /// records it as the shot's ability.
+    std::optional<AbilityUse> takeFusedAbility();
 
     /// Fraction (0..1) along the straight move a -> b at which a circle of the given radius first touches
     /// level geometry, by Box2D's time of impact: the same query the solver runs for bullets.
@@ -157,6 +160,8 @@ public:
 
 private:
     void removeOutOfBounds();
+    /// In a step, after the birds' rest is known: an unused ability whose fuse burnt down goes off.
+    void fuseAbility();
 
     std::unique_ptr<WorldBodies> m_bodies;
     std::unique_ptr<WorldStepper> m_stepper;
@@ -164,6 +169,7 @@ private:
     std::unique_ptr<ImpactRecorder> m_impacts;
     std::unique_ptr<Damage> m_damage;
     std::unique_ptr<BirdFlight> m_birds;
+    std::optional<AbilityUse> m_fused; ///< set by fuseAbility(), taken by takeFusedAbility()
     long m_steps = 0;
 };
 

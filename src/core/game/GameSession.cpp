@@ -180,6 +180,9 @@ void GameSession::step()
         m_notice = "The simulation produced an invalid number, so the level was reset.";
         return;
     }
+    // The black bird's fuse: an ability the player never used went off by itself in that step.
+    if (std::optional<AbilityUse> fused = m_world->takeFusedAbility(); fused && !m_shots.empty())
+        m_shots.back().ability = std::move(fused);
     collectEvents();
     updateBird();
     updatePhase();

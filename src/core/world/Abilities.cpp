@@ -3,6 +3,7 @@
 #include "world/WorldBodies.hpp"
 
 #include <abalike/world/GameWorld.hpp>
+#include <utility>
 
 namespace abalike
 {
@@ -72,6 +73,27 @@ std::optional<AbilityUse> GameWorld::activateAbility()
     AbilityContext context(*m_birds, *m_damage, *m_bodies);
     ability.use(context, use);
     return use;
+}
+
+void GameWorld::fuseAbility()
+{
+    // An ability with a fuse the player never used goes off by itself: the fuse's time after the bird's first contact,
+    // or as the bird comes to rest (or would otherwise leave), whichever is first.
+    const Ability* ability = m_birds->birdType().ability.get();
+    if (ability == nullptr || !ability->fuseS() || !canActivateAbility())
+        return;
+    const std::optional<double>& contact = m_birds->shotContactTime();
+    const bool burnt = contact && m_bodies->time() - *contact >= *ability->fuseS() - 1e-9;
+    if (!burnt && !m_birds->birdDone())
+        return;
+    m_fused = activateAbility();
+    if (m_fused)
+        m_fused->byFuse = true;
+}
+
+std::optional<AbilityUse> GameWorld::takeFusedAbility()
+{
+    return std::exchange(m_fused, std::nullopt);
 }
 
 } // namespace abalike

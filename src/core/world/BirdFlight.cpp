@@ -311,7 +311,7 @@ void BirdFlight::afterStep(const Vec2& stepStart)
     m_pathTouches.push_back(touchedInStep(body));
 }
 
-void BirdFlight::retire()
+void BirdFlight::updateRest()
 {
     const double now = m_bodies.time();
     // What the birds began to touch in this step: the shot's first contact, and when each first met the ground.
@@ -354,27 +354,35 @@ void BirdFlight::retire()
         return rested >= kBirdRestS - 1e-9 || (groundSinceS >= 0.0 && now - groundSinceS >= kBirdGroundS - 1e-9) ||
                now - launchedS >= kBirdLifetimeS - 1e-9;
     };
+    m_birdDone = false;
     if (m_birdIndex >= 0)
     {
         const b2Body* body = m_bodies.entity(m_birdIndex).body;
         const double rested = slowFor(body, m_slowSinceS, m_touched && !inFreeFlight());
-        if (done(rested, m_groundSinceS, m_launchTimeS))
-        {
-            m_bodies.puff(m_birdIndex);
-            removeBird();
-        }
+        m_birdDone = done(rested, m_groundSinceS, m_launchTimeS);
     }
-    for (std::size_t slot = m_projectiles.size(); slot-- > 0;)
+    for (Projectile& projectile : m_projectiles)
     {
-        Projectile& projectile = m_projectiles[slot];
         const b2Body* body = m_bodies.entity(projectile.index).body;
         const double rested = slowFor(body, projectile.slowSinceS, projectile.touched);
-        if (done(rested, projectile.groundSinceS, projectile.launchTimeS))
+        projectile.done = done(rested, projectile.groundSinceS, projectile.launchTimeS);
+    }
+}
+
+void BirdFlight::retire()
+{
+    if (m_birdIndex >= 0 && m_birdDone)
+    {
+        m_bodies.puff(m_birdIndex);
+        removeBird();
+    }
+    m_birdDone = false;
+    for (std::size_t slot = m_projectiles.size(); slot-- > 0;)
+        if (m_projectiles[slot].done)
         {
-            m_bodies.puff(projectile.index);
+            m_bodies.puff(m_projectiles[slot].index);
             removeProjectile(slot);
         }
-    }
 }
 
 void BirdFlight::retireAll()

@@ -44,7 +44,12 @@ public:
     Vec2 beforeStep();
     /// After a Box2D step: the bird's first contact (and first impact), its path.
     void afterStep(const Vec2& birdStart);
-    /// Birds that rest, lie on the ground long enough or outlived their time leave with a puff.
+    /// After a step: what the birds began to touch, and which of them rest, lay on the ground long enough or
+    /// outlived their time (birdDone()).
+    void updateRest();
+    /// The launched bird is done (updateRest): retire() takes it out with a puff unless something (a fuse) acts first.
+    bool birdDone() const { return m_birdDone; }
+    /// The birds updateRest() found done leave with a puff.
     void retire();
 
     int birdIndex() const { return m_birdIndex; }
@@ -80,6 +85,7 @@ private:
         double slowSinceS = -1.0;
         double groundSinceS = -1.0;              ///< when it first touched the ground or terrain
         bool touched = false;                    ///< it has touched something
+        bool done = false;                       ///< rests, lay on the ground long enough or outlived its time
         std::unique_ptr<FlightIntegrator> model; ///< evaluates drag and wind for it
     };
 
@@ -98,6 +104,7 @@ private:
     double m_groundSinceS = -1.0;
     bool m_touched = false;
     bool m_abilityUsed = false;
+    bool m_birdDone = false; ///< the launched bird rests, lay on the ground long enough or outlived its time
     std::unique_ptr<FlightIntegrator> m_flight; ///< drives the bird until its first contact, then null
     std::unique_ptr<FlightIntegrator> m_model;  ///< the same model, evaluated for drag after contact
     FlightState m_stepStart{};

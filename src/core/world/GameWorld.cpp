@@ -63,6 +63,8 @@ void GameWorld::step()
     m_damage->applyStep(m_impacts->pendingEntity());
     m_impacts->finishStep(m_damage->watchedRefund(), m_birds->birdIndex());
     removeOutOfBounds();
+    m_birds->updateRest();
+    fuseAbility();
     m_birds->retire();
     m_stepper->updateCalm();
 }

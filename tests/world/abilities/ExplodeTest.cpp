@@ -65,6 +65,64 @@ TEST(Abilities, TheBlackBirdsBlastBreaksStoneBesideIt)
     EXPECT_FALSE(world.entities()[1].alive) << "500 N s x (1 - 0.8 / 3) = 367 N s against stone's 300";
 }
 
+TEST(Abilities, AnUntappedBlackBirdGoesOffByItselfAFuseAfterItsFirstContact)
+{
+    // Thrown flat into the wood tower and never tapped: 1.5 s after the bird first touched it (it breaks through
+    // and rolls on), it blows up where it is, recorded as the shot's ability (by the fuse), and the next bird is still
+    // ready 3 s after the contact.
+    LevelDef level = abilityLevel({"black", "black"});
+    GameSession session(level);
+    const double fuse = numberOf(Catalog::builtin(), "explode", "fuse_s");
+    ASSERT_EQ(fuse, 1.5);
+    session.launch(10.0, 25.0);
+    const double launchedAt = session.world().time() - session.timeSinceLaunch();
+    while (session.phase() == Phase::Flying && !session.shots().back().ability)
+        session.step();
+    const ShotRecord& shot = session.shots().back();
+    ASSERT_TRUE(shot.ability.has_value());
+    ASSERT_TRUE(shot.contactTimeS.has_value());
+    EXPECT_TRUE(shot.ability->byFuse);
+    EXPECT_FALSE(shot.ability->beforeContact);
+    EXPECT_NEAR(shot.ability->tS - (*shot.contactTimeS - launchedAt), fuse, 1.0 / 60.0 + 1e-9);
+    EXPECT_GT(shot.ability->x, 20.0) << "it broke through the tower and went off where it rolled to";
+    EXPECT_EQ(session.world().bird(), nullptr) << "the bird is gone with the blast";
+    while (session.phase() == Phase::Flying)
+        session.step();
+    ASSERT_TRUE(shot.readyAfterContactS.has_value());
+    EXPECT_LE(*shot.readyAfterContactS, GameSession::kReadyAfterContactS + 1.0 / 60.0 + 1e-9);
+}
+
+TEST(Abilities, ABlackBirdThatComesToRestBeforeItsFuseGoesOffAsItStops)
+{
+    // Dropped onto the ground from 0.35 m with no speed: it rests within the fuse's time, and goes off as it would
+    // otherwise leave with a puff, not later and not never.
+    LevelDef level = abilityLevel({"black", "black"});
+    GameSession session(level);
+    session.launch(0.0, 0.5);
+    const double launchedAt = session.world().time() - session.timeSinceLaunch();
+    while (session.phase() == Phase::Flying && !session.shots().back().ability)
+        session.step();
+    const ShotRecord& shot = session.shots().back();
+    ASSERT_TRUE(shot.ability.has_value());
+    ASSERT_TRUE(shot.contactTimeS.has_value());
+    EXPECT_TRUE(shot.ability->byFuse);
+    EXPECT_LT(shot.ability->tS - (*shot.contactTimeS - launchedAt),
+              numberOf(Catalog::builtin(), "explode", "fuse_s") - 0.1);
+}
+
+TEST(Abilities, ATappedBlackBirdIsNotBlownUpTwice)
+{
+    LevelDef level = abilityLevel({"black", "black"});
+    GameSession session(level);
+    launchAndFly(session, 20.0, 16.0, 0.5);
+    ASSERT_TRUE(session.activateAbility());
+    EXPECT_FALSE(session.shots().back().ability->byFuse);
+    const double usedAt = session.shots().back().ability->tS;
+    while (session.phase() == Phase::Flying)
+        session.step();
+    EXPECT_EQ(session.shots().back().ability->tS, usedAt);
+}
+
 TEST(Abilities, ABodyTheBlastFlingsStopsAtAThinPlank)
 {
     // A pig tough enough to survive the blast, 0.6 m from it, is sent off at about 68 m/s: more than a metre a step.

@@ -16,7 +16,8 @@ class Explode final : public Ability
 public:
     explicit Explode(const nlohmann::json& params)
         : m_radiusM(abilityNumber(params, "radius_m", 3.0, "explode")),
-          m_impulseNs(abilityNumber(params, "impulse_ns", 250.0, "explode"))
+          m_impulseNs(abilityNumber(params, "impulse_ns", 250.0, "explode")),
+          m_fuseS(abilityNumber(params, "fuse_s", 0.0, "explode"))
     {
     }
 
@@ -37,20 +38,29 @@ public:
             return m_radiusM;
         if (key == "impulse_ns")
             return m_impulseNs;
+        if (key == "fuse_s")
+            return m_fuseS;
         throw std::out_of_range("explode has no number \"" + std::string(key) + "\"");
     }
     std::string parameters() const override
     {
-        return "R = " + fixedDecimals(m_radiusM, 1) + " m, J = " + fixedDecimals(m_impulseNs, 0) + " N s";
+        return "R = " + fixedDecimals(m_radiusM, 1) + " m, J = " + fixedDecimals(m_impulseNs, 0) + " N s" +
+               (m_fuseS > 0.0 ? ", fuse " + fixedDecimals(m_fuseS, 1) + " s" : "");
+    }
+    std::optional<double> fuseS() const override
+    {
+        return m_fuseS > 0.0 ? std::optional<double>(m_fuseS) : std::nullopt;
     }
     std::string_view description() const override
     {
-        return "radial impulse J (1 - d/R) on every block and pig within R, absorbed as damage too; the bird is gone";
+        return "radial impulse J (1 - d/R) on every block and pig within R, absorbed as damage too; the bird is gone "
+               "(untapped, it goes off by itself a fuse's time after its first contact, or as it comes to rest)";
     }
 
 private:
     double m_radiusM;
     double m_impulseNs;
+    double m_fuseS; ///< 0: no fuse, it waits for the player
 };
 
 } // namespace
