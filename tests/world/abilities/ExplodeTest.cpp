@@ -65,6 +65,20 @@ TEST(Abilities, TheBlackBirdsBlastBreaksStoneBesideIt)
     EXPECT_FALSE(world.entities()[1].alive) << "500 N s x (1 - 0.8 / 3) = 367 N s against stone's 300";
 }
 
+/// Launches and never taps: steps until the bird's fused ability went off. Returns how long after the shot's first
+/// contact it did, none when it never did (or not by the fuse).
+std::optional<double> untappedUntilItGoesOff(GameSession& session, double angleDeg, double speedMps)
+{
+    session.launch(angleDeg, speedMps);
+    const double launchedAt = session.world().time() - session.timeSinceLaunch();
+    while (session.phase() == Phase::Flying && !session.shots().back().ability)
+        session.step();
+    const ShotRecord& shot = session.shots().back();
+    if (!shot.ability || !shot.ability->byFuse || !shot.contactTimeS)
+        return std::nullopt;
+    return shot.ability->tS - (*shot.contactTimeS - launchedAt);
+}
+
 TEST(Abilities, AnUntappedBlackBirdGoesOffByItselfAFuseAfterItsFirstContact)
 {
     // Thrown flat into the wood tower and never tapped: 1.5 s after the bird first touched it (it breaks through
@@ -74,16 +88,11 @@ TEST(Abilities, AnUntappedBlackBirdGoesOffByItselfAFuseAfterItsFirstContact)
     GameSession session(level);
     const double fuse = numberOf(Catalog::builtin(), "explode", "fuse_s");
     ASSERT_EQ(fuse, 1.5);
-    session.launch(10.0, 25.0);
-    const double launchedAt = session.world().time() - session.timeSinceLaunch();
-    while (session.phase() == Phase::Flying && !session.shots().back().ability)
-        session.step();
+    const std::optional<double> afterContact = untappedUntilItGoesOff(session, 10.0, 25.0);
+    ASSERT_TRUE(afterContact.has_value());
     const ShotRecord& shot = session.shots().back();
-    ASSERT_TRUE(shot.ability.has_value());
-    ASSERT_TRUE(shot.contactTimeS.has_value());
-    EXPECT_TRUE(shot.ability->byFuse);
     EXPECT_FALSE(shot.ability->beforeContact);
-    EXPECT_NEAR(shot.ability->tS - (*shot.contactTimeS - launchedAt), fuse, 1.0 / 60.0 + 1e-9);
+    EXPECT_NEAR(*afterContact, fuse, 1.0 / 60.0 + 1e-9);
     EXPECT_GT(shot.ability->x, 20.0) << "it broke through the tower and went off where it rolled to";
     EXPECT_EQ(session.world().bird(), nullptr) << "the bird is gone with the blast";
     while (session.phase() == Phase::Flying)
@@ -98,16 +107,9 @@ TEST(Abilities, ABlackBirdThatComesToRestBeforeItsFuseGoesOffAsItStops)
     // otherwise leave with a puff, not later and not never.
     LevelDef level = abilityLevel({"black", "black"});
     GameSession session(level);
-    session.launch(0.0, 0.5);
-    const double launchedAt = session.world().time() - session.timeSinceLaunch();
-    while (session.phase() == Phase::Flying && !session.shots().back().ability)
-        session.step();
-    const ShotRecord& shot = session.shots().back();
-    ASSERT_TRUE(shot.ability.has_value());
-    ASSERT_TRUE(shot.contactTimeS.has_value());
-    EXPECT_TRUE(shot.ability->byFuse);
-    EXPECT_LT(shot.ability->tS - (*shot.contactTimeS - launchedAt),
-              numberOf(Catalog::builtin(), "explode", "fuse_s") - 0.1);
+    const std::optional<double> afterContact = untappedUntilItGoesOff(session, 0.0, 0.5);
+    ASSERT_TRUE(afterContact.has_value());
+    EXPECT_LT(*afterContact, numberOf(Catalog::builtin(), "explode", "fuse_s") - 0.1);
 }
 
 TEST(Abilities, ATappedBlackBirdIsNotBlownUpTwice)
