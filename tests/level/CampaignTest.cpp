@@ -19,11 +19,11 @@ TEST(Campaign, LoadsEveryLevelInPlayOrder)
     ASSERT_EQ(campaign.levels.size(), 50u);
     // Ordered by the model player's win rate inside each episode (tools/balance-campaign).
     EXPECT_EQ(campaign.levels.front().level.id, "1-1"); // where the tutorial leads
-    EXPECT_EQ(campaign.levels.back().level.id, "6-10");
+    EXPECT_EQ(campaign.levels.back().level.id, "6-6");
     EXPECT_EQ(campaign.levels[7].episode, 0u);
     EXPECT_EQ(campaign.levels[8].episode, 1u);
     EXPECT_EQ(campaign.levelIds()[16], "3-1");
-    EXPECT_EQ(campaign.indexOf("4-2"), 30u); // episode 4 begins at 24: 4-1, 4-4, 4-7, 4-5, 4-6, 4-8, 4-2
+    EXPECT_EQ(campaign.indexOf("4-2"), 30u); // episode 4 begins at 24: 4-1, 4-4, 4-5, 4-7, 4-6, 4-8, 4-2
     EXPECT_FALSE(campaign.indexOf("9-9").has_value());
 }
 
@@ -42,10 +42,10 @@ TEST(Campaign, ALevelsNumberIsItsPlaceAndItsProgressKeyIsItsId)
         EXPECT_EQ(level.key, level.level.id);
         EXPECT_EQ(campaign.indexOfNumber(level.number), i);
     }
-    // Episode 2 starts 2-5, 2-4, 2-2: the third tile is 2-2 Heavy Hitter, whose id is 2-2; the sixth, numbered
-    // 2-6, is Dominoes, saved as 2-1.
-    EXPECT_EQ(campaign.levels[*campaign.indexOfNumber("2-3")].key, "2-2");
-    const std::size_t dominoes = *campaign.indexOfNumber("2-6");
+    // Episode 2 starts 2-5, 2-4, 2-6: the third tile is 2-6 Boulder Hill, whose id is 2-6; the seventh, numbered
+    // 2-7, is Dominoes, saved as 2-1.
+    EXPECT_EQ(campaign.levels[*campaign.indexOfNumber("2-3")].key, "2-6");
+    const std::size_t dominoes = *campaign.indexOfNumber("2-7");
     EXPECT_EQ(campaign.levels[dominoes].level.title, "Dominoes");
     EXPECT_EQ(campaign.levels[dominoes].key, "2-1");
     EXPECT_FALSE(campaign.indexOfNumber("2-9").has_value());
