@@ -36,6 +36,7 @@ constexpr HitTarget kTargets[] = {
 struct Strike
 {
     std::string material;
+    std::string piece;
     bool broke = false;
     bool keepsGoing = false;
 };
@@ -59,8 +60,10 @@ std::optional<Strike> playStrike(const LevelDef& level, double angleDeg, double 
                 continue;
             if (shot.firstTouched != EntityKind::Block || !shot.impact)
                 return std::nullopt;
-            strike = Strike{shot.impact->bodyType};
             block = shot.impact->bodyIndex;
+            strike =
+                Strike{shot.impact->bodyType,
+                       strikePiece(session.world().entities()[static_cast<std::size_t>(block)], shot.actualContact->y)};
             contactS = session.simTime();
             vxBefore = shot.impact->birdBefore.vx;
             if (blastAtContact && session.canActivateAbility())
@@ -91,6 +94,21 @@ std::string percent(int part, int whole)
 
 } // namespace
 
+std::string strikePiece(const Entity& block, double contactY)
+{
+    if (block.shape == BlockShape::HollowBox)
+        return "hollow box";
+    if (block.shape == BlockShape::Box && block.heightM >= 2.0 * block.widthM)
+        return "post";
+    if (block.shape == BlockShape::Box && block.widthM >= 2.0 * block.heightM)
+    {
+        // A flat plank (turned less than 45 degrees): struck on its upper face, it is a roof.
+        const double y = block.body != nullptr ? block.body->GetPosition().y : 0.0;
+        return contactY >= y + 0.25 * block.heightM ? "roof" : "plank end";
+    }
+    return "block";
+}
+
 HitTable measureHits(const std::vector<LevelDef>& levels, int angleStepDeg)
 {
     HitTable table;
@@ -114,10 +132,14 @@ HitTable measureHits(const std::vector<LevelDef>& levels, int angleStepDeg)
                         const std::optional<Strike> strike = playStrike(first, angle, share, blast);
                         if (!strike)
                             continue;
-                        HitCounts& counts = table.counts[{blast ? kBlastRow : kind, strike->material}];
-                        ++counts.strikes;
-                        counts.breaks += strike->broke ? 1 : 0;
-                        counts.keepsGoing += strike->broke && strike->keepsGoing ? 1 : 0;
+                        const std::string row = blast ? kBlastRow : kind;
+                        for (HitCounts* counts : {&table.counts[{row, strike->material}],
+                                                  &table.byPiece[{row, strike->material, strike->piece}]})
+                        {
+                            ++counts->strikes;
+                            counts->breaks += strike->broke ? 1 : 0;
+                            counts->keepsGoing += strike->broke && strike->keepsGoing ? 1 : 0;
+                        }
                     }
             }
         }
@@ -144,6 +166,21 @@ std::string hitTableMarkdown(const HitTable& table)
         md << "| " << key.first << " | " << key.second << " | " << counts.strikes << " | "
            << percent(counts.breaks, counts.strikes) << " | " << percent(counts.keepsGoing, counts.breaks) << " | "
            << target << " |\n";
+    }
+    // The player's complaint: posts, plank ends and hollow boxes bounce, only roofs give way. The targets' rows by
+    // the piece struck (the black bird's blast breaks whatever it touches: left out).
+    md << "\nBy the piece struck (a roof is a flat plank struck on its upper face; a post stands at least twice as "
+          "tall as wide):\n\n"
+       << "| bird | material | piece | strikes | break within 0.5 s |\n|---|---|---|---:|---:|\n";
+    for (const auto& [key, counts] : table.byPiece)
+    {
+        const auto& [bird, material, piece] = key;
+        const bool targeted =
+            std::any_of(std::begin(kTargets), std::end(kTargets),
+                        [&](const HitTarget& t) { return bird == t.bird && material == t.material && t.atLeast; });
+        if (targeted && bird != kBlastRow)
+            md << "| " << bird << " | " << material << " | " << piece << " | " << counts.strikes << " | "
+               << percent(counts.breaks, counts.strikes) << " |\n";
     }
     return md.str();
 }

@@ -1,8 +1,10 @@
 #pragma once
 
 #include <abalike/level/LevelDef.hpp>
+#include <abalike/world/Entity.hpp>
 #include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -25,8 +27,15 @@ struct HitTable
 {
     /// (bird, or "black (blast at contact)"; material) -> counts
     std::map<std::pair<std::string, std::string>, HitCounts> counts;
+    /// The same strikes by the piece struck (strikePiece): (bird, material, piece) -> counts
+    std::map<std::tuple<std::string, std::string, std::string>, HitCounts> byPiece;
     int shots = 0;
 };
+
+/// What kind of piece a strike met, as the player tells them apart: "roof" (a plank lying flat, struck from above),
+/// "plank end" (a flat plank struck on its end or underside), "post" (standing: at least twice as tall as wide),
+/// "hollow box", or "block" (everything else: squares, circles, triangles).
+std::string strikePiece(const Entity& block, double contactY);
 
 /// angleStepDeg: 2 for the full grid, larger for a quick sample.
 HitTable measureHits(const std::vector<LevelDef>& levels, int angleStepDeg);
