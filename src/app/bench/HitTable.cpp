@@ -174,7 +174,10 @@ std::string hitTableMarkdown(const HitTable& table)
        << "| bird | material | piece | strikes | break within 0.5 s |\n|---|---|---|---:|---:|\n";
     for (const auto& [key, counts] : table.byPiece)
     {
-        const auto& [bird, material, piece] = key;
+        // Named copies, not structured bindings: clang 14 (the sanitizer build) cannot capture those in a lambda.
+        const std::string& bird = std::get<0>(key);
+        const std::string& material = std::get<1>(key);
+        const std::string& piece = std::get<2>(key);
         const bool targeted =
             std::any_of(std::begin(kTargets), std::end(kTargets),
                         [&](const HitTarget& t) { return bird == t.bird && material == t.material && t.atLeast; });
