@@ -31,6 +31,8 @@ struct SettledState
     {
         std::int32_t bodyA = 0; ///< positions in the body list
         std::int32_t bodyB = 0;
+        std::int32_t fixtureA = 0; ///< positions in the body's fixture list (a hollow box has four, a hill several)
+        std::int32_t fixtureB = 0;
         std::int32_t childA = 0; ///< child shapes (edges of a chain)
         std::int32_t childB = 0;
         b2Manifold manifold{};

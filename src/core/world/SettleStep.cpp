@@ -17,7 +17,7 @@ namespace
 {
 
 /// Version of what a key covers and a state holds; a change to either makes old keys miss.
-constexpr std::uint32_t kSettleFormat = 1;
+constexpr std::uint32_t kSettleFormat = 2;
 
 void addShape(SettleKey& key, const b2Shape& shape)
 {
@@ -53,6 +53,16 @@ void addShape(SettleKey& key, const b2Shape& shape)
     default:
         break;
     }
+}
+
+/// A fixture's place in its body's fixture list: with the body's place, what tells apart the contacts of one pair of
+/// bodies with several fixtures (a block on a hollow box's walls, or on a hill's pieces).
+std::int32_t fixturePosition(const b2Fixture* fixture)
+{
+    std::int32_t index = 0;
+    for (const b2Fixture* f = fixture->GetBody()->GetFixtureList(); f != nullptr && f != fixture; f = f->GetNext())
+        ++index;
+    return index;
 }
 
 std::unordered_map<const b2Body*, std::int32_t> bodyPositions(b2World& world)
@@ -130,6 +140,8 @@ std::uint64_t SettleStep::key() const
     for (const b2Contact* contact = world.GetContactList(); contact != nullptr; contact = contact->GetNext())
         key.add(positions.at(contact->GetFixtureA()->GetBody()))
             .add(positions.at(contact->GetFixtureB()->GetBody()))
+            .add(fixturePosition(contact->GetFixtureA()))
+            .add(fixturePosition(contact->GetFixtureB()))
             .add(contact->GetChildIndexA())
             .add(contact->GetChildIndexB())
             .add(contact->IsTouching());
@@ -150,8 +162,12 @@ std::shared_ptr<const SettledState> SettleStep::capture() const
     for (const b2Contact* contact = world.GetContactList(); contact != nullptr; contact = contact->GetNext())
     {
         SettledState::Contact c{positions.at(contact->GetFixtureA()->GetBody()),
-                                positions.at(contact->GetFixtureB()->GetBody()), contact->GetChildIndexA(),
-                                contact->GetChildIndexB(), *contact->GetManifold()};
+                                positions.at(contact->GetFixtureB()->GetBody()),
+                                fixturePosition(contact->GetFixtureA()),
+                                fixturePosition(contact->GetFixtureB()),
+                                contact->GetChildIndexA(),
+                                contact->GetChildIndexB(),
+                                *contact->GetManifold()};
         for (int p = c.manifold.pointCount; p < b2_maxManifoldPoints; ++p)
             c.manifold.points[p] = b2ManifoldPoint{}; // Box2D leaves unused points unset
         state->contacts.push_back(c);
@@ -193,16 +209,20 @@ bool SettleStep::restore(const SettledState& state)
         body->SetAngularVelocity(state.bodies[i].spin);
         body->SetAwake(true); // also restarts its sleep timer
     }
-    // Each contact takes the manifold it had, with the impulses the next step warm-starts from.
-    std::map<std::array<std::int32_t, 4>, const b2Manifold*> manifolds;
+    // Each contact takes the manifold it had, with the impulses the next step warm-starts from. Two bodies may touch
+    // through several fixtures: each of those contacts is its own (keyed by the body pair alone, a hollow box's
+    // bottom wall once took the empty manifold of its side wall, lost its warm start and sank a few millimetres).
+    std::map<std::array<std::int32_t, 6>, const b2Manifold*> manifolds;
     for (const SettledState::Contact& c : state.contacts)
-        manifolds.emplace(std::array<std::int32_t, 4>{c.bodyA, c.bodyB, c.childA, c.childB}, &c.manifold);
+        manifolds.emplace(std::array<std::int32_t, 6>{c.bodyA, c.bodyB, c.fixtureA, c.fixtureB, c.childA, c.childB},
+                          &c.manifold);
     const auto positions = bodyPositions(world);
     for (b2Contact* contact = world.GetContactList(); contact != nullptr; contact = contact->GetNext())
     {
-        const auto found = manifolds.find({positions.at(contact->GetFixtureA()->GetBody()),
-                                           positions.at(contact->GetFixtureB()->GetBody()), contact->GetChildIndexA(),
-                                           contact->GetChildIndexB()});
+        const auto found = manifolds.find(
+            {positions.at(contact->GetFixtureA()->GetBody()), positions.at(contact->GetFixtureB()->GetBody()),
+             fixturePosition(contact->GetFixtureA()), fixturePosition(contact->GetFixtureB()),
+             contact->GetChildIndexA(), contact->GetChildIndexB()});
         if (found != manifolds.end())
             *contact->GetManifold() = *found->second;
     }
