@@ -280,10 +280,11 @@ TEST(CameraFollow, TheBirdStaysInViewForEveryReferenceShotOfEveryCampaignLevelAn
         EXPECT_EQ(rig.view().centreM, rest.centreM) << "at rest: no more creeping";
     }
     EXPECT_EQ(shots, 50) << "every campaign level has a reference shot";
-    // At rest when the next bird is ready, on all but the shot whose world stops at once (5-4, on the Moon: a falling
-    // block lands 0.25 s after the camera set off).
+    // At rest when the next bird is ready, on all but the shots whose world stops at once (5-4, on the Moon: a falling
+    // block lands 0.25 s after the camera set off; 1-7 since wood takes 50 N s: all is calm 1.48 s after the contact,
+    // less than kReturnS after the last piece slowed down).
     EXPECT_GE(withNextBird, 30);
-    EXPECT_LE(lateReturns, 1) << "of " << withNextBird << " shots with a next bird";
+    EXPECT_LE(lateReturns, 2) << "of " << withNextBird << " shots with a next bird";
     // Following is really tested: a fixed camera would lose the bird on some of these shots.
     EXPECT_GT(outsideHomeView, 0);
     EXPECT_GT(impactSteps, 50 * 30);

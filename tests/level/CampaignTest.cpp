@@ -42,10 +42,10 @@ TEST(Campaign, ALevelsNumberIsItsPlaceAndItsProgressKeyIsItsId)
         EXPECT_EQ(level.key, level.level.id);
         EXPECT_EQ(campaign.indexOfNumber(level.number), i);
     }
-    // Episode 2 starts 2-5, 2-4, 2-6: the third tile is 2-6 Boulder Hill, whose id is 2-6; the seventh, numbered
-    // 2-7, is Dominoes, saved as 2-1.
+    // Episode 2 starts 2-5, 2-4, 2-6: the third tile is 2-6 Boulder Hill, whose id is 2-6; the eighth, numbered
+    // 2-8, is Dominoes, saved as 2-1.
     EXPECT_EQ(campaign.levels[*campaign.indexOfNumber("2-3")].key, "2-6");
-    const std::size_t dominoes = *campaign.indexOfNumber("2-7");
+    const std::size_t dominoes = *campaign.indexOfNumber("2-8");
     EXPECT_EQ(campaign.levels[dominoes].level.title, "Dominoes");
     EXPECT_EQ(campaign.levels[dominoes].key, "2-1");
     EXPECT_FALSE(campaign.indexOfNumber("2-9").has_value());

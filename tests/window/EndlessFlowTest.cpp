@@ -26,7 +26,7 @@ protected:
 };
 
 /// The solver's win of the first shipped castle (levels/endless/101-0.3.json, `abalike solve`).
-const std::string kWinBridge101 = " --shot 75.0,27.0 --shot 20.0,21.21";
+const std::string kWinBridge101 = " --shot 70.0,24.0 --shot 10.0,27.13";
 
 TEST_F(EndlessFlow, TheTitlesEntryOpensAShippedCastleShownByItsSeed)
 {

@@ -322,17 +322,17 @@ TEST_F(ScreenFlow, PlayPackOpensThePacksFirstUnfinishedLevelAndInstalledPacksFol
 
 TEST_F(ScreenFlow, PlayLevelOpensACampaignLevelByItsNumberEvenLocked)
 {
-    // 3-2 is the second tile of episode 3 (Breathing Wind, saved under its id 3-3), and its title says 3-2.
-    const GameRun run = play("--level 3-2 --frames 3");
+    // 3-4 is the fourth tile of episode 3 (Gusts, saved under its id 3-5), and its title says 3-4.
+    const GameRun run = play("--level 3-4 --frames 3");
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    EXPECT_EQ(run.values("level", "number"), (std::vector<std::string>{"3-2"}));
-    EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"3-3"}));
-    EXPECT_EQ(run.values("level", "campaign_index"), (std::vector<std::string>{"17"}));
+    EXPECT_EQ(run.values("level", "number"), (std::vector<std::string>{"3-4"}));
+    EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"3-5"}));
+    EXPECT_EQ(run.values("level", "campaign_index"), (std::vector<std::string>{"19"}));
     bool titled = false;
     for (const nlohmann::json& line : run.trace)
         if (line.value("event", "") == "texts")
             for (const nlohmann::json& text : line["shown"])
-                titled = titled || text.get<std::string>() == "Level 3-2: Breathing Wind";
+                titled = titled || text.get<std::string>() == "Level 3-4: Gusts";
     EXPECT_TRUE(titled);
 }
 
