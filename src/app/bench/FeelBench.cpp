@@ -5,6 +5,7 @@
 #include "bench/BirdRoles.hpp"
 #include "bench/HitTable.hpp"
 #include "bench/ReportTable.hpp"
+#include "bench/TowerTable.hpp"
 #include "render/TextFormat.hpp"
 #include "shell/DataPaths.hpp"
 
@@ -348,6 +349,13 @@ int runFeelBench(const BenchOptions& options)
           "bird: a strike is the bird's first contact when it is a block, a break that block destroyed within 0.5 s. "
        << hits.shots << " shots. Targets of issue 57 (red into stone is a counter-target: nothing simply softened).\n\n"
        << hitTableMarkdown(hits);
+
+    const TowerTable towers = measureTowers(levels, options.quick ? 20 : 2);
+    md << "\n## Towers\n\nThe same levels and launches, the level's first bird, each shot played until the next bird "
+          "is ready: a shot brings a tower down when a block that stood at least 2 m above its tower's base (blocks "
+          "touching when the level starts) falls at least 1 m; the pigs within 1 m of that tower's footprint and below "
+          "its top are under or beside it. Target of issue 57: at least 70 % of them defeated.\n\n"
+       << towerTableMarkdown(towers);
 
     md << "\n## Break-through\n\nFirst contacts with a wood or ice block whose impulse reached the block's remaining "
           "strength (it broke in that step), and what the bird's horizontal velocity did across that step:\n\n"
