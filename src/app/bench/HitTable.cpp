@@ -1,5 +1,6 @@
 #include "bench/HitTable.hpp"
 
+#include "bench/ReportTable.hpp"
 #include "render/TextFormat.hpp"
 
 #include <abalike/game/GameSession.hpp>
@@ -87,11 +88,6 @@ std::optional<Strike> playStrike(const LevelDef& level, double angleDeg, double 
     return strike;
 }
 
-std::string percent(int part, int whole)
-{
-    return whole > 0 ? formatFixed(100.0 * part / whole, 0) + " %" : "-";
-}
-
 } // namespace
 
 std::string strikePiece(const Entity& block, double contactY)
@@ -164,7 +160,7 @@ std::string hitTableMarkdown(const HitTable& table)
                          (met ? "met" : "missed") + "**";
             }
         md << "| " << key.first << " | " << key.second << " | " << counts.strikes << " | "
-           << percent(counts.breaks, counts.strikes) << " | " << percent(counts.keepsGoing, counts.breaks) << " | "
+           << percentOf(counts.breaks, counts.strikes) << " | " << percentOf(counts.keepsGoing, counts.breaks) << " | "
            << target << " |\n";
     }
     // The player's complaint: posts, plank ends and hollow boxes bounce, only roofs give way. The targets' rows by
@@ -183,7 +179,7 @@ std::string hitTableMarkdown(const HitTable& table)
                         [&](const HitTarget& t) { return bird == t.bird && material == t.material && t.atLeast; });
         if (targeted && bird != kBlastRow)
             md << "| " << bird << " | " << material << " | " << piece << " | " << counts.strikes << " | "
-               << percent(counts.breaks, counts.strikes) << " |\n";
+               << percentOf(counts.breaks, counts.strikes) << " |\n";
     }
     return md.str();
 }

@@ -1,5 +1,7 @@
 #include "bench/ReportTable.hpp"
 
+#include "render/TextFormat.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -98,6 +100,11 @@ std::string ReportTable::csv() const
     for (const auto& row : m_rows)
         print(row);
     return out.str();
+}
+
+std::string percentOf(int part, int whole)
+{
+    return whole > 0 ? formatFixed(100.0 * part / whole, 0) + " %" : "-";
 }
 
 std::string formatSignificant(double value, int digits)

@@ -24,6 +24,9 @@ private:
     std::vector<std::vector<std::string>> m_rows;
 };
 
+/// "42 %": part of whole in whole percent, "-" when whole is 0 (the hit and tower tables' shares).
+std::string percentOf(int part, int whole);
+
 /// A number with the given significant digits, in exponent form only when it is very large or small.
 std::string formatSignificant(double value, int digits = 3);
 

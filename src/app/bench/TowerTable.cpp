@@ -1,5 +1,6 @@
 #include "bench/TowerTable.hpp"
 
+#include "bench/ReportTable.hpp"
 #include "render/TextFormat.hpp"
 
 #include <abalike/game/GameSession.hpp>
@@ -102,8 +103,18 @@ TowerCounts playShot(const LevelDef& level, double angleDeg, double share)
     std::vector<Box> towers;
     const std::vector<StartBlock> blocks = startBlocks(session, towers);
     std::vector<double> lowest(blocks.size());
+    std::vector<int> slotOf(level.blocks.size(), -1); // the level's block index -> its place in blocks
     for (std::size_t i = 0; i < blocks.size(); ++i)
+    {
         lowest[i] = blocks[i].box.bottom;
+        if (blocks[i].index >= 0 && static_cast<std::size_t>(blocks[i].index) < slotOf.size())
+            slotOf[static_cast<std::size_t>(blocks[i].index)] = static_cast<int>(i);
+    }
+    const auto slot = [&slotOf](int index)
+    {
+        return index >= 0 && static_cast<std::size_t>(index) < slotOf.size() ? slotOf[static_cast<std::size_t>(index)]
+                                                                             : -1;
+    };
     std::vector<std::pair<int, b2Vec2>> pigs; // level index, centre when the level starts
     for (const Entity& e : session.world().entities())
         if (e.kind == EntityKind::Pig && e.alive && e.body != nullptr)
@@ -114,20 +125,18 @@ TowerCounts playShot(const LevelDef& level, double angleDeg, double share)
     {
         session.step();
         for (const Entity& e : session.world().entities())
-            if (e.kind == EntityKind::Block && e.alive && e.body != nullptr)
-                for (std::size_t i = 0; i < blocks.size(); ++i)
-                    if (blocks[i].index == e.defIndex)
-                        lowest[i] = std::min(lowest[i], boxOf(*e.body).bottom);
+            if (const int i = slot(e.defIndex); e.kind == EntityKind::Block && e.alive && e.body != nullptr && i >= 0)
+                lowest[static_cast<std::size_t>(i)] =
+                    std::min(lowest[static_cast<std::size_t>(i)], boxOf(*e.body).bottom);
     }
     // A block that broke counts where it broke (its centre then, less half its height at the start).
     for (const DestroyedEvent& d : session.destroyed())
-        if (d.kind == EntityKind::Block)
-            for (std::size_t i = 0; i < blocks.size(); ++i)
-                if (blocks[i].index == d.index)
-                {
-                    const Box& b = blocks[i].box;
-                    lowest[i] = std::min(lowest[i], d.y - 0.5 * (b.top - b.bottom));
-                }
+        if (const int i = slot(d.index); d.kind == EntityKind::Block && i >= 0)
+        {
+            const Box& b = blocks[static_cast<std::size_t>(i)].box;
+            double& low = lowest[static_cast<std::size_t>(i)];
+            low = std::min(low, d.y - 0.5 * (b.top - b.bottom));
+        }
 
     std::set<int> down;
     for (std::size_t i = 0; i < blocks.size(); ++i)
@@ -169,11 +178,6 @@ void add(TowerCounts& into, const TowerCounts& shot)
     into.pigsDefeated += shot.pigsDefeated;
 }
 
-std::string percent(int part, int whole)
-{
-    return whole > 0 ? formatFixed(100.0 * part / whole, 0) + " %" : "-";
-}
-
 } // namespace
 
 TowerTable measureTowers(const std::vector<LevelDef>& levels, int angleStepDeg)
@@ -203,7 +207,7 @@ std::string towerTableMarkdown(const TowerTable& table)
     {
         const bool met = c.pigsNear > 0 && c.pigsDefeated >= kTarget * c.pigsNear;
         md << "| " << name << " | " << c.shots << " | " << c.towersDown << " | " << c.pigsNear << " | "
-           << percent(c.pigsDefeated, c.pigsNear) << " | "
+           << percentOf(c.pigsDefeated, c.pigsNear) << " | "
            << (withTarget ? ">= " + formatFixed(100.0 * kTarget, 0) + " %: **" + (met ? "met" : "missed") + "**"
                           : std::string("-"))
            << " |\n";
