@@ -2,7 +2,7 @@
 # campaign levels or the generator over seeds, three fifths of the core's test time, get the label "slow" beside
 # "core". A change to the catalog does not reach them (campaign levels name their birds; the generator its own), so
 # docs/extending.md's loop and its drill run `ctest -L core -LE slow`; every full run (tools/test, CI) runs them.
-foreach(level IN ITEMS 1-5-from-the-cliff 4-2-hard-hats 4-3-cold-feet)
+foreach(level IN ITEMS 1-8-from-the-cliff 4-7-hard-hats 4-8-cold-feet)
     set_tests_properties("Campaign/WhiteBirdLevels.TheEggIsTheSolversToolAndNothingElseWins/\"${level}\""
                          PROPERTIES LABELS "core;slow")
 endforeach()

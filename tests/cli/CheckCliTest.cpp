@@ -176,7 +176,7 @@ INSTANTIATE_TEST_SUITE_P(Files, CheckCliMalformed,
 
 TEST(CheckCli, AClaimThatDoesNotHoldFailsTheLevelAtTheClaim)
 {
-    // The old 3-4 hint: "Compensate: more power, a steeper angle." In a 6 m/s headwind the farthest shot is
+    // The old 3-5 hint: "Compensate: more power, a steeper angle." In a 6 m/s headwind the farthest shot is
     // lower than in still air, so its claim is false; the concept's claim holds and is not reported.
     const std::string file = sourcePath("tests/level/claims/headwind-aim-higher.json");
     const RunResult r = runAbalike("check " + file);
@@ -191,7 +191,7 @@ TEST(CheckCli, AClaimThatDoesNotHoldFailsTheLevelAtTheClaim)
 
 TEST(CheckCli, AnOutcomeClaimThatDoesNotHoldFailsAtItsOutcome)
 {
-    // 2-8's towers: the first, hit high at 16 degrees and 28 m/s, lands on the pig of the second (its claim holds, in
+    // 2-6's towers: the first, hit high at 16 degrees and 28 m/s, lands on the pig of the second (its claim holds, in
     // at least 7 of the 9 aims around the shot); no aim makes it reach the pig of the last.
     const std::string file = sourcePath("tests/level/claims/tower-onto-the-last.json");
     const RunResult r = runAbalike("check " + file);

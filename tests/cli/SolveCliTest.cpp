@@ -30,7 +30,7 @@ std::string simulateArgs(const std::string& level, const nlohmann::json& shots)
 
 TEST(SolveCli, SolutionReplaysToTheSameScoreWhateverTheThreadCount)
 {
-    const std::string level = sourcePath("levels/1-4-high-and-low.json");
+    const std::string level = sourcePath("levels/1-6-high-and-low.json");
     // A short model player (3 runs; the default 40 is for measuring, not for tests).
     const RunResult two = runAbalike("solve " + level + " --json --threads 2 --player-runs 3");
     ASSERT_EQ(two.exitCode, 0) << two.err;

@@ -215,7 +215,7 @@ TEST(SimulateTeachCli, EnergyAndImpactPerShot)
 
 TEST(SimulateTeachCli, EnergyIsNullAfterAnAbilityBeforeContact)
 {
-    const auto doc = jsonOf("simulate " + sourcePath("levels/4-2-hard-hats.json") + " --shot 35,20,0.3 --json");
+    const auto doc = jsonOf("simulate " + sourcePath("levels/4-7-hard-hats.json") + " --shot 35,20,0.3 --json");
     EXPECT_TRUE(doc["shots"][0]["energy"].is_null());
 }
 

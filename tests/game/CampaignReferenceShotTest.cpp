@@ -10,8 +10,8 @@ namespace
 {
 
 /// Levels whose first bird cannot defeat a pig with any first shot of tools/reference-shots' grid (angles -20 to 70
-/// degrees by 2.5, 50 to 100 % of its top speed by 10 %): none since one band per world (2-5's red bird was the slow
-/// half of its lesson). (5-1's first shot can since a breaking block hands its momentum on, 5-6's since a breaking
+/// degrees by 2.5, 50 to 100 % of its top speed by 10 %): none since one band per world (2-1's red bird was the slow
+/// half of its lesson). (5-5's first shot can since a breaking block hands its momentum on, 5-3's since a breaking
 /// block yields to what strikes it.)
 const std::set<std::string> kNoPigOnTheFirstShot = {};
 

@@ -49,7 +49,7 @@ TEST(ModelPlayer, AMeasurementInPartsIsTheMeasurementOfAllItsRuns)
 
 TEST(ModelPlayer, TheSameSeedGivesTheSameDifficultyOnAnyNumberOfThreads)
 {
-    const LevelDef l = level("2-1-dominoes.json");
+    const LevelDef l = level("2-8-dominoes.json");
     ModelPlayerOptions options;
     options.runs = 6;
     options.threads = 1;

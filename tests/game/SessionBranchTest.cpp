@@ -84,9 +84,9 @@ TEST(ProcessCopy, CopiesWorkEveryItemOnceAndReportEach)
 
 TEST(SessionBranch, ATrialOnACopyIsTheReplayBitForBit)
 {
-    // 4-3 after the solver's first two shots (a moving, half-broken structure): the first two trials of a branch
+    // 4-8 after the solver's first two shots (a moving, half-broken structure): the first two trials of a branch
     // are played on copies, the next two again from the start; all four equal simulateShots.
-    const LevelDef l = level("4-3-cold-feet.json");
+    const LevelDef l = level("4-8-cold-feet.json");
     const std::vector<ScriptedShot> prefix{{5.6, 28.5}, {10.0, 27.0}};
     const SessionBranch branch(l, prefix, Catalog::builtin());
     const ProcessCopyCounts before = processCopyCounts();
@@ -115,7 +115,7 @@ TEST(SessionBranch, ARefusedShotIsALaunchErrorOnACopyToo)
 TEST(SessionBranch, SearchesGiveTheSameAnswerWithAndWithoutCopies)
 {
     CopiesAllowed restore;
-    const LevelDef l = level("2-1-dominoes.json");
+    const LevelDef l = level("2-8-dominoes.json");
     ModelPlayerOptions options;
     options.runs = 3;
     options.threads = 2;

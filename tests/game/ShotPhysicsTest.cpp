@@ -29,7 +29,7 @@ LevelDef zeroGravityCube()
 /// The test: on a level with drag and wind, launch energy = kinetic + potential + drag loss at first contact.
 TEST(ShotEnergy, BalanceClosesOnADragAndWindLevel)
 {
-    for (const char* name : {"3-1-tailwind.json", "3-4-headwind.json", "3-5-gusts.json", "3-3-breathing-wind.json"})
+    for (const char* name : {"3-1-tailwind.json", "3-5-headwind.json", "3-4-gusts.json", "3-3-breathing-wind.json"})
     {
         const LevelDef level = campaignLevel(name);
         const auto session = simulateShots(level, {{level.referenceShot->angleDeg, level.referenceShot->speedMps}});
@@ -52,7 +52,7 @@ TEST(ShotEnergy, BalanceClosesOnADragAndWindLevel)
 
 TEST(ShotEnergy, NoneWhenAnAbilityFiredBeforeContact)
 {
-    const LevelDef level = campaignLevel("4-2-hard-hats.json"); // yellow birds: boost
+    const LevelDef level = campaignLevel("4-7-hard-hats.json"); // yellow birds: boost
     const auto session = simulateShots(level, {{35.0, 20.0, 0.3}});
     const ShotRecord& shot = session->shots().at(0);
     ASSERT_TRUE(shot.ability);
@@ -116,7 +116,7 @@ TEST(FirstImpact, OnAPigNamesItsIndex)
 
 TEST(ShotFeedback, SentencesCarryTheShotsNumbers)
 {
-    const LevelDef windy = campaignLevel("3-4-headwind.json");
+    const LevelDef windy = campaignLevel("3-5-headwind.json");
     const auto session = simulateShots(windy, {{windy.referenceShot->angleDeg, windy.referenceShot->speedMps}});
     const std::vector<std::string> lines = shotFeedback(windy, Catalog::builtin(), session->shots().at(0));
     ASSERT_EQ(lines.size(), 2u);
@@ -124,7 +124,7 @@ TEST(ShotFeedback, SentencesCarryTheShotsNumbers)
     EXPECT_NE(lines[1].find("wind moved the landing point"), std::string::npos) << lines[1];
     EXPECT_NE(lines[1].find("back"), std::string::npos) << lines[1]; // a headwind
 
-    const LevelDef vacuum = campaignLevel("5-4-the-moon.json");
+    const LevelDef vacuum = campaignLevel("5-1-the-moon.json");
     const auto moon = simulateShots(vacuum, {{40.0, 9.0}});
     const std::vector<std::string> moonLines = shotFeedback(vacuum, Catalog::builtin(), moon->shots().at(0));
     ASSERT_FALSE(moonLines.empty());
@@ -147,7 +147,7 @@ TEST(ShotFeedback, EveryNumberOfTheVacuumSentenceIsTheClosedForm)
     // v cos a (v sin a + sqrt(v^2 sin^2 a + 2 g h)) / g; the best angle atan(v / sqrt(v^2 + 2 g h)) with range
     // v sqrt(v^2 + 2 g h) / g; from the ground, 45 degrees and v^2 / g. The sentence must state both heights, since
     // the lessons' v^2 sin 2a / g holds only back at the launch height.
-    const LevelDef moonLevel = campaignLevel("5-4-the-moon.json");
+    const LevelDef moonLevel = campaignLevel("5-1-the-moon.json");
     const double v = 9.0;
     const double a = 40.0 * M_PI / 180.0;
     const double g = 1.62;

@@ -43,7 +43,7 @@ TEST_P(WhiteBirdLevels, TheEggIsTheSolversToolAndNothingElseWins)
 }
 
 INSTANTIATE_TEST_SUITE_P(Campaign, WhiteBirdLevels,
-                         testing::Values("1-5-from-the-cliff", "4-2-hard-hats", "4-3-cold-feet"));
+                         testing::Values("1-8-from-the-cliff", "4-7-hard-hats", "4-8-cold-feet"));
 
 } // namespace
 } // namespace abalike

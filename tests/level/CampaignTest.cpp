@@ -1,5 +1,6 @@
 #include <abalike/level/Campaign.hpp>
 #include <abalike/save/Progress.hpp>
+#include <abalike/save/ProgressNumbering.hpp>
 #include <abalike/world/Catalog.hpp>
 #include <gtest/gtest.h>
 
@@ -19,18 +20,20 @@ TEST(Campaign, LoadsEveryLevelInPlayOrder)
     ASSERT_EQ(campaign.levels.size(), 50u);
     // Ordered by the model player's win rate inside each episode (tools/balance-campaign).
     EXPECT_EQ(campaign.levels.front().level.id, "1-1"); // where the tutorial leads
-    EXPECT_EQ(campaign.levels.back().level.id, "6-6");
+    EXPECT_EQ(campaign.levels.back().level.id, "6-10");
+    EXPECT_EQ(campaign.levels.back().level.title, "Island Fortress");
     EXPECT_EQ(campaign.levels[7].episode, 0u);
     EXPECT_EQ(campaign.levels[8].episode, 1u);
     EXPECT_EQ(campaign.levelIds()[16], "3-1");
-    EXPECT_EQ(campaign.indexOf("4-2"), 30u); // episode 4 begins at 24: 4-1, 4-4, 4-5, 4-7, 4-6, 4-8, 4-2
+    EXPECT_EQ(campaign.indexOf("4-7"), 30u); // episode 4 begins at 24
     EXPECT_FALSE(campaign.indexOf("9-9").has_value());
 }
 
-TEST(Campaign, ALevelsNumberIsItsPlaceAndItsProgressKeyIsItsId)
+TEST(Campaign, ALevelsIdIsItsNumberItsPlaceAndItsFileName)
 {
-    // The balance orders each episode by difficulty, so the ids no longer count up: the number a player sees (tile,
-    // title, play --level) is the level's place in its episode; progress stays under the id, which never moves.
+    // The number a player sees (tile, title, play --level) is the level's place in its episode; its id, the key its
+    // progress is saved under, and its file's name say the same (issue 58: the level a student names is the level
+    // the teacher opens). The balance reorders episodes; tools/renumber-levels renames what moved.
     const Campaign campaign =
         loadCampaignLevels(std::string(ABALIKE_SOURCE_DIR) + "/levels/campaign.json", Catalog::builtin());
     std::size_t place = 0;
@@ -38,18 +41,44 @@ TEST(Campaign, ALevelsNumberIsItsPlaceAndItsProgressKeyIsItsId)
     {
         const CampaignLevel& level = campaign.levels[i];
         place = i > 0 && campaign.levels[i - 1].episode == level.episode ? place + 1 : 1;
-        EXPECT_EQ(level.number, campaign.episodes[level.episode].id + "-" + std::to_string(place)) << level.level.id;
-        EXPECT_EQ(level.key, level.level.id);
+        const std::string number = campaign.episodes[level.episode].id + "-" + std::to_string(place);
+        EXPECT_EQ(level.number, number) << level.path;
+        EXPECT_EQ(level.level.id, number) << level.path << " (run tools/renumber-levels)";
+        EXPECT_EQ(level.key, number);
+        EXPECT_TRUE(std::filesystem::path(level.path).filename().string().starts_with(number + "-")) << level.path;
         EXPECT_EQ(campaign.indexOfNumber(level.number), i);
     }
-    // Episode 2 starts 2-5, 2-4, 2-6: the third tile is 2-6 Boulder Hill, whose id is 2-6; the eighth, numbered
-    // 2-8, is Dominoes, saved as 2-1.
-    EXPECT_EQ(campaign.levels[*campaign.indexOfNumber("2-3")].key, "2-6");
-    const std::size_t dominoes = *campaign.indexOfNumber("2-8");
-    EXPECT_EQ(campaign.levels[dominoes].level.title, "Dominoes");
-    EXPECT_EQ(campaign.levels[dominoes].key, "2-1");
+    EXPECT_EQ(campaign.levels[*campaign.indexOfNumber("2-3")].level.title, "Boulder Hill");
+    EXPECT_EQ(campaign.levels[*campaign.indexOfNumber("2-8")].level.title, "Dominoes");
     EXPECT_FALSE(campaign.indexOfNumber("2-9").has_value());
     EXPECT_EQ(campaign.levelArguments().front(), "1-1");
+}
+
+TEST(Campaign, StarsSavedBeforeTheRenumberingStayWithTheirLevels)
+{
+    // progress.json as the game wrote it before the levels were renumbered (format 2, numbering 1): Dominoes won
+    // as 2-1, Pick the Bird as 2-3, Boulder Hill open as 2-6.
+    Progress progress = parseProgress(R"({"format": 2,
+      "levels": {"2-1": {"best_score": 41000, "stars": 3}, "2-3": {"best_score": 15000, "stars": 1}},
+      "unlocked": ["1-1", "2-1", "2-3", "2-6"]})");
+    const Campaign campaign =
+        loadCampaignLevels(std::string(ABALIKE_SOURCE_DIR) + "/levels/campaign.json", Catalog::builtin());
+    ASSERT_TRUE(renumberProgress(progress, campaign));
+    const auto recordOf = [&](const std::string& title)
+    {
+        for (const CampaignLevel& level : campaign.levels)
+            if (level.level.title == title)
+                return progress.levels.at(level.key);
+        return LevelRecord{-1, -1};
+    };
+    EXPECT_EQ(recordOf("Dominoes"), (LevelRecord{41000, 3}));
+    EXPECT_EQ(recordOf("Pick the Bird"), (LevelRecord{15000, 1}));
+    EXPECT_EQ(progress.levels.size(), 2u);
+    EXPECT_TRUE(progress.isUnlocked(campaign.levels[*campaign.indexOfNumber("2-3")].key)) << "Boulder Hill";
+    EXPECT_EQ(progress.numbering.at(""), campaign.numberings.at("").current());
+    const Progress once = progress;
+    EXPECT_FALSE(renumberProgress(progress, campaign)) << "loading it again renames nothing";
+    EXPECT_EQ(progress, once);
 }
 
 TEST(Campaign, ReportsTheProblemsOfEveryBrokenLevel)
@@ -121,7 +150,8 @@ TEST(Campaign, EveryProblemOfTheManifestAtOnceAtItsOwnLines)
 
 TEST(Campaign, ASaveOfTheFirstTwentyFiveLevelsKeepsItsStarsAndOpensTheNewLevelsInOrder)
 {
-    // A save written by the 25-level campaign: all of episode 1 won, 2-4 won, 2-2 lost, 2-3 unlocked.
+    // A save written by the 25-level campaign, before the renumbering: all of episode 1 won, 2-4 won, 2-2 lost, 2-3
+    // unlocked.
     Progress progress = parseProgress(R"({"format": 1,
       "levels": {"1-1": {"best_score": 30000, "stars": 2}, "1-2": {"best_score": 26000, "stars": 3},
                  "1-3": {"best_score": 12000, "stars": 1}, "1-4": {"best_score": 17000, "stars": 3},
@@ -129,22 +159,24 @@ TEST(Campaign, ASaveOfTheFirstTwentyFiveLevelsKeepsItsStarsAndOpensTheNewLevelsI
                  "2-2": {"best_score": 4000, "stars": 0}},
       "unlocked": ["1-1", "1-2", "1-3", "1-4", "1-5", "2-4", "2-2", "2-3"]})");
     const Progress saved = progress;
-    const std::vector<std::string> ids =
-        loadCampaignLevels(std::string(ABALIKE_SOURCE_DIR) + "/levels/campaign.json", Catalog::builtin()).levelIds();
-    unlockCampaign(progress, ids);
-
-    EXPECT_EQ(progress.levels, saved.levels) << "every star and best score stays";
-    // ... with the level it was won on, whatever number that level now shows: 2-4 Rolling Ball is tile 2-2.
     const Campaign campaign =
         loadCampaignLevels(std::string(ABALIKE_SOURCE_DIR) + "/levels/campaign.json", Catalog::builtin());
-    EXPECT_EQ(progress.levels.at(campaign.levels[*campaign.indexOfNumber("2-2")].key).bestScore, 20000);
-    for (const std::string& id : saved.unlocked)
+    const std::vector<std::string> ids = campaign.levelIds();
+    renumberProgress(progress, campaign);
+    Progress renamed = saved;
+    renumberProgress(renamed, campaign);
+    unlockCampaign(progress, ids);
+
+    EXPECT_EQ(progress.levels, renamed.levels) << "every star and best score stays";
+    // ... with the level it was won on: 2-4 Rolling Ball is 2-2 since the renumbering.
+    EXPECT_EQ(progress.levels.at("2-2").bestScore, 20000);
+    for (const std::string& id : renamed.unlocked)
         EXPECT_TRUE(progress.isUnlocked(id)) << id << " stays open";
     for (std::size_t i = 1; i < ids.size(); ++i)
     {
         const auto previous = progress.levels.find(ids[i - 1]);
         const bool previousWon = previous != progress.levels.end() && previous->second.stars >= 1;
-        if (!saved.isUnlocked(ids[i]))
+        if (!renamed.isUnlocked(ids[i]))
         {
             EXPECT_EQ(progress.isUnlocked(ids[i]), previousWon)
                 << ids[i] << " opens exactly when the level before it (" << ids[i - 1] << ") is won";
@@ -153,7 +185,7 @@ TEST(Campaign, ASaveOfTheFirstTwentyFiveLevelsKeepsItsStarsAndOpensTheNewLevelsI
     std::size_t opened = 0;
     for (const std::string& id : ids)
         opened += progress.isUnlocked(id) ? 1 : 0;
-    EXPECT_GT(opened, saved.unlocked.size()) << "new levels after won ones open";
+    EXPECT_GT(opened, renamed.unlocked.size()) << "new levels after won ones open";
     EXPECT_LT(opened, ids.size()) << "levels after unwon ones stay closed";
 }
 

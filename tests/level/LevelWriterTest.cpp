@@ -179,7 +179,7 @@ TEST(LevelWriter, SchemaReferenceIsRelativeToWhereTheFileIsSaved)
 TEST(LevelWriter, SaveWritesTheFileAtomicallyAndItLoads)
 {
     test::TempDir dir;
-    const LevelDef level = loadLevel((kLevels / "3-5-gusts.json").string(), Catalog::builtin());
+    const LevelDef level = loadLevel((kLevels / "3-4-gusts.json").string(), Catalog::builtin());
     const auto path = dir / "copy.json";
     saveLevel(level, path, kSchema);
     const std::string text = readText(path);

@@ -95,7 +95,7 @@ TEST(Progress, MissingMembersAreEmpty)
     EXPECT_EQ(parseProgress(R"({"format": 2, "endless": {}})"), Progress{});
 }
 
-TEST(Progress, AFormatOneFileKeepsItsStarsAndIsWrittenBackAsFormatTwo)
+TEST(Progress, AFormatOneFileKeepsItsStarsAndIsWrittenBackAsFormatThree)
 {
     // progress.json as the versions before the endless mode wrote it.
     const Progress old = parseProgress(R"({
@@ -108,7 +108,7 @@ TEST(Progress, AFormatOneFileKeepsItsStarsAndIsWrittenBackAsFormatTwo)
     EXPECT_EQ(old.unlocked, (std::set<std::string>{"1-1", "1-2", "4-2", "4-3"}));
     EXPECT_EQ(old.endless, EndlessRecord{});
     const std::string written = progressToJson(old);
-    EXPECT_NE(written.find("\"format\": 2"), std::string::npos) << written;
+    EXPECT_NE(written.find("\"format\": 3"), std::string::npos) << written;
     EXPECT_NE(written.find("\"endless\""), std::string::npos) << written;
     EXPECT_EQ(parseProgress(written), old);
 }
@@ -157,7 +157,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadProgress{"InvalidUtf8", "{\"format\": 1, \"unlocked\": [\"\xff\xfe\"]}", "not valid JSON"},
         BadProgress{"NotAnObject", "[1, 2]", "expected a JSON object, got array"},
         BadProgress{"NoFormat", R"({"levels": {}})", "missing \"format\""},
-        BadProgress{"NewerFormat", R"({"format": 3})", "format 3 is not supported (this abalike reads format 1 to 2)"},
+        BadProgress{"NewerFormat", R"({"format": 4})", "format 4 is not supported (this abalike reads format 1 to 3)"},
+        BadProgress{"NumberingAsArray", R"({"format": 3, "numbering": [2]})", "/numbering: expected an object"},
+        BadProgress{"NumberingZero", R"({"format": 3, "numbering": {"": 0}})", "/numbering/"},
         BadProgress{"FormatZero", R"({"format": 0})", "format 0 is not supported"},
         BadProgress{"EndlessAsArray", R"({"format": 2, "endless": []})", "/endless: expected an object"},
         BadProgress{"NegativeRun", R"({"format": 2, "endless": {"longest_run": -2}})",

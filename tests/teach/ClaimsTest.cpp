@@ -33,7 +33,7 @@ TEST(Claims, EveryClaimOfTheCampaignAndTheLessonsHolds)
 
 LevelDef headwind()
 {
-    return loadLevel(kLevels + "3-4-headwind.json", Catalog::builtin());
+    return loadLevel(kLevels + "3-5-headwind.json", Catalog::builtin());
 }
 
 ClaimDef comparison(const std::string& about, const std::string& holds)
@@ -53,7 +53,7 @@ TEST(Claims, AHeadwindLowersTheBestAngleAndATailwindRaisesIt)
     EXPECT_TRUE(lower.holds) << lower.message;
     EXPECT_NEAR(lower.left, 34.0, 0.5);
     EXPECT_NEAR(lower.right, 39.4, 0.5);
-    const LevelDef with = loadLevel(kLevels + "3-6-windy-ridge.json", Catalog::builtin());
+    const LevelDef with = loadLevel(kLevels + "3-7-windy-ridge.json", Catalog::builtin());
     const ClaimResult farther =
         evaluateClaim(comparison("/concept", "best_range:red > vacuum_best_range:red"), with, Catalog::builtin());
     EXPECT_FALSE(farther.holds) << "an 8 m/s tailwind does not beat vacuum at full pull";
@@ -97,8 +97,8 @@ TEST(Claims, SyntaxIsCheckedWithoutComputing)
 
 TEST(Claims, AnOutcomeCountsTheAimsOfItsFanThatDoWhatTheTextSays)
 {
-    // 2-8: the first tower (a stone pillar at x = 18), hit high, falls onto the pig on the second (x = 21.5).
-    const LevelDef level = loadLevel(kLevels + "2-8-wrecking-crew.json", Catalog::builtin());
+    // 2-6: the first tower (a stone pillar at x = 18), hit high, falls onto the pig on the second (x = 21.5).
+    const LevelDef level = loadLevel(kLevels + "2-6-wrecking-crew.json", Catalog::builtin());
     ASSERT_EQ(level.claims.size(), 1u);
     ClaimDef claim = level.claims.front();
     ASSERT_TRUE(claim.outcome.has_value());

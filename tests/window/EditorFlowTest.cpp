@@ -178,10 +178,10 @@ TEST_F(EditorFlow, TypingFasterThanTheFramesLosesNoKey)
 
 TEST_F(EditorFlow, WidthOnAHillScalesItsCorners)
 {
-    // The designer's finding: Width on a polygon hill took the value and saved nothing. 2-6's hill, 12 m wide about
+    // The designer's finding: Width on a polygon hill took the value and saved nothing. 2-3's hill, 12 m wide about
     // x = 22, typed 18 m wide: its corners scale by 1.5 about its centre.
     const std::string file = m_dir.file("hill.json");
-    std::filesystem::copy_file(sourceFile("levels/2-6-boulder-hill.json"), file);
+    std::filesystem::copy_file(sourceFile("levels/2-3-boulder-hill.json"), file);
     const GameRun run = edit("'" + file + "' --frames 30" + script(R"([
         {"frame": 3, "mouse": "press", "button": "left", "x": 590, "y": 610},
         {"frame": 3, "mouse": "release", "button": "left", "x": 590, "y": 610},

@@ -90,7 +90,7 @@ TEST_F(ReplayFlow, TwoShotsWinTheFirstLevelInBoth)
 TEST_F(ReplayFlow, AMissThenTheReferenceShotInAWorldStillMoving)
 {
     // The first bird brings the tower's top down; the second flies while pieces still settle.
-    expectSameRun(sourceFile("levels/1-4-high-and-low.json"), "--shot 30,20 --shot 66.3,16.5");
+    expectSameRun(sourceFile("levels/1-6-high-and-low.json"), "--shot 30,20 --shot 66.3,16.5");
 }
 
 TEST_F(ReplayFlow, TheSolversWinWithAnAbilityOnAGeneratedLevel)

@@ -201,7 +201,7 @@ TEST_F(ScreenFlow, ASettingsFileOnTheCommandLineWinsOverTheSavedSettingsAndIsNev
 TEST_F(ScreenFlow, HoldingFPlaysTheFreeFlightThreeTimesFasterWithTheSamePhysics)
 {
     // The Moon's long flight: with F held the same defeats happen at the same game time, in fewer frames.
-    const std::string args = "'" + sourceFile("levels/5-4-the-moon.json") + "' --shot 42.5,9 --frames 500";
+    const std::string args = "'" + sourceFile("levels/5-1-the-moon.json") + "' --shot 42.5,9 --frames 500";
     const GameRun plain = play(args);
     const GameRun fast = play(args + script(R"([{"frame": 5, "key": "F", "action": "press"}])"));
     ASSERT_EQ(plain.exitCode, 0) << plain.err;
@@ -221,11 +221,11 @@ TEST_F(ScreenFlow, HoldingFPlaysTheFreeFlightThreeTimesFasterWithTheSamePhysics)
 
 TEST_F(ScreenFlow, ALevelOnTheCommandLineGoesStraightToIt)
 {
-    const std::string level = sourceFile("levels/2-1-dominoes.json");
+    const std::string level = sourceFile("levels/2-8-dominoes.json");
     const GameRun run = play(std::string("'").append(level).append("' --frames 5"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.finalScreens(), (std::vector<std::string>{"play"}));
-    EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"2-1"}));
+    EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"2-8"}));
 }
 
 TEST_F(ScreenFlow, ShotsWithoutALevelStartTheCampaignAndAWinLeadsOn)
@@ -322,11 +322,11 @@ TEST_F(ScreenFlow, PlayPackOpensThePacksFirstUnfinishedLevelAndInstalledPacksFol
 
 TEST_F(ScreenFlow, PlayLevelOpensACampaignLevelByItsNumberEvenLocked)
 {
-    // 3-4 is the fourth tile of episode 3 (Gusts, saved under its id 3-5), and its title says 3-4.
+    // 3-4 is the fourth tile of episode 3 (Gusts): its id, its file's name and its title all say 3-4.
     const GameRun run = play("--level 3-4 --frames 3");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.values("level", "number"), (std::vector<std::string>{"3-4"}));
-    EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"3-5"}));
+    EXPECT_EQ(run.values("level", "id"), (std::vector<std::string>{"3-4"}));
     EXPECT_EQ(run.values("level", "campaign_index"), (std::vector<std::string>{"19"}));
     bool titled = false;
     for (const nlohmann::json& line : run.trace)

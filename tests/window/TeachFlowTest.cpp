@@ -173,7 +173,7 @@ std::string shownTexts(const GameRun& run)
 TEST_F(TeachFlow, SchoolWordingNamesNoMachineryAndUniversityDoes)
 {
     // In flight with the teaching overlay: forces, energy, the why panel, the toolbar and its tooltip, the hint.
-    const std::string args = sourceFile("levels/3-4-headwind.json") + " --shot 40,28 --frames 60" +
+    const std::string args = sourceFile("levels/3-5-headwind.json") + " --shot 40,28 --frames 60" +
                              script(R"([{"frame": 2, "key": "T"}, {"frame": 3, "key": "V"},
         {"frame": 50, "mouse": "move", "x": 1000, "y": 25}])");
     const std::regex machinery(R"(RK4|Box2D|TOI|chord)");
@@ -191,13 +191,13 @@ TEST_F(TeachFlow, SchoolWordingNamesNoMachineryAndUniversityDoes)
 
     // The help screen lists the integrator tools only at university wording.
     const std::string help =
-        sourceFile("levels/3-4-headwind.json") + " --frames 10" + script(R"([{"frame": 2, "key": "F1"}])");
+        sourceFile("levels/3-5-headwind.json") + " --frames 10" + script(R"([{"frame": 2, "key": "F1"}])");
     const GameRun schoolHelp = play(help);
     ASSERT_EQ(schoolHelp.exitCode, 0) << schoolHelp.err;
     EXPECT_NE(shownTexts(schoolHelp).find("Controls"), std::string::npos) << shownTexts(schoolHelp);
     EXPECT_FALSE(std::regex_search(shownTexts(schoolHelp), machinery)) << shownTexts(schoolHelp);
     // Its second page has the teaching rows (PageDown).
-    const std::string helpPage2 = sourceFile("levels/3-4-headwind.json") + " --frames 10" +
+    const std::string helpPage2 = sourceFile("levels/3-5-headwind.json") + " --frames 10" +
                                   script(R"([{"frame": 2, "key": "F1"}, {"frame": 4, "key": "PageDown"}])");
     const GameRun schoolPage2 = play(helpPage2);
     EXPECT_NE(shownTexts(schoolPage2).find("Slow motion"), std::string::npos) << shownTexts(schoolPage2);
@@ -364,7 +364,7 @@ TEST_F(TeachFlow, TheTraceRecordsEveryDefeatAsSimulateDoes)
 TEST_F(TeachFlow, EveryTeachingKeyInFlightAndWhileAiming)
 {
     const std::string shot = m_dir.file("teach.png");
-    const GameRun run = play(sourceFile("levels/3-5-gusts.json") +
+    const GameRun run = play(sourceFile("levels/3-4-gusts.json") +
                              " --shot 23.8,25.5 --frames 520 --wording university --screenshot '" + shot + "'" +
                              script(R"([{"frame": 2, "key": "T"}, {"frame": 3, "key": "G"}, {"frame": 4, "key": "I"},
         {"frame": 5, "key": "LBracket"}, {"frame": 6, "key": "I"}, {"frame": 7, "key": "I"}, {"frame": 8, "key": "RBracket"},
@@ -573,13 +573,13 @@ void expectFeedbackLeavesInView(const std::filesystem::path& data, const std::st
 
 TEST_F(TeachFlow, OnceTheNextBirdIsReadyTheFeedbackLeavesTheSlingshotAndThePigsInView)
 {
-    // 1-1 and 5-1, seven seconds into a run with the reference shot, 1280x720 at 100 % text with the overlay on: the
+    // 1-1 and 5-5, seven seconds into a run with the reference shot, 1280x720 at 100 % text with the overlay on: the
     // next bird is ready and the camera is back at the slingshot. The feedback card kept the spot it took when the
     // shot ended, clear of the structure as the camera framed it then, and covered a pig (tools/layout-sweep). Now
     // it moves to a spot clear of the world once the shot is over.
     std::ofstream(data() / "settings.json") << R"({"format": 1, "text_scale": 1.0, "teaching_overlay": true})";
     expectFeedbackLeavesInView(data(), "levels/1-1-first-flight.json", "30,18", "1280x720");
-    expectFeedbackLeavesInView(data(), "levels/5-1-titan.json", "5,30", "1280x720");
+    expectFeedbackLeavesInView(data(), "levels/5-5-titan.json", "5,30", "1280x720");
 }
 
 TEST_F(TeachFlow, WhenTheCameraTurnsToTheStructureTheFeedbackLeavesItsPigInView)
@@ -594,13 +594,13 @@ TEST_F(TeachFlow, WhenTheCameraTurnsToTheStructureTheFeedbackLeavesItsPigInView)
 
 TEST_F(TeachFlow, WhenNoSpotIsClearOfTheWorldTheFeedbackStillLeavesTheSlingshotInView)
 {
-    // 1-1 and 6-4 in a wide, low window (1280x400) at 150 % text, seven seconds into a run with the reference shot:
+    // 1-1 and 6-2 in a wide, low window (1280x400) at 150 % text, seven seconds into a run with the reference shot:
     // no spot for the feedback card is clear of every block, and it kept the one it took when the shot ended, over
     // the slingshot the camera has returned to (tools/layout-sweep). Now it moves to a spot that leaves the slingshot
     // and the pigs in view, over blocks if it must.
     std::ofstream(data() / "settings.json") << R"({"format": 1, "text_scale": 1.5, "teaching_overlay": true})";
     expectFeedbackLeavesInView(data(), "levels/1-1-first-flight.json", "30,18", "1280x400");
-    expectFeedbackLeavesInView(data(), "levels/6-4-powder-kegs.json", "22,22", "1280x400");
+    expectFeedbackLeavesInView(data(), "levels/6-2-powder-kegs.json", "22,22", "1280x400");
 }
 
 TEST_F(TeachFlow, AtLargeTextTheTeachingPanelsShrinkRatherThanCoverTheSlingshotTheBirdOrAPig)
@@ -647,21 +647,21 @@ TEST_F(TeachFlow, AtLargeTextTheTeachingPanelsShrinkRatherThanCoverTheSlingshotT
 
 TEST_F(TeachFlow, AtLargeTextThePanelsAfterAShotNeverOverlapAndTheFeedbackShrinksToOneLine)
 {
-    // 2-1 five seconds after its reference shot, the next bird ready, at 200 % text with the overlay on in 1280x720:
+    // 2-8 five seconds after its reference shot, the next bird ready, at 200 % text with the overlay on in 1280x720:
     // the whole feedback card (seven lines) once covered the status, air and aim panels, the Why panel ran into the
     // hint and the "predicted vs actual" label sat on the aim readout. Now the feedback is its first sentence on one
     // line; every panel is inside the window and no two overlap. The Why panel's one-line summary, with the feedback
     // over it, hid all three pigs: a summary that would cover a pig or the slingshot is left out, and the pigs are in
     // view (the three the shot leaves standing). (Every level, window and text size: tests/layout.)
     std::ofstream(data() / "settings.json") << R"({"format": 1, "text_scale": 2.0, "teaching_overlay": true})";
-    const GameRun run = runGame("play " + sourceFile("levels/2-1-dominoes.json") +
+    const GameRun run = runGame("play " + sourceFile("levels/2-8-dominoes.json") +
                                     " --frames 300 --shot 32.5,12.75 --size 1280x720 --mode learn",
                                 data());
     ASSERT_EQ(run.exitCode, 0) << run.err;
     double width = 0.0;
     double height = 0.0;
     const std::vector<PanelBox> boxes = lastPanels(run, width, height);
-    expectApartAndInside(boxes, width, height, "2-1 1280x720");
+    expectApartAndInside(boxes, width, height, "2-8 1280x720");
     const auto named = [&boxes](const std::string& name)
     {
         return std::find_if(boxes.begin(), boxes.end(), [&name](const PanelBox& box) { return box.name == name; });

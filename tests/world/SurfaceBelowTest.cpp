@@ -10,9 +10,9 @@ namespace
 
 TEST(SurfaceBelow, TheSlingshotOnTheCliffStandsOnTheCliffTop)
 {
-    // 1-5: the cliff is a 8 x 10 m box centred at (-3, 5), the slingshot's pouch at (0, 10.5).
+    // 1-8: the cliff is a 8 x 10 m box centred at (-3, 5), the slingshot's pouch at (0, 10.5).
     const LevelDef level =
-        loadLevel(std::string(ABALIKE_SOURCE_DIR) + "/levels/1-5-from-the-cliff.json", Catalog::builtin());
+        loadLevel(std::string(ABALIKE_SOURCE_DIR) + "/levels/1-8-from-the-cliff.json", Catalog::builtin());
     const GameWorld world(level, Catalog::builtin());
     EXPECT_NEAR(world.surfaceBelow(0.0, 10.5), 10.0, 0.01);  // the collision skin keeps it under 1 cm
     EXPECT_NEAR(world.surfaceBelow(-6.5, 10.5), 10.0, 0.01); // the queue of birds, further back on the top

@@ -53,7 +53,7 @@ def l1_6():
     roof(s, 26.8 - 1.2, 0, 1.2, "ice")
     roof(s, 33.2 + 1.2, 0, 1.2, "ice")
     ball(s, 36.2, 0, 0.8, "wood")
-    return level("1-6", "Pyramid Point",
+    return level("1-5", "Pyramid Point",
                  "In vacuum a bird launched at {v_max:red} m/s at angle theta lands v0^2 sin(2 theta) / g away on "
                  "level ground: at most {range_flat:red} m, at 45 degrees. The pyramid is much nearer: pull "
                  "less, or take a flatter or a steeper angle of the same range.",
@@ -65,7 +65,7 @@ def l1_7():
     s = Scene()
     castle(s, 40, 0, 3, "wood", "wood", ("medium", None, "small"), "ice")
     cage(s, 45.4, 0, 1.2, "ice", "small")
-    return level("1-7", "Castle on the Plain",
+    return level("1-4", "Castle on the Plain",
                  "Two launch angles reach the same range, theta and 90 - theta, in vacuum. The flat one is quick and "
                  "strikes the walls; the steep one drops onto the roofs from above.",
                  ["Try the steep shot: the roofs are ice."],
@@ -80,7 +80,7 @@ def l1_8():
     cage(s, 29, 0, 1.2, "wood", "small")
     top = frame(s, 28, 1.2, 2.0, 1.6, "wood", "wood", None)
     roof(s, 28, top, 2.6, "wood")
-    return level("1-8", "Over the Wall",
+    return level("1-7", "Over the Wall",
                  "A stone wall stands between you and the pigs. Only a high arc clears it: above 45 degrees the "
                  "bird climbs steeply and comes down steeply behind it.",
                  ["Aim high and pull less: the bird drops behind the wall."],
@@ -100,7 +100,7 @@ def l2_6():
     roof(s, 31, top, 2.6, "wood")
     pyramid(s, 35.5, 0, 3, 0.7, "wood")
     s.pig("small", 35.5, 2.1)
-    return level("2-6", "Boulder Hill",
+    return level("2-3", "Boulder Hill",
                  "A heavy ball keeps its momentum: the {mass:black} kg black bird leaves the band at {v_max:black} m/s "
                  "with p = {p_max:black} N s, more than the red bird's {p_max:red} N s, and pushes the boulders on "
                  "the hill over the edge. Rolling down they gain speed from their height and crush what is below.",
@@ -114,7 +114,7 @@ def l2_7():
     cage(s, 22, 0, 1.2, "wood", "small")
     castle(s, 31, 0, 2, "wood", "wood", ("large", "small"), "wood")
     tnt(s, 31.55, 2.25, 0.5)
-    return level("2-7", "Stone Gate",
+    return level("2-4", "Stone Gate",
                  "The same pull sends every bird off at nearly the same speed: the {mass:black} kg black bird leaves at "
                  "{v_max:black} m/s and takes the biggest share of the band's {energy} J, {share:black} %. It carries "
                  "the most momentum, p = m v0 = {p_max:black} N s: what it hits, moves.",
@@ -137,7 +137,7 @@ def l2_8():
     s.pig("small", 28.5, 4.5)
     roof(s, 31, frame(s, 31, 0, 1.6, 1.2, "wood", "ice", "small"), 1.6, "ice")
     s.pig("small", 34, pyramid(s, 34, 0, 3, 0.8, "wood"))
-    return level("2-8", "Wrecking Crew",
+    return level("2-6", "Wrecking Crew",
                  "A tall tower tips when it is pushed high up: the push turns it about its foot, and once its centre "
                  "of mass passes over the edge gravity does the rest. These towers stand closer together than they "
                  "are tall, so the first one to fall lands on the next. The bird only has to start it.",
@@ -156,7 +156,7 @@ def l3_6():
     castle(s, 37, 4.0, 2, "wood", "wood", ("medium", "small"), "ice")
     pyramid(s, 24.5, 0, 3, 0.7, "wood")
     s.pig("large", 26.5, 0)
-    return level("3-6", "Windy Ridge",
+    return level("3-7", "Windy Ridge",
                  "Drag pulls the bird towards the wind's velocity: F = -1/2 rho Cd A |v - w| (v - w). With {wind} "
                  "m/s at its back the red bird carries farther than in still air ({best_range:red} m against "
                  "{calm_best_range:red} m at full pull), over the ridge to the castle.",
@@ -175,7 +175,7 @@ def l3_7():
     top = tower(s, 29, 0, 3, 2.0, 2.0, ("wood", "ice"), ("wood",), ("large", "small", "helmet"))
     roof(s, 29, top, 2.6, "ice")
     tnt(s, 32.2, 0)
-    return level("3-7", "Storm Front",
+    return level("3-6", "Storm Front",
                  "Into a headwind of {wind} m/s the air's drag acts on the bird's speed relative to the wind, "
                  "which is higher than its ground speed: the bird slows sooner and falls short. Pull harder, and "
                  "aim a little lower than in still air: a high, slow shot stays longest in the wind.",
@@ -237,7 +237,7 @@ def l4_7():
     top = tower(s, 35, 0, 2, 2.0, 1.6, ("stone",), ("wood",), ("large", "small"))
     roof(s, 35, top, 2.6, "wood")
     ball(s, 37.5, 0, 0.8, "stone")
-    return level("4-7", "Powder Store",
+    return level("4-5", "Powder Store",
                  "TNT crates break at only {strength:tnt} N s and explode: everything near it gets a push and "
                  "damage that falls off with distance. One crate that goes off sets off its neighbours.",
                  ["Hit a crate: the blast does the rest."],
@@ -249,7 +249,7 @@ def l4_8():
     castle(s, 28, 0, 3, "stone", "wood", ("helmet", "large", "helmet"), "stone")
     cage(s, 22.4, 0, 1.0, "wood", "small")
     cage(s, 33.6, 0, 1.0, "wood", "small")
-    return level("4-8", "Stone Fortress",
+    return level("4-4", "Stone Fortress",
                  "Stone is heavy ({density:stone} kg/m^3) and tough: it takes {strength:stone} N s to break, more "
                  "than a red bird at full speed carries ({p_max:red} N s). Knock the walls over instead and let their "
                  "weight fall on the pigs.",
@@ -266,7 +266,7 @@ def l5_6():
     hill(s, 42, 46, 1.2, 0.3)
     castle(s, 36, 0, 3, "wood", "wood", ("large", "small", "helmet"), "stone")
     cage(s, 44, 1.2, 1.0, "wood", None)
-    return level("5-6", "Lunar Base",
+    return level("5-3", "Lunar Base",
                  "On the Moon g = {g} m/s^2: a bird at {v_max:red} m/s flies {earth_g / g|1} times as far and as long "
                  "as on Earth, and a falling block lands slowly, so a tower topples in slow motion.",
                  ["Gentle pulls go a long way here."],
@@ -301,7 +301,7 @@ def l5_8():
     cage(s, 24.0, 0, 1.0, "wood", "small")
     pyramid(s, 36, 0, 3, 0.7, "wood")
     s.pig("medium", 36, 2.1)
-    return level("5-8", "Jovian Keep",
+    return level("5-4", "Jovian Keep",
                  "On Jupiter g = {g} m/s^2, {g / earth_g|1} times Earth's: even a {v_max:red} m/s bird falls fast, "
                  "and a block that tips comes down hard. The flight is short: {best_range:red} m at most for the "
                  "red bird.",
@@ -320,7 +320,7 @@ def l6_1():
     cage(s, 22, 0, 1.2, "wood", "medium")
     castle(s, 31, 0, 3, "wood", "wood", ("large", "small", "helmet"), "wood")
     tnt(s, 31.55, 2.25, 0.5)
-    return level("6-1", "Gatehouse",
+    return level("6-8", "Gatehouse",
                  "Everything together: the launch angle sets the range, the bird's mass its momentum, the materials "
                  "how the castle breaks. A flat shot meets the gate; a steep one falls into the keep.",
                  ["The TNT in the keep's first floor brings the keep down."],
@@ -337,7 +337,7 @@ def l6_2():
     roof(s, 28.5, top + 0.25, 2.6, "wood")
     roof(s, 35.5, top + 0.25, 2.6, "wood")
     cage(s, 32, 1.0, 1.2, "wood", "small")
-    return level("6-2", "Twin Keeps",
+    return level("6-4", "Twin Keeps",
                  "Two keeps joined by a bridge: the bridge carries the TNT. A shot that breaks the bridge drops the "
                  "crate between them; a shot at a keep's top tips it onto the other.",
                  ["The bridge is the weak point."],
@@ -350,7 +350,7 @@ def l6_3():
     castle(s, 34, 3.5, 3, "wood", "wood", ("large", "medium", "helmet"), "ice")
     cage(s, 22.5, 0, 1.2, "ice", "small")
     cage(s, 45.5, 0, 1.2, "ice", None)
-    return level("6-3", "Hill Fort",
+    return level("6-9", "Hill Fort",
                  "A fort on a hill in a headwind: the fort stands above the pouch and the wind of {wind} m/s "
                  "pushes the bird back. Range, height and drag at once.",
                  ["Clear the fort's wall with a low arc: the headwind takes most from high, slow shots."],
@@ -370,7 +370,7 @@ def l6_4():
     top = tower(s, 37, 0, 3, 2.0, 1.6, ("wood",), ("wood",), ("helmet", "small", "small"))
     roof(s, 37, top, 2.6, "wood")
     ball(s, 20, 0, 0.8, "stone")
-    return level("6-4", "Powder Kegs",
+    return level("6-2", "Powder Kegs",
                  "Chains of explosions: a TNT crate that breaks pushes and damages everything near it, and "
                  "breaks the next crate, which explodes in turn.",
                  ["One crate sets off the next."],
@@ -405,7 +405,7 @@ def l6_6():
     pyramid(s, 28.5, 0, 4, 0.7, "ice")
     s.pig("small", 28.5, 2.8)
     cage(s, 37, 0, 1.2, "ice", "small")
-    return level("6-6", "Island Fortress",
+    return level("6-10", "Island Fortress",
                  "Islands in a gusty sky: from {gust_t:1} s the wind is {gust_wx:1} m/s. The far island needs "
                  "the longest flight and the gust bends it most.",
                  ["Take the low islands first."],
@@ -418,7 +418,7 @@ def l6_7():
     castle(s, 30, 0, 3, "ice", "wood", ("large", "medium", "small"), "ice")
     double_frame(s, 38.5, 0, 2.0, 1.6, "ice", "ice", ("helmet", "small"))
     ball(s, 38.5, 1.85, 0.6, "ice")
-    return level("6-7", "Frozen Fortress",
+    return level("6-1", "Frozen Fortress",
                  "A fortress of ice: light ({density:ice} kg/m^3) and brittle ({strength:ice} N s). Blue birds split "
                  "into a flock and break more ice than one heavy bird.",
                  ["Split the blue bird at the walls."],
@@ -431,7 +431,7 @@ def l6_8():
     castle(s, 24, 0, 3, "wood", "wood", ("medium", "large", "small"), "wood")
     pyramid(s, 16, 0, 3, 0.7, "stone")
     cage(s, 31, 0, 1.2, "wood", "helmet")
-    return level("6-8", "Cliff Castle",
+    return level("6-3", "Cliff Castle",
                  "From a cliff {launch_height} m up a bird flies farther and can shoot down at the castle: the best "
                  "angle for range is below 45 degrees here ({vacuum_best_angle:red} degrees).",
                  ["Shots below the horizon reach the castle's walls."],
@@ -445,7 +445,7 @@ def l6_9():
     tower(s, 34.2, 1.5, 1, 1.6, 1.6, ("stone",), ("wood",), ("small",))
     tower(s, 45.8, 1.5, 1, 1.6, 1.6, ("stone",), ("wood",), ("small",))
     cage(s, 51.5, 0, 0.9, "wood", None)
-    return level("6-9", "Moon Citadel",
+    return level("6-6", "Moon Citadel",
                  "A citadel on the Moon (g = {g} m/s^2): the bird flies {earth_g / g|1} times as far as on Earth at "
                  "the same speed, and the keep falls slowly.",
                  ["A light pull is enough."],
@@ -464,7 +464,7 @@ def l6_10():
     gate(s, 15, 0, 2.4, 3, 0.6, "stone", "wood", "helmet")
     top = pyramid(s, 57, 0, 4, 0.8, "wood")
     s.pig("small", 57, top)
-    return level("6-10", "The Last Fortress",
+    return level("6-7", "The Last Fortress",
                  "Two stone castles with helmeted pigs: every idea of the campaign at once. Stone does not break, it "
                  "topples; heavy birds carry momentum; TNT between the castles reaches both.",
                  ["The TNT between the castles is within reach of both.",

@@ -2,7 +2,9 @@
 
 #include <abalike/level/LevelDef.hpp>
 #include <abalike/level/LevelIO.hpp>
+#include <abalike/level/LevelNumbering.hpp>
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,12 +20,13 @@ struct CampaignLevel
     std::string path;        ///< the level file
     std::size_t episode = 0; ///< index into Campaign::episodes
     LevelDef level;
-    /// What progress is saved under: the level's id for the bundled campaign, "PACK/ID" for a level pack's. It never
-    /// changes when the campaign's order does, so saved stars stay with their level.
+    /// What progress is saved under: the level's id for the bundled campaign, "PACK/ID" for a level pack's. When a
+    /// reorder renames ids, the manifest's renumbering carries saved stars to the new keys (renumberProgress).
     std::string key;
     std::string pack; ///< the level pack's name (its folder); empty for the bundled campaign
     /// What the player calls it: its episode and its place there, from 1 ("2-6" for the sixth level of episode 2), on
-    /// its tile, in its title and for `play --level`. Follows the order, so it can differ from the id.
+    /// its tile, in its title and for `play --level`. Follows the order; the bundled campaign's ids follow it too
+    /// (tools/renumber-levels), a level pack's may differ.
     std::string number;
 
     /// The name `play --level` takes: the number, "PACK/NUMBER" for a level pack's.
@@ -36,6 +39,8 @@ struct Campaign
     std::string manifestPath;
     std::vector<CampaignEpisode> episodes;
     std::vector<CampaignLevel> levels;
+    /// How each part's level ids were renumbered: "" for the manifest's own levels, a level pack's by its name.
+    std::map<std::string, LevelNumbering> numberings;
 
     /// Progress keys in play order (CampaignLevel::key: the level id, or PACK/ID in a level pack).
     std::vector<std::string> levelIds() const;

@@ -38,6 +38,9 @@ struct Progress
     std::map<std::string, LevelRecord> levels;
     std::set<std::string> unlocked;
     EndlessRecord endless;
+    /// Which numbering of its levels' ids (LevelNumbering) the keys of each campaign part follow: "" for the bundled
+    /// campaign, a level pack's name for its "PACK/ID" keys. A part missing here is read as numbering 1.
+    std::map<std::string, int> numbering;
 
     /// Keeps the better of the stored and the new score and stars; returns true when something improved.
     bool record(const std::string& levelId, int score, int stars);
@@ -53,9 +56,9 @@ struct Progress
 /// Returns true when a level was newly unlocked.
 bool unlockCampaign(Progress& progress, const std::vector<std::string>& levelIds);
 
-/// Parses the text of progress.json, of this version (format 2) or an earlier one (format 1, before the endless
-/// mode: its levels and unlocked levels are kept, the endless record starts empty). Throws SaveFormatError saying
-/// what is wrong and where.
+/// Parses the text of progress.json, of this version (format 3) or an earlier one (format 2, before the level
+/// numberings: read as numbering 1 everywhere; format 1, before the endless mode: the endless record starts empty).
+/// Throws SaveFormatError saying what is wrong and where.
 Progress parseProgress(std::string_view text);
 
 /// The text of progress.json, always of this version (stable key order, so saving unchanged progress writes the same

@@ -30,7 +30,7 @@ constexpr double kMedianTargetS = 30.0;
 constexpr double kMaxTargetS = 90.0;
 constexpr double kFirstEstimateTargetS = 10.0;
 /// --quick: three levels of growing size, ten runs of the model player.
-const char* const kQuickLevels[] = {"1-1", "2-1", "4-3"};
+const char* const kQuickLevels[] = {"1-1", "2-8", "4-8"};
 
 double secondsSince(std::chrono::steady_clock::time_point start)
 {

@@ -8,6 +8,7 @@
 #include "shell/Trace.hpp"
 
 #include <abalike/save/DataDirectory.hpp>
+#include <abalike/save/ProgressNumbering.hpp>
 #include <abalike/save/SaveStore.hpp>
 #include <chrono>
 #include <filesystem>
@@ -23,7 +24,8 @@ PlayerProgress::PlayerProgress(Campaign campaign, const AppOptions& options, Sav
     if (m_store == nullptr)
         return;
     m_progress = m_store->progress();
-    if (unlockCampaign(m_progress, m_campaign.levelIds()) && !m_options.scripted())
+    const bool renumbered = renumberProgress(m_progress, m_campaign);
+    if ((unlockCampaign(m_progress, m_campaign.levelIds()) || renumbered) && !m_options.scripted())
         m_store->saveProgress(m_progress);
 }
 

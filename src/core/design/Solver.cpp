@@ -27,7 +27,7 @@ constexpr double kAbilityFractions[] = {0.3, 0.5, 0.7, 0.9};
 /// Best candidates of a bird that are refined and tried with abilities.
 constexpr std::size_t kRefineCount = 3;
 /// Shots tried per standing pig and prefix with a payload dropped on it: those whose payload would fall fastest (3
-/// missed 4-3's cellar once the white bird flew faster).
+/// missed 4-8's cellar once the white bird flew faster).
 constexpr std::size_t kDropTries = 4;
 /// Offsets, in seconds, tried around each estimated drop moment: the estimate ignores drag and what the payload
 /// strikes on its way down (a hatch's edge, a rim), and a bird flying 8 m/s sideways moves 0.4 m in 0.05 s.

@@ -66,6 +66,14 @@ Campaign loadCampaignLevels(const std::string& manifestPath, const Catalog& cata
             throw LevelLoadError(std::move(issues));
         }
     }
+    try
+    {
+        campaign.numberings[""] = loadLevelNumbering(manifestPath);
+    }
+    catch (const LevelLoadError& error)
+    {
+        issues.insert(issues.end(), error.issues().begin(), error.issues().end());
+    }
     // Every level is read and checked on its own (the reach check flies a fan of launches: most of a campaign's
     // load), so the levels load in parallel; what follows takes them in the manifest's order, as before.
     struct Entry
@@ -158,6 +166,7 @@ void appendLevelPack(Campaign& campaign, const std::string& packFolder, const Ca
         episode.title = name + ": " + (episode.title.empty() ? episode.id : episode.title);
         campaign.episodes.push_back(std::move(episode));
     }
+    campaign.numberings[name] = pack.numberings[""];
     for (CampaignLevel& level : pack.levels)
     {
         level.episode += firstEpisode;

@@ -13,8 +13,6 @@ namespace abalike
 
 namespace
 {
-constexpr JsonTextLimits kManifestText{1u << 20, 16, "a campaign manifest"};
-
 /// True if the file is a level that says "sandbox": true. Anything unreadable is left to the level loader.
 bool isSandboxScene(const std::string& path)
 {
@@ -55,7 +53,7 @@ std::vector<CampaignEpisode> loadCampaignEpisodes(const std::string& manifestPat
     std::vector<CampaignEpisode> out;
     std::map<std::string, std::string> listedAt; // each level file once: canonical path -> pointer of its entry
     const auto folder = std::filesystem::path(manifestPath).parent_path();
-    if (r.object(root, "", {"$schema", "format", "title", "episodes"}))
+    if (r.object(root, "", {"$schema", "format", "title", "episodes", "renumbered"}))
     {
         const auto episodes = root.find("episodes");
         if (episodes == root.end())

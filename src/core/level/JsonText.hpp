@@ -20,6 +20,7 @@ struct JsonTextLimits
 
 /// The limits of a level file (the level loader and the campaign's sandbox check read levels alike).
 inline constexpr JsonTextLimits kLevelText{limits::kMaxLevelBytes, limits::kMaxNesting, "a level"};
+inline constexpr JsonTextLimits kManifestText{1u << 20, 16, "a campaign manifest"};
 
 /// Parses JSON text for the level loader: size, emptiness, UTF-8 and nesting are checked before the parser sees
 /// it, and syntax errors name the line and column of the offending token. Throws LevelLoadError with one issue.

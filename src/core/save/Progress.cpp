@@ -11,10 +11,13 @@ namespace abalike
 namespace
 {
 
-/// 2: the endless record. Format 1 files are read as they are, with an empty endless record.
-constexpr int kProgressFormat = 2;
+/// 2: the endless record; 3: the numbering of the level ids (LevelNumbering). Earlier files are read as they are,
+/// with an empty endless record (1) and every level id of numbering 1 (1 and 2).
+constexpr int kProgressFormat = 3;
 constexpr int kOldestProgressFormat = 1;
 constexpr int kMaxStars = 3;
+/// A campaign renumbered once a day for three years stays below it.
+constexpr int kMaxNumbering = 1000;
 /// Level ids are short names like "2-3"; a longer one is not from a level file.
 constexpr std::size_t kMaxIdLength = 256;
 
@@ -134,6 +137,14 @@ Progress parseProgress(std::string_view text)
         member("longest_run", progress.endless.longestRun);
         member("runs", progress.endless.runs);
     }
+    if (const auto numbering = root.find("numbering"); numbering != root.end())
+    {
+        if (!numbering->is_object())
+            throw SaveFormatError("/numbering: expected an object of campaign part (\"\" or a level pack's name) -> "
+                                  "numbering of its level ids");
+        for (const auto& [part, value] : numbering->items())
+            progress.numbering[part] = readInt(value, "/numbering/" + pointerToken(part), 1, kMaxNumbering);
+    }
     return progress;
 }
 
@@ -156,6 +167,10 @@ std::string progressToJson(const Progress& progress)
     root["endless"] = {{"best_score", std::max(progress.endless.bestScore, 0)},
                        {"longest_run", std::max(progress.endless.longestRun, 0)},
                        {"runs", std::max(progress.endless.runs, 0)}};
+    nlohmann::ordered_json numbering = nlohmann::ordered_json::object();
+    for (const auto& [part, value] : progress.numbering)
+        numbering[part] = std::clamp(value, 1, kMaxNumbering);
+    root["numbering"] = std::move(numbering);
     return dumpSaveJson(root);
 }
 
