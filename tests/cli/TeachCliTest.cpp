@@ -189,7 +189,19 @@ TEST(SimulateTeachCli, EnergyAndImpactPerShot)
                                               "bird_other_contacts",
                                               "gravity",
                                               "break_through",
-                                              "balance_residual"}));
+                                              "balance_residual",
+                                              "exchanged",
+                                              "partners",
+                                              "handed_on"}));
+    // Told as physics: the bird's change is what it got from the body (minus the exchange) and from everything
+    // else it pushed (minus each partner's impulse), from the JSON alone.
+    for (std::size_t i = 0; i < 2; ++i)
+    {
+        double pushed = impact["exchanged"][i].get<double>();
+        for (const auto& partner : impact["partners"])
+            pushed += partner["impulse"][i].get<double>();
+        EXPECT_NEAR(impact["bird_change"][i].get<double>(), -pushed, 1e-3);
+    }
     // The balance, from the JSON alone: the two changes less the pushes from outside the pair are zero.
     for (std::size_t i = 0; i < 2; ++i)
     {

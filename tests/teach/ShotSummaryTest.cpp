@@ -26,12 +26,15 @@ TEST(ShotSummary, EveryReferenceShotsGistIsOneShortWholeSentenceThatAgreesWithTh
         EXPECT_LE(gist.size(), 72u) << gist;
         EXPECT_EQ(gist.back(), '.') << gist;
         EXPECT_EQ(gist.find('{'), std::string::npos) << gist;
-        if (full.front().find("so the bird flew on") != std::string::npos)
+        const bool broke = full.front().find(" broke.") != std::string::npos ||
+                           full.front().find(" was defeated.") != std::string::npos;
+        const bool turned = full.front().find("it was turned back") != std::string::npos;
+        if (broke && !turned)
         {
             EXPECT_NE(gist.find("and flew on"), std::string::npos) << gist << " | " << full.front();
             ++breaking;
         }
-        if (full.front().find("still turned back") != std::string::npos)
+        if (broke && turned)
         {
             EXPECT_NE(gist.find("turned back"), std::string::npos) << gist << " | " << full.front();
         }

@@ -4,6 +4,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace abalike
 {
@@ -33,6 +34,15 @@ struct ImpactBalance
     Vec2 breakThrough{};
 };
 
+/// Another body the bird pushed in the step of its first impact: a second block, a pig, the ground.
+struct ImpactPartner
+{
+    EntityKind kind{};
+    int index = -1;   ///< index in the level's blocks, pigs or terrain (-1 for the ground)
+    std::string type; ///< material, pig type, "ground" or "terrain"
+    Vec2 impulse{};   ///< the push on it from the bird (N s); the bird got the opposite
+};
+
 /// The launched bird's first contact with a block or a pig, from Box2D's own velocities: "before" is the start of the
 /// world step in which the contact began, "after" the end of that step.
 struct FirstImpact
@@ -57,9 +67,18 @@ struct FirstImpact
     double strengthBeforeNs = 0.0; ///< what the body could still absorb when the step began (N s)
     bool broke = false;            ///< the body broke (or the pig was defeated) in that step
     ImpactBalance balance;
+    /// Every other body the bird pushed in that step, by entity order.
+    std::vector<ImpactPartner> partners;
+    /// When the body broke: what of its momentum it handed on to the bodies it was pushing (N s); the rest left with
+    /// its splinters. Zero when it held.
+    Vec2 handedOn{};
 
     /// Change of the bird's and of the body's momentum over the step (after minus before, kg m/s).
     Vec2 birdChange() const;
+    /// The impulse bird and body exchanged: what the bird gave the body, the body gave the bird the opposite (N s).
+    /// The bird's change less what everything else it touched gave it: the solver's push less what the break rule
+    /// gave back when the body broke, so it never exceeds what a body that breaks can push back.
+    Vec2 exchanged() const;
     Vec2 bodyChange() const;
     /// The two changes less every impulse of the balance: zero but for Box2D's float rounding.
     Vec2 balanceResidual() const;

@@ -86,6 +86,17 @@ Json impactJson(const std::optional<FirstImpact>& impact)
     out["gravity"] = pair(impact->balance.gravity);
     out["break_through"] = pair(impact->balance.breakThrough);
     out["balance_residual"] = pair(impact->balanceResidual());
+    // Told as physics (docs/cli.md): the impulse bird and body exchanged (on the body; the bird got the opposite),
+    // every other body the bird pushed in that step with its own impulse, and where a broken block's momentum went.
+    out["exchanged"] = pair(impact->exchanged());
+    Json partners = Json::array();
+    for (const ImpactPartner& partner : impact->partners)
+        partners.push_back({{"kind", entityKindName(partner.kind)},
+                            {"index", partner.index},
+                            {"type", partner.type},
+                            {"impulse", pair(partner.impulse)}});
+    out["partners"] = std::move(partners);
+    out["handed_on"] = pair(impact->handedOn);
     return out;
 }
 

@@ -4,6 +4,7 @@
 
 #include "render/TextFormat.hpp"
 #include "teach/TeachDraw.hpp"
+#include <abalike/teach/ImpactAccount.hpp>
 
 #include <cmath>
 #include <numbers>
@@ -64,14 +65,10 @@ void addBalanceRows(std::vector<PanelRow>& rows, const FirstImpact& impact, cons
 {
     const ImpactBalance& b = impact.balance;
     rows.push_back({"momentum in that step, (x, y) kg\u00B7m/s", "", sf::Color::Transparent, true});
-    rows.push_back({"  the bird pushed the " + body + " with", components(b.pushOnBody)});
-    // A body that breaks holds only its remaining strength: the rest of the push went back to the bird.
-    const auto bird = impact.birdChange();
-    const Vec2 givenBack{bird.x + b.pushOnBody.x - b.birdOtherContacts.x,
-                         bird.y + b.pushOnBody.y - b.birdOtherContacts.y};
-    if (impact.broke && shows(givenBack))
-        rows.push_back({"  it broke: given back to the bird", components(givenBack)});
-    rows.push_back({"  change of the bird", components(bird)});
+    // One impulse between the two, equal and opposite (Newton's third law): what the bird gave the body, which gave
+    // the bird the same back. The solver's push and the break rule's refund are bookkeeping and stay out.
+    rows.push_back({"  bird and " + body + " pushed each other: on the " + body, components(impact.exchanged())});
+    rows.push_back({"  change of the bird", components(impact.birdChange())});
     rows.push_back({"  change of the " + body, components(impact.bodyChange())});
     // Only the pushes from outside the pair that acted: each one is why the two changes do not cancel.
     if (shows(b.supports))
@@ -79,7 +76,7 @@ void addBalanceRows(std::vector<PanelRow>& rows, const FirstImpact& impact, cons
     if (shows(b.gravity))
         rows.push_back({"  + weight over the step", components(b.gravity)});
     if (shows(b.breakThrough))
-        rows.push_back({"  + the break rule (given back, handed on)", components(b.breakThrough)});
+        rows.push_back({"  + momentum the breaking " + body + " handed on to the bird", components(b.breakThrough)});
     if (shows(b.birdOtherContacts))
         rows.push_back({"  + what else the bird touched", components(b.birdOtherContacts)});
     const auto residual = impact.balanceResidual();
@@ -89,8 +86,8 @@ void addBalanceRows(std::vector<PanelRow>& rows, const FirstImpact& impact, cons
 } // namespace
 
 sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f topRight,
-                              const FirstImpact& impact, double bodyStrengthNs, bool university, unsigned titleSize,
-                              unsigned rowSize, float scale)
+                              const FirstImpact& impact, bool university, unsigned titleSize, unsigned rowSize,
+                              float scale)
 {
     const std::string body = impact.bodyType + (impact.bodyKind == EntityKind::Pig ? " pig" : " block");
     // One row per body, before \u2192 after the step: speed and spin, momentum, kinetic energy.
@@ -115,15 +112,18 @@ sf::FloatRect drawImpactPanel(sf::RenderTarget& target, const sf::Font& font, sf
         {"together: kinetic energy (with spin)",
          withUnit(impact.kineticBeforeJ(), 0, "") + "\u2192 " + withUnit(impact.kineticAfterJ(), 0, "J")},
     };
-    if (const auto e = impact.restitution())
-        rows.push_back(
-            {university ? "restitution e = separating / closing speed" : "bounciness e = separating / closing speed",
-             formatFixed(*e, 2)});
+    // Bounciness is measured only where something can rebound: a body that broke gave way instead.
+    const char* bounceName =
+        university ? "restitution e = separating / closing speed" : "bounciness e = separating / closing speed";
+    if (impact.broke)
+        rows.push_back({bounceName, "it broke: no rebound to measure"});
+    else if (const auto e = impact.restitution())
+        rows.push_back({bounceName, formatFixed(*e, 2)});
     addBalanceRows(rows, impact, impact.bodyKind == EntityKind::Pig ? "pig" : "block");
     std::string damage = withUnit(impact.damageNs, 1, "N\u00B7s");
-    if (bodyStrengthNs > 0.0)
-        damage +=
-            " of " + withUnit(bodyStrengthNs, 0, "N\u00B7s") + (impact.damageNs >= bodyStrengthNs ? ": broke it" : "");
+    if (impact.strengthBeforeNs > 0.0)
+        damage = damageOfStrength(impact.broke ? impact.strengthBeforeNs : impact.damageNs, impact.strengthBeforeNs) +
+                 (impact.broke ? ": all of it, it broke" : "");
     // Strength is an impulse the body can take, not energy: its own heading keeps it apart from the joules above.
     rows.push_back({"strength: impulse taken as damage (N\u00B7s, not energy)", damage});
     // With no push from outside the pair, momentum is kept: say where the lost energy went.

@@ -266,14 +266,9 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
                 below(drawEnergyBars(target, *font, right, *shot.energy, true, titleSize, rowSize, scale));
             if (shot.impact)
             {
-                const Material* material = session.catalog().findMaterial(shot.impact->bodyType);
-                const PigType* pig = session.catalog().findPig(shot.impact->bodyType);
-                const double strength = shot.impact->bodyKind == EntityKind::Pig
-                                            ? (pig ? pig->healthNs : 0.0)
-                                            : (material ? material->strengthNs : 0.0);
                 // The impact panel is as wide as its numbers need, its right edge on the column's.
-                below(drawImpactPanel(target, *font, right, *shot.impact, strength,
-                                      m_app.settings().universityWording(), titleSize, rowSize, scale));
+                below(drawImpactPanel(target, *font, right, *shot.impact, m_app.settings().universityWording(),
+                                      titleSize, rowSize, scale));
             }
         }
     }

@@ -1,4 +1,5 @@
 #include <abalike/level/LevelFlight.hpp>
+#include <abalike/teach/ImpactAccount.hpp>
 #include <abalike/teach/RangeChart.hpp>
 #include <abalike/teach/ShotFeedback.hpp>
 #include <cmath>
@@ -24,58 +25,14 @@ std::string format(const char* pattern, auto... values)
     return text;
 }
 
-std::string hitName(const FirstImpact& impact, const Catalog& catalog)
+/// The impact sentence's gist, short enough for one line.
+std::string momentumBrief(const ImpactAccount& account)
 {
-    if (impact.bodyKind == EntityKind::Pig)
-        return "the " + impact.bodyType + " pig";
-    if (const Material* material = catalog.findMaterial(impact.bodyType);
-        material != nullptr && material->look.surface == SurfaceKind::Crate)
-        return "a " + material->look.label + " crate";
-    const bool vowel = !impact.bodyType.empty() && std::string("aeiou").find(impact.bodyType[0]) != std::string::npos;
-    return (vowel ? "an " : "a ") + impact.bodyType + " block";
-}
-
-/// Momentum sentence: how much the bird carried, how hard it pushed what it hit, and what the bird did next.
-std::string momentumSentence(const FirstImpact& impact, const Catalog& catalog)
-{
-    const double carried = impact.birdMassKg * std::hypot(impact.birdBefore.vx, impact.birdBefore.vy);
-    // The push between the two (Newton's third law: the bird got the same back), not the body's change of
-    // momentum, which also holds what it stands on pushing back (the impact panel's balance).
-    const double push = std::hypot(impact.balance.pushOnBody.x, impact.balance.pushOnBody.y);
-    std::string text = format("The bird hit %s carrying %.0f kg\u00B7m/s of momentum and pushed it with an impulse "
-                              "of %.0f N\u00B7s",
-                              hitName(impact, catalog).c_str(), carried, push);
-    const bool keptDirection = impact.birdAfter.vx * impact.birdBefore.vx > 0.0;
-    // Bouncing back takes more than the bird had: it must also cancel its own momentum. (A body that breaks gives
-    // part of the push back, so there the bird's path says what happened.)
-    if (push > carried * 1.02 && !keptDirection && !impact.broke)
-        text += " (more than it carried: it bounced back)";
-    const double kept = impact.birdMassKg * std::hypot(impact.birdAfter.vx, impact.birdAfter.vy);
-    if (impact.broke)
-        // Break-through: a body that fails absorbs only what strength it had left.
-        text += format(": that %s it (it could take only %.0f N\u00B7s more)",
-                       impact.bodyKind == EntityKind::Pig ? "defeated" : "broke", impact.strengthBeforeNs) +
-                (keptDirection ? format(", so the bird flew on with %.0f kg\u00B7m/s", kept)
-                               : std::string(", but the bird was still turned back"));
-    else if (impact.damageNs > 0.0)
-        // Damage counts every push in that step, the bird's and the ground's or a neighbour's pushing back: it can
-        // be more than the momentum the body gained, which is their sum with directions.
-        text += format("; it took %.0f N\u00B7s of impulse as damage in that step, from the bird and from what it "
-                       "rests on (1 N\u00B7s = 1 kg\u00B7m/s), of the %.0f N\u00B7s it could take",
-                       impact.damageNs, impact.strengthBeforeNs);
-    return text + ".";
-}
-
-/// The momentum sentence's gist, short enough for one line.
-std::string momentumBrief(const FirstImpact& impact, const Catalog& catalog)
-{
-    const std::string name = hitName(impact, catalog);
-    if (!impact.broke)
-        return format("The bird hit %s with an impulse of %.0f N\u00B7s.", name.c_str(),
-                      std::hypot(impact.balance.pushOnBody.x, impact.balance.pushOnBody.y));
-    const bool keptDirection = impact.birdAfter.vx * impact.birdBefore.vx > 0.0;
-    return format("The bird %s %s %s.", impact.bodyKind == EntityKind::Pig ? "defeated" : "broke", name.c_str(),
-                  keptDirection ? "and flew on" : "but was turned back");
+    if (!account.broke)
+        return format("The bird and %s pushed each other with %.0f N\u00B7s.", account.bodyName.c_str(),
+                      std::hypot(account.exchanged.x, account.exchanged.y));
+    return format("The bird %s %s %s.", account.bodyIsPig ? "defeated" : "broke", account.bodyName.c_str(),
+                  account.birdKeptDirection ? "and flew on" : "but was turned back");
 }
 
 /// A sentence of feedback and its gist.
@@ -103,7 +60,10 @@ std::vector<Said> compose(const LevelDef& level, const Catalog& catalog, const S
     const std::optional<double> range = rangeAtAngle(launch, shot.angleDeg);
 
     if (shot.impact)
-        sentences.push_back({momentumSentence(*shot.impact, catalog), momentumBrief(*shot.impact, catalog)});
+    {
+        const ImpactAccount account = accountImpact(*shot.impact, catalog);
+        sentences.push_back({impactSentence(account), momentumBrief(account)});
+    }
     if (wind && range)
     {
         RangeLaunch calm = launch;

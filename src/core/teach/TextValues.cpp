@@ -26,6 +26,10 @@ const std::vector<TextValueName>& textValueNames()
             {"v_max", "BIRD", "launch speed at full pull, v0 = sqrt(2E/(m + m_b)) (at most the catalog's speed cap)",
              "m/s", 1},
             {"p_max", "BIRD", "momentum at full pull, m v0", "N s", 0},
+            {"p_rebound", "BIRD",
+             "the most one head-on hit at full pull pushes, (1 + e) m v0: the bird stops and rebounds with the "
+             "game's bounciness e (the bird's restitution; Box2D takes the larger of the two bodies')",
+             "N s", 0},
             {"e_bird", "BIRD", "the bird's kinetic energy at full pull, 1/2 m v0^2: its share m/(m + m_b) of E", "J",
              0},
             {"share", "BIRD", "the share of the band's energy the bird takes, m/(m + m_b)", "%", 0},
@@ -228,6 +232,8 @@ double evaluate(const LevelDef& level, const Catalog& seen, std::string_view nam
             return speed;
         if (name == "p_max")
             return bird.massKg * speed;
+        if (name == "p_rebound")
+            return (1.0 + bird.restitution) * bird.massKg * speed;
         if (name == "e_bird")
             return 0.5 * bird.massKg * speed * speed;
         if (name == "share")

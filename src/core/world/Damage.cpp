@@ -28,6 +28,7 @@ void Damage::applyStep(int watched)
     std::vector<double> keptShare(entities.size(), 1.0);
     bool anyBreaks = false;
     m_watchedRefund = {0.0, 0.0};
+    m_watchedHandedOn = {0.0, 0.0};
     for (const auto& [index, impulse] : totals)
     {
         const Entity& e = entities[static_cast<std::size_t>(index)];
@@ -41,7 +42,7 @@ void Damage::applyStep(int watched)
     if (anyBreaks && m_bodies.settings().breakThrough)
         refundBreakingContacts(keptShare, watched, givenBack);
     if (anyBreaks && m_bodies.settings().handOnMomentum)
-        handOnMomentum(keptShare, givenBack);
+        handOnMomentum(keptShare, givenBack, watched);
     for (const auto& [index, impulse] : totals)
         if (damageable(entities[static_cast<std::size_t>(index)]))
             damageEntity(index, impulse, causeOf(index));
@@ -102,7 +103,7 @@ void Damage::refundBreakingContacts(const std::vector<double>& keptShare, int wa
     }
 }
 
-void Damage::handOnMomentum(const std::vector<double>& keptShare, const std::vector<b2Vec2>& givenBack)
+void Damage::handOnMomentum(const std::vector<double>& keptShare, const std::vector<b2Vec2>& givenBack, int watched)
 {
     // A block that breaks leaves as debris, which is only drawn: the momentum it took in this step must not leave
     // the world with it. It goes on to the bodies the block was pushing (its touching contacts whose normal points
@@ -162,7 +163,10 @@ void Damage::handOnMomentum(const std::vector<double>& keptShare, const std::vec
         {
             const float share = (push.weight / total) * amount;
             const float room = push.body->GetMass() * b2Dot(velocity - push.body->GetLinearVelocity(), direction);
-            push.body->ApplyLinearImpulse(std::clamp(room, 0.0f, share) * direction, push.point, true);
+            const b2Vec2 impulse = std::clamp(room, 0.0f, share) * direction;
+            push.body->ApplyLinearImpulse(impulse, push.point, true);
+            if (static_cast<int>(i) == watched)
+                m_watchedHandedOn = {m_watchedHandedOn.x + impulse.x, m_watchedHandedOn.y + impulse.y};
         }
     }
 }

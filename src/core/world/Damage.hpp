@@ -24,6 +24,9 @@ public:
     void applyStep(int watched);
     /// What the watched entity gave back by breaking in the last applyStep (N s; zero when it held).
     const Vec2& watchedRefund() const { return m_watchedRefund; }
+    /// What the watched entity, a block that broke in the last applyStep, handed on to the bodies it was pushing
+    /// (N s; zero when it held): the rest of its momentum left with its splinters.
+    const Vec2& watchedHandedOn() const { return m_watchedHandedOn; }
 
     /// A radial blast at (x, y): impulse impulseNs (1 - d / R) on every block and pig whose centre is within R, taken
     /// as damage too; appends each push to impulses when given.
@@ -45,7 +48,7 @@ private:
     /// What each breaking body gave back is added to givenBack (per entity).
     void refundBreakingContacts(const std::vector<double>& keptShare, int watched, std::vector<b2Vec2>& givenBack);
     /// A breaking block's momentum goes on to the bodies it was pushing (WorldSettings::handOnMomentum).
-    void handOnMomentum(const std::vector<double>& keptShare, const std::vector<b2Vec2>& givenBack);
+    void handOnMomentum(const std::vector<double>& keptShare, const std::vector<b2Vec2>& givenBack, int watched);
     DefeatCause causeOf(int index) const;
     void damageEntity(int index, double impulseNs, const DefeatCause& cause);
 
@@ -54,6 +57,7 @@ private:
     std::vector<int> m_cratesToExplode; ///< TNT crates that broke in this step, blasting after damage
     std::vector<int> m_bullets;         ///< blocks and pigs a blast made bullets, until they slow down
     Vec2 m_watchedRefund{};
+    Vec2 m_watchedHandedOn{};
 };
 
 } // namespace abalike

@@ -55,6 +55,12 @@ Vec2 FirstImpact::birdChange() const
     return {birdMassKg * (birdAfter.vx - birdBefore.vx), birdMassKg * (birdAfter.vy - birdBefore.vy)};
 }
 
+Vec2 FirstImpact::exchanged() const
+{
+    const Vec2 bird = birdChange();
+    return {balance.birdOtherContacts.x - bird.x, balance.birdOtherContacts.y - bird.y};
+}
+
 Vec2 FirstImpact::bodyChange() const
 {
     return {bodyMassKg * (bodyAfter.vx - bodyBefore.vx), bodyMassKg * (bodyAfter.vy - bodyBefore.vy)};
@@ -82,7 +88,7 @@ std::optional<double> FirstImpact::restitution() const
     return std::max(0.0, -closing(birdAfter, bodyAfter) / before);
 }
 
-void ImpactRecorder::finishStep(const Vec2& refund, int birdIndex)
+void ImpactRecorder::finishStep(const Vec2& refund, const Vec2& handedOn, int birdIndex)
 {
     if (m_pending < 0 || !m_impact)
         return;
@@ -98,6 +104,7 @@ void ImpactRecorder::finishStep(const Vec2& refund, int birdIndex)
         m_impact->bodyAfter.vx -= refund.x / m_impact->bodyMassKg;
         m_impact->bodyAfter.vy -= refund.y / m_impact->bodyMassKg;
         givenBack = refund;
+        m_impact->handedOn = handedOn;
     }
     if (birdIndex >= 0)
         m_impact->birdAfter = velocityOf(*m_bodies.entity(birdIndex).body);
@@ -161,6 +168,20 @@ void ImpactRecorder::record(int birdIndex, int otherIndex, double tS)
     // The bird got the opposite of the push it gave; the rest of its contact impulses came from elsewhere.
     impact.balance.birdOtherContacts = onBird.contacts + onBody.fromBird;
     impact.balance.gravity = onBody.gravity + onBird.gravity;
+    const std::vector<Entity>& entities = m_bodies.entities();
+    for (std::size_t i = 0; i < entities.size(); ++i)
+    {
+        const int index = static_cast<int>(i);
+        const Vec2 pushed = ledger.account(index).fromBird;
+        if (index == otherIndex || index == birdIndex || (pushed.x == 0.0 && pushed.y == 0.0))
+            continue;
+        const Entity& partner = entities[i];
+        impact.partners.push_back({partner.kind, partner.defIndex,
+                                   partner.kind == EntityKind::Ground    ? std::string("ground")
+                                   : partner.kind == EntityKind::Terrain ? std::string("terrain")
+                                                                         : partner.typeName,
+                                   pushed});
+    }
     m_birdAfterSolver = impact.birdAfter;
     m_impact = impact;
     m_pending = otherIndex; // finishStep completes the record once damage is applied

@@ -61,7 +61,7 @@ void GameWorld::step()
     m_birds->afterStep(birdStart);
     m_damage->releaseSlowBullets();
     m_damage->applyStep(m_impacts->pendingEntity());
-    m_impacts->finishStep(m_damage->watchedRefund(), m_birds->birdIndex());
+    m_impacts->finishStep(m_damage->watchedRefund(), m_damage->watchedHandedOn(), m_birds->birdIndex());
     removeOutOfBounds();
     m_birds->updateRest();
     fuseAbility();

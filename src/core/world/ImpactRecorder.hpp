@@ -26,7 +26,7 @@ public:
     /// The body of an impact recorded in this step until finishStep (-1 when none): damage watches its refund.
     int pendingEntity() const { return m_pending; }
     /// After damage: whether the body broke, what it gave back (refund, N s), the bird's velocity after the step.
-    void finishStep(const Vec2& refund, int birdIndex);
+    void finishStep(const Vec2& refund, const Vec2& handedOn, int birdIndex);
 
     const std::optional<FirstImpact>& impact() const { return m_impact; }
 
