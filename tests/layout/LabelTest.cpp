@@ -28,7 +28,7 @@ std::string joinedLines(const std::vector<std::string>& lines)
 TEST(Label, ACardShortOfRoomKeepsWholeSentencesOnly)
 {
     const sf::Font& font = labelFont();
-    const std::string text = "Press G. The chart shows how far this bird lands at every angle, at the power you have "
+    const std::string text = "Press G. The chart shows how far this bird lands at every angle, at the pull you have "
                              "now. Is 45 degrees the best? Not from a height!";
     const float width = measureText(font, utf8("The chart shows how far this bird"), 16).x;
     const std::vector<std::string> all = wrapText(font, text, 16, width);
@@ -37,7 +37,7 @@ TEST(Label, ACardShortOfRoomKeepsWholeSentencesOnly)
     EXPECT_EQ(wrapWholeSentences(font, text, 16, width, all.size()), all);
     // One line short: the last sentence goes whole, never a part of it.
     EXPECT_EQ(joinedLines(wrapWholeSentences(font, text, 16, width, all.size() - 1)),
-              "Press G. The chart shows how far this bird lands at every angle, at the power you have now. Is 45 "
+              "Press G. The chart shows how far this bird lands at every angle, at the pull you have now. Is 45 "
               "degrees the best?");
     // One line: the first sentence only; no line: nothing.
     EXPECT_EQ(joinedLines(wrapWholeSentences(font, text, 16, width, 1)), "Press G.");

@@ -130,6 +130,9 @@ TEST(TextWalkUnit, TheChecksFindWhatTheyLookFor)
     EXPECT_TRUE(universityTermIn("restitution e = separating / closing speed").has_value());
     EXPECT_TRUE(universityTermIn("spin 3.1 rad/s").has_value());
     EXPECT_FALSE(universityTermIn("a chordata of subtoitles").has_value()); // whole words only
+    EXPECT_EQ(universityTermIn("balance off by 2.1e-07 J"), "scientific notation");
+    EXPECT_EQ(universityTermIn("118 steps, 473 force evaluations"), "evaluation");
+    EXPECT_FALSE(universityTermIn("the free energy at 12 m, 3 birds").has_value()) << "an e after a letter is a word";
 }
 
 class TextWalk : public ::testing::TestWithParam<std::string>

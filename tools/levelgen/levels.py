@@ -251,9 +251,9 @@ def l4_8():
     cage(s, 33.6, 0, 1.0, "wood", "small")
     return level("4-4", "Stone Fortress",
                  "Stone is heavy ({density:stone} kg/m^3) and tough: it takes {strength:stone} N s to break, more "
-                 "than a red bird at full speed carries ({p_max:red} N s). Knock the walls over instead and let their "
-                 "weight fall on the pigs.",
-                 ["Stone will not break: hit the top of the keep so it topples."],
+                 "than a red bird at full speed carries ({p_max:red} N s). Knock the walls over and let their "
+                 "weight fall on the pigs, or tap the black bird beside them: its blast breaks stone.",
+                 ["No bird's hit breaks stone: hit the top of the keep so it topples."],
                  ["black", "black", "red", "yellow", "red"], s, (60.0, 19.09))
 
 
@@ -388,8 +388,8 @@ def l6_5():
     cage(s, 38.1, 1.5, 1.0, "wood", None)
     tnt(s, 33.55, 1.5 + 2.25, 0.5)
     return level("6-5", "Citadel",
-                 "A citadel of stone keeps and wooden walls. Stone will not break ({strength:stone} N s), but a keep "
-                 "that topples crushes what is under it: look for the weak floor.",
+                 "A citadel of stone keeps and wooden walls. No bird's hit breaks stone ({strength:stone} N s), only "
+                 "the black bird's blast; but a keep that topples crushes what is under it: look for the weak floor.",
                  ["The TNT sits in the keep's first floor."],
                  ["black", "red", "red", "yellow", "black"], s, (40.0, 21.21))
 
@@ -465,8 +465,8 @@ def l6_10():
     top = pyramid(s, 57, 0, 4, 0.8, "wood")
     s.pig("small", 57, top)
     return level("6-7", "The Last Fortress",
-                 "Two stone castles with helmeted pigs: every idea of the campaign at once. Stone does not break, it "
-                 "topples; heavy birds carry momentum; TNT between the castles reaches both.",
+                 "Two stone castles with helmeted pigs: every idea of the campaign at once. Stone breaks only in a "
+                 "blast, but it topples; heavy birds carry momentum; TNT between the castles reaches both.",
                  ["The TNT between the castles is within reach of both.",
                   "The crate beside the right castle's far tower reaches the pig inside it."],
                  ["black", "red", "black", "red", "red"], s, (35.0, 21.21))

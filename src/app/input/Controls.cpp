@@ -9,7 +9,7 @@ const std::vector<ControlBinding>& controlTable()
     static const std::vector<ControlBinding> table{
         {"Aiming", "Angle up / down (0.5° steps; Shift: 5°; Alt: 0.1°)", "Up / Down", "drag the bird back: direction",
          "left stick or D-pad up / down (hold LB: 5°)"},
-        {"Aiming", "Power up / down (1 % steps; Shift: 10 %; Alt: 0.2 %)", "Right / Left",
+        {"Aiming", "Pull further / less (1 % steps; Shift: 10 %; Alt: 0.2 %)", "Right / Left",
          "drag the bird back: distance", "left stick or D-pad right / left (hold LB: 10 %)"},
         {"Aiming", "Launch", "Space or Enter", "let go of the bird", "A"},
         {"In flight", "Use the bird's ability", "Space or Enter", "click", "A"},

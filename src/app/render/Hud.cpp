@@ -283,7 +283,7 @@ std::vector<Hud::BottomText> Hud::bottomText(sf::Vector2u size, float scale, con
     {
         texts.push_back({wrapText(*m_font, text, textSize, maxWidth), textSize, colour, name, kind});
     };
-    add("Mouse: drag the bird back   \u00B7   Keys: \u2191\u2193 angle, \u2190\u2192 power, Space launch   \u00B7   "
+    add("Mouse: drag the bird back   \u00B7   Keys: \u2191\u2193 angle, \u2190\u2192 pull, Space launch   \u00B7   "
         "R restart   \u00B7   Esc pause   \u00B7   F1 help",
         scaled(scale, 14.0f), palette::kTextDim, "keys", TextKind::Interface);
     if (!level.hints.empty())

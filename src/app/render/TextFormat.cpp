@@ -11,7 +11,19 @@ std::string formatFixed(double value, int decimals)
 {
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-    return buffer;
+    std::string text = buffer;
+    // A small negative value rounds to "-0.00": a class reads that as a number below zero.
+    if (text.starts_with('-') && text.find_first_not_of("-0.") == std::string::npos)
+        text.erase(0, 1);
+    return text;
+}
+
+std::string formatSigned(double value, int decimals)
+{
+    const std::string text = formatFixed(value, decimals);
+    if (text.find_first_not_of("0.") == std::string::npos)
+        return text;
+    return text.starts_with('-') ? "\u2212" + text.substr(1) : "+" + text;
 }
 
 std::string formatPoints(int points)

@@ -7,6 +7,8 @@ namespace abalike::app
 
 /// A number with a fixed count of decimals ("21.0").
 std::string formatFixed(double value, int decimals);
+/// formatFixed with its sign always shown ("+0.12", "\u22120.12"), and none on a value that rounds to zero ("0.00").
+std::string formatSigned(double value, int decimals);
 
 /// Points with thousands separators ("25,000").
 std::string formatPoints(int points);

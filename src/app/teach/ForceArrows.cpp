@@ -30,12 +30,14 @@ double length(const Vec2& v)
     return std::hypot(v.x, v.y);
 }
 
-/// "2.1e-07": how small the balance's residual is.
-std::string scientific(double value)
+/// How well the energy balance closes, in numbers a class reads (no "2.1e-07"): within a thousandth of a joule, or
+/// the joules it is off by.
+std::string balanceText(double residualJ)
 {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1e", std::abs(value));
-    return text;
+    constexpr double kShownJ = 0.001;
+    if (std::abs(residualJ) < 0.5 * kShownJ)
+        return "balance closes (within 0.001 J)";
+    return "balance off by " + formatFixed(std::abs(residualJ), 3) + " J";
 }
 
 } // namespace
@@ -165,8 +167,8 @@ sf::FloatRect drawEnergyBars(sf::RenderTarget& target, const sf::Font& font, sf:
     // Wide enough for the bars' rows, the title and the balance line under them.
     const std::string title =
         atContact ? "Energy at the first contact" : "Energy: at launch = kinetic + potential + drag";
-    const std::string balance = "at launch (kinetic + potential) " + formatFixed(launch, 0) + " J   balance off by " +
-                                scientific(energy.balanceResidualJ()) + " J";
+    const std::string balance =
+        "at launch (kinetic + potential) " + formatFixed(launch, 0) + " J   " + balanceText(energy.balanceResidualJ());
     const float width = std::max({2.0f * pad + labelWidth + barWidth + valueWidth + 20.0f * scale,
                                   2.0f * pad + measureText(font, utf8(title), titleSize).x,
                                   2.0f * pad + measureText(font, utf8(balance), rowSize).x});

@@ -135,7 +135,7 @@ Guide materialsLesson(const LevelDef& level, const Catalog& base)
                   return brokenMaterial(c, "ice");
               }},
              {"Now the wood (" + strength("wood") + ") and the stone (" + strength("stone") +
-                  "): stone needs a heavy, fast hit, or a way around it.",
+                  "): no red bird's hit breaks stone, so topple it or go around it.",
               won}},
             "Strength and density decide what breaks: hit ice anywhere, wood hard, stone only when you must."};
 }
@@ -163,12 +163,12 @@ Guide lesson(const std::string& id, const LevelDef& level, const Catalog& catalo
 {
     if (id == "lesson-angle")
         return {"Lesson: angle and range",
-                {{"Press G: the chart shows how far this bird lands at every angle, at the power you have now.",
+                {{"Press G: the chart shows how far this bird lands at every angle, at the pull you have now.",
                   [](const GuideContext& c)
                   {
                       return c.chartOn;
                   }},
-                 {"Pull to full power (\u2192 or a long drag), then launch at 30\u00B0 or lower.",
+                 {"Pull all the way back (\u2192 or a long drag), then launch at 30\u00B0 or lower.",
                   [](const GuideContext& c)
                   {
                       return launchedAt(c, [](double a) { return a <= 32.0; });
@@ -179,7 +179,7 @@ Guide lesson(const std::string& id, const LevelDef& level, const Catalog& catalo
                   {
                       return launchedAt(c, [](double a) { return a >= 58.0; });
                   }},
-                 {"Reach the pig at full power: only angles near the chart's ring get there.", won}},
+                 {"Reach the pig at full pull: only angles near the chart's ring get there.", won}},
                 "In vacuum from the ground 45\u00B0 throws farthest. From a height, or in air, a little lower wins: "
                 "try G on the other levels."};
     if (id == "lesson-mass")
@@ -252,7 +252,7 @@ Guide tutorialGuide()
             {{"Aim: drag the bird back from the slingshot with the mouse (the direction sets the angle), or press "
               "\u2191 and \u2193.",
               angleChanged},
-             {"Power: pull further back, or press \u2192 and \u2190. The top panel shows how far the band is "
+             {"Pull: drag the bird further back, or press \u2192 and \u2190. The top panel shows how far the band is "
               "pulled, its force, the energy it stores and the launch speed that energy gives the bird.",
               powerChanged},
              {"The white dots are the preview: where the bird will fly. Let go of the mouse, or press Space, to "

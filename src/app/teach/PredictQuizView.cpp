@@ -35,9 +35,15 @@ bool isDigitKey(sf::Keyboard::Key key)
            (key >= sf::Keyboard::Numpad0 && key <= sf::Keyboard::Numpad9) || key == sf::Keyboard::Period;
 }
 
+/// Times to the millisecond (a flight's time differs from the formula's in the third decimal), lengths to the cm.
+int quantityDecimals(QuizQuantity quantity)
+{
+    return quantity == QuizQuantity::FlightTime ? 3 : 2;
+}
+
 std::string withQuantityUnit(double value, QuizQuantity quantity)
 {
-    return withUnit(value, 2, quizQuantityUnit(quantity));
+    return withUnit(value, quantityDecimals(quantity), quizQuantityUnit(quantity));
 }
 } // namespace
 
@@ -163,9 +169,9 @@ sf::FloatRect PredictQuizView::draw(sf::RenderTarget& target, const sf::Font& fo
         rows.push_back({r.quantity == QuizQuantity::MaxHeight ? "  (its centre, above the launch height)"
                                                               : "  (until its centre is back at the launch height)",
                         ""});
-        rows.push_back({"  your error", (error >= 0.0 ? "+" : "") + withQuantityUnit(error, r.quantity) + " (" +
-                                            formatFixed(r.measured != 0.0 ? 100.0 * error / r.measured : 0.0, 1) +
-                                            " %)"});
+        rows.push_back(
+            {"  your error", formatSigned(error, quantityDecimals(r.quantity)) + " " + quizQuantityUnit(r.quantity) +
+                                 " (" + formatSigned(r.measured != 0.0 ? 100.0 * error / r.measured : 0.0, 1) + " %)"});
     }
     // It goes down past the panels above it by its own width (narrower than its column, it often fits beside a wide
     // panel of the other column). In a window too small for the whole card it keeps the rows that have room (the aim

@@ -24,8 +24,10 @@ sf::FloatRect drawWhyPanel(sf::RenderTarget& target, const sf::Font& font, sf::V
         rows.push_back({"1/60 s at a time and checks each step for a hit", ""});
     }
     if (preview != nullptr)
-        rows.push_back({"  this aim", std::to_string(preview->steps) + " steps, " +
-                                          std::to_string(preview->rhsEvaluations) + " force evaluations"});
+        rows.push_back(
+            {"  this aim",
+             std::to_string(preview->steps) + " steps" +
+                 (university ? ", " + std::to_string(preview->rhsEvaluations) + " force evaluations" : std::string())});
     rows.push_back({university ? "World: the bird rides the same RK4 states until it"
                                : "World: the bird flies the very same steps until it",
                     ""});
@@ -55,9 +57,9 @@ sf::FloatRect drawWhyPanel(sf::RenderTarget& target, const sf::Font& font, sf::V
         }
     }
     rows.push_back({"They part only if an ability changes the flight, above", ""});
-    rows.push_back({university ? "108 m/s (Box2D sub-steps), or by float rounding (\u00B5m)"
-                               : "108 m/s (smaller steps), or by rounding (\u00B5m)",
-                    ""});
+    rows.push_back(
+        {university ? "108 m/s (Box2D sub-steps), or by float rounding (\u00B5m)" : "108 m/s, or by rounding (\u00B5m)",
+         ""});
     const TextPanel panel("Why preview and world can differ", std::move(rows));
     if (!fullPanelFits(target, {topLeft, panel.measure(font, titleSize, rowSize, scale)}, "why"))
     {

@@ -8,10 +8,22 @@ namespace abalike
 namespace
 {
 
-constexpr std::array<std::string_view, 17> kTerms = {
-    "RK4",   "Runge",      "Kutta",         "Box2D",       "odeint", "TOI",    "time of impact", "sub-step", "substep",
-    "chord", "integrator", "semi-implicit", "restitution", "rad/s",  "dopri5", "sagitta",        "b2World",
+constexpr std::array<std::string_view, 21> kTerms = {
+    "RK4",      "Runge",   "Kutta",   "Box2D",      "odeint",        "TOI",           "time of impact",
+    "sub-step", "substep", "chord",   "integrator", "semi-implicit", "restitution",   "rad/s",
+    "dopri5",   "sagitta", "b2World", "evaluation", "step size",     "smaller steps", "scientific notation",
 };
+
+/// "2.1e-07", "4.5e-13": a number in scientific notation, which a school course does not read yet.
+bool scientificNumberAt(std::string_view text, std::size_t at)
+{
+    if (at == 0 || !std::isdigit(static_cast<unsigned char>(text[at - 1])) || (text[at] != 'e' && text[at] != 'E'))
+        return false;
+    std::size_t next = at + 1;
+    if (next < text.size() && (text[next] == '-' || text[next] == '+'))
+        ++next;
+    return next < text.size() && std::isdigit(static_cast<unsigned char>(text[next]));
+}
 
 bool isWordCharacter(char c)
 {
@@ -48,6 +60,9 @@ std::span<const std::string_view> universityOnlyTerms()
 
 std::optional<std::string_view> universityTermIn(std::string_view text)
 {
+    for (std::size_t at = 0; at < text.size(); ++at)
+        if (scientificNumberAt(text, at))
+            return kTerms.back();
     for (const std::string_view term : kTerms)
     {
         const bool caseMatters = exact(term);
