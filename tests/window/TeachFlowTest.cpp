@@ -260,8 +260,8 @@ TEST_F(TeachFlow, TheExportKeyWritesEveryShotAsCsvInTheDataFolder)
     std::ifstream in(first);
     std::string header;
     std::getline(in, header);
-    EXPECT_EQ(header,
-              "shot,t_s,x_m,y_m,vx_mps,vy_mps,ax_mps2,ay_mps2,speed_mps,kinetic_j,potential_j,drag_work_j,contact");
+    EXPECT_EQ(header, "shot,t_s,x_m,y_m,vx_mps,vy_mps,ax_mps2,ay_mps2,speed_mps,kinetic_j,potential_j,drag_work_j,"
+                      "contact,contact_acts");
     int rows = 0;
     for (std::string line; std::getline(in, line);)
         rows += line.rfind("1,", 0) == 0 ? 1 : 0;

@@ -42,7 +42,8 @@ std::string touchedNames(const LevelDef& level, const std::vector<BodyRef>& touc
 std::string shotTableCsv(const GameSession& session)
 {
     std::ostringstream csv;
-    csv << "shot,t_s,x_m,y_m,vx_mps,vy_mps,ax_mps2,ay_mps2,speed_mps,kinetic_j,potential_j,drag_work_j,contact\n";
+    csv << "shot,t_s,x_m,y_m,vx_mps,vy_mps,ax_mps2,ay_mps2,speed_mps,kinetic_j,potential_j,drag_work_j,contact,"
+           "contact_acts\n";
     csv << std::setprecision(10);
     const double dt = session.world().dt();
     const double g = session.level().environment.gravity;
@@ -102,8 +103,23 @@ std::string shotTableCsv(const GameSession& session)
         double lastDragPower = 0.0;
         double lastVx = 0.0;
         double lastVy = 0.0;
+        // A row's differences span the steps ending at rows i - 1, i and i + 1: a contact in any of them acts on
+        // the row's velocity and acceleration.
+        const auto touchedIn = [&touches](std::size_t row)
+        {
+            return row < touches.size() && !touches[row].empty();
+        };
+        const auto contactActs = [&](std::size_t row)
+        {
+            return touchedIn(row) || (row > 0 && touchedIn(row - 1)) || touchedIn(row + 1);
+        };
         for (std::size_t i = 0; i < path.size(); ++i)
         {
+            const bool exact = replay && path[i].timeS <= replayUntil + 1e-9;
+            // A row past the replay needs the step after it for its central difference: the table (an export made
+            // in flight too) ends at the last whole step instead of a one-sided half step.
+            if (!exact && i > 0 && i + 1 >= path.size())
+                break;
             const std::size_t a = i == 0 ? 0 : i - 1;
             const std::size_t b = i + 1 < path.size() ? i + 1 : i;
             const double span = path[b].timeS - path[a].timeS;
@@ -128,7 +144,7 @@ std::string shotTableCsv(const GameSession& session)
             }
             double x = path[i].position.x;
             double y = path[i].position.y;
-            const bool exact = replay && path[i].timeS <= replayUntil + 1e-9;
+            const bool acts = !exact && contactActs(i);
             if (exact)
             {
                 const FlightEnergy e = replay->at(path[i].timeS);
@@ -144,6 +160,13 @@ std::string shotTableCsv(const GameSession& session)
             // The air's force on the bird: the model's acceleration less gravity; its power against the motion.
             const FlightState s{{x, y}, {vx, vy}};
             const FlightState rate = model.rightHandSide(path[i].timeS, s);
+            if (!exact && !acts)
+            {
+                // In free flight after a contact (a bounce, a fall) the world flies the same model: its acceleration,
+                // not a difference of float positions (-9.8098 for -9.81).
+                ax = rate.velocity.x;
+                ay = rate.velocity.y;
+            }
             const double dragPower = -m * (rate.velocity.x * vx + (rate.velocity.y + g) * vy);
             if (i > 0 && !exact)
                 dragWork += 0.5 * (dragPower + lastDragPower) * (path[i].timeS - path[i - 1].timeS);
@@ -153,7 +176,7 @@ std::string shotTableCsv(const GameSession& session)
             lastVy = vy;
             csv << k + 1 << ',' << path[i].timeS << ',' << x << ',' << y << ',' << vx << ',' << vy << ',' << ax << ','
                 << ay << ',' << speed << ',' << 0.5 * m * speed * speed << ',' << m * g * y << ',' << dragWork << ','
-                << touchedNames(session.level(), touches[i]) << '\n';
+                << touchedNames(session.level(), touches[i]) << ',' << (acts ? 1 : 0) << '\n';
         }
     }
     return csv.str();
