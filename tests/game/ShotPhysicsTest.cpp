@@ -173,10 +173,11 @@ TEST(ShotFeedback, EveryNumberOfTheVacuumSentenceIsTheClosedForm)
     EXPECT_NEAR(n[9], v * v / g, 0.06) << sentence;
 }
 
-TEST(ShotFeedback, TheDragSentenceCountsTheKineticEnergyTheBirdLaunchedWith)
+TEST(ShotFeedback, TheDragSentenceCountsTheLaunchEnergyTheEnergyPanelShows)
 {
-    // "Air drag took L J of the K J kinetic energy the bird launched with (P %)": K = 1/2 m v^2, P = 100 L / K, and L
-    // is the energy balance's drag loss at the first contact.
+    // "Air drag took L J of the E J the bird launched with (kinetic + potential, P %)": E = 1/2 m v^2 + m g y, the
+    // launch energy the energy panel shows beside the sentence (one number on the screen), P = 100 L / E, and L is
+    // the energy balance's drag loss at the first contact.
     const LevelDef air = campaignLevel("3-2-thick-air.json");
     const auto session = simulateShots(air, {{air.referenceShot->angleDeg, air.referenceShot->speedMps}});
     const ShotRecord& shot = session->shots().at(0);
@@ -188,10 +189,11 @@ TEST(ShotFeedback, TheDragSentenceCountsTheKineticEnergyTheBirdLaunchedWith)
     ASSERT_FALSE(sentence.empty());
     const std::vector<double> n = numbersIn(sentence);
     ASSERT_GE(n.size(), 3u) << sentence;
-    const double kinetic = 0.5 * 4.0 * shot.speedMps * shot.speedMps;
+    const double launch = 0.5 * 4.0 * shot.speedMps * shot.speedMps + shot.energy->launchPotentialJ;
+    EXPECT_GT(shot.energy->launchPotentialJ, 1.0) << "the test tells the two launch energies apart";
     EXPECT_NEAR(n[0], shot.energy->dragLossJ, 0.5) << sentence;
-    EXPECT_NEAR(n[1], kinetic, 0.5) << sentence;
-    EXPECT_NEAR(n[2], 100.0 * shot.energy->dragLossJ / kinetic, 0.5) << sentence;
+    EXPECT_NEAR(n[1], launch, 0.5) << sentence;
+    EXPECT_NEAR(n[2], 100.0 * shot.energy->dragLossJ / launch, 0.5) << sentence;
 }
 
 } // namespace

@@ -154,7 +154,8 @@ sf::FloatRect drawEnergyBars(sf::RenderTarget& target, const sf::Font& font, sf:
         {"kinetic \u00BD m v\u00B2", energy.kineticJ, teach::kKinetic},
         {"potential m g y", energy.potentialJ, teach::kPotential},
         {"kinetic + potential", energy.kineticJ + energy.potentialJ, teach::kTotal},
-        {"taken by drag", energy.dragLossJ, teach::kLoss},
+        // A tailwind does work on the bird instead: never "taken by drag -1 J".
+        {energy.dragLossJ >= 0.0 ? "taken by drag" : "added by the wind", std::abs(energy.dragLossJ), teach::kLoss},
     };
     const float pad = 8.0f * scale;
     const float rowHeight = font.getLineSpacing(rowSize);

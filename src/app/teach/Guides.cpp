@@ -212,7 +212,8 @@ Guide lesson(const std::string& id, const LevelDef& level, const Catalog& catalo
         return {"Lesson: momentum and energy",
                 {overlayStep("after the first impact a panel shows momentum and energy."),
                  {"Hit the big wood block.", hitABody},
-                 {"Read the impact panel: how hard the bird pushed the block, both changes of momentum and what "
+                 {"Read the impact panel: the impulse bird and block pushed each other with, both changes of momentum, "
+                  "what "
                   "the block stands on pushed, the kinetic energy lost (to heat, sound and deformation), and the "
                   "impulse the block took against its strength. Then take out the pig.",
                   won}},

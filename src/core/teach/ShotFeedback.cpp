@@ -83,23 +83,28 @@ std::vector<Said> compose(const LevelDef& level, const Catalog& catalog, const S
         RangeLaunch vacuum = launch;
         vacuum.model.linearDrag = vacuum.model.quadraticDrag = 0.0;
         const std::optional<double> airless = rangeAtAngle(vacuum, shot.angleDeg);
-        const double launchJ = shot.energy ? shot.energy->launchKineticJ : 0.0;
+        // The launch energy the energy panel shows beside it: kinetic + potential, one number on the screen.
+        const double launchJ = shot.energy ? shot.energy->launchKineticJ + shot.energy->launchPotentialJ : 0.0;
+        // Two landing points that print alike are not worth comparing ("1.7 m away instead of 1.7 m").
+        const bool landsElsewhere = airless && range && std::abs(*airless - *range) >= 0.05;
         if (shot.energy && launchJ > 0.0 && std::abs(shot.energy->dragLossJ) >= kDragShareWorth * launchJ)
         {
             const double loss = shot.energy->dragLossJ;
-            std::string text = loss >= 0.0 ? format("Air drag took %.0f J of the %.0f J kinetic energy the bird "
-                                                    "launched with (%.0f %%) before the first contact",
+            std::string text = loss >= 0.0 ? format("Air drag took %.0f J of the %.0f J the bird launched with "
+                                                    "(kinetic + potential, %.0f %%) before the first contact",
                                                     loss, launchJ, 100.0 * loss / launchJ)
                                            : format("The wind pushed %.0f J into the flight on top of the %.0f J "
-                                                    "kinetic energy the bird launched with, before the first contact",
+                                                    "the bird launched with (kinetic + potential), before the first "
+                                                    "contact",
                                                     -loss, launchJ);
-            if (airless && range)
-                text += format("; in vacuum this launch would land %.1f m away instead of %.1f m", *airless, *range);
+            if (landsElsewhere)
+                text += format("; in vacuum its centre would come down to the ground %.1f m away, in this air %.1f m",
+                               *airless, *range);
             sentences.push_back({text + ".", loss >= 0.0 ? format("Air drag took %.0f %% of the bird's launch energy.",
                                                                   100.0 * loss / launchJ)
                                                          : format("The wind pushed %.0f J into the flight.", -loss)});
         }
-        else if (airless && range && std::abs(*airless - *range) >= kWindShiftWorthM)
+        else if (landsElsewhere && std::abs(*airless - *range) >= kWindShiftWorthM)
             sentences.push_back(
                 {format("In vacuum this launch would land %.1f m away instead of %.1f m.", *airless, *range),
                  format("In vacuum it would land %.1f m away, not %.1f m.", *airless, *range)});
