@@ -116,5 +116,37 @@ TEST(Claims, AnOutcomeCountsTheAimsOfItsFanThatDoWhatTheTextSays)
     EXPECT_EQ(low.aimsThatDo, 0) << low.message;
 }
 
+TEST(Claims, StoneThatCannotBreakIsPlayedWithEveryBirdTheLevelHas)
+{
+    // The teacher's finding: "Stone will not break" on levels with a black bird, whose blast breaks stone. Played with
+    // every bird, over a grid of aims and the fan around each, abilities at contact and unused, such a claim fails
+    // and names the bird that breaks it; on the materials lesson (red birds only) a red bird's hit never does.
+    const LevelDef keep = loadLevel(kLevels + "4-3-stone-keep.json", Catalog::builtin());
+    ClaimDef claim;
+    claim.about = "/hints/0";
+    claim.cannotBreak = CannotBreakClaimDef{"stone", false};
+    const ClaimResult any = evaluateClaim(claim, keep, Catalog::builtin());
+    EXPECT_FALSE(any.holds) << any.message;
+    EXPECT_GT(any.left, 0.0);
+    EXPECT_EQ(any.right, 2.0 * 8 * 3 * 9 + 8 * 3 * 9) << "the black bird with and without its blast, the red without";
+    // Only the bird's own hit: the red bird's never breaks stone there, the heavy black bird's seldom does.
+    claim.cannotBreak->byBirdOnly = true;
+    const ClaimResult hit = evaluateClaim(claim, keep, Catalog::builtin());
+    EXPECT_FALSE(hit.holds) << hit.message;
+    EXPECT_NE(hit.message.find("by the black bird"), std::string::npos) << hit.message;
+    EXPECT_LT(hit.left, any.left);
+
+    const LevelDef lesson = loadLevel(kLevels + "lessons/lesson-materials.json", Catalog::builtin());
+    ASSERT_EQ(lesson.claims.size(), 1u);
+    ASSERT_TRUE(lesson.claims.front().cannotBreak.has_value());
+    EXPECT_TRUE(lesson.claims.front().cannotBreak->byBirdOnly);
+    const ClaimResult red = evaluateClaim(lesson.claims.front(), lesson, Catalog::builtin());
+    EXPECT_TRUE(red.holds) << red.message;
+    // Stone does break there, when a hit topples a post onto the ground: "any cause" is a different promise.
+    ClaimDef anyCause = lesson.claims.front();
+    anyCause.cannotBreak->byBirdOnly = false;
+    EXPECT_FALSE(evaluateClaim(anyCause, lesson, Catalog::builtin()).holds);
+}
+
 } // namespace
 } // namespace abalike

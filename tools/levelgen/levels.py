@@ -10,6 +10,13 @@ EARTH_AIR = 1.2
 MOON_SLINGSHOT = {"x": 0, "y": 1.5}  # the Moon's band: the catalog's
 
 
+def claim_form(what):
+    """A claim's key: a comparison ("holds"), a material no shot breaks ("cannot_break") or an outcome."""
+    if isinstance(what, str):
+        return "holds"
+    return "cannot_break" if "material" in what else "outcome"
+
+
 def level(id_, title, concept, hints, birds, scene, reference_shot, slingshot=None, environment=None, theme=None,
           extra=None, claims=None):
     body = {
@@ -21,8 +28,7 @@ def level(id_, title, concept, hints, birds, scene, reference_shot, slingshot=No
         "concept": concept,
         "hints": hints,
         # A claim is (about, "comparison") or (about, {outcome}) (levels/README.md, "Claims").
-        **({"claims": [{"about": about, ("holds" if isinstance(what, str) else "outcome"): what}
-                       for about, what in claims]} if claims else {}),
+        **({"claims": [{"about": about, claim_form(what): what} for about, what in claims]} if claims else {}),
         "slingshot": slingshot or {"x": 0, "y": 1.5},
         "birds": birds,
         "blocks": scene.blocks,
@@ -253,7 +259,7 @@ def l4_8():
                  "Stone is heavy ({density:stone} kg/m^3) and tough: it takes {strength:stone} N s to break, more "
                  "than a red bird at full speed carries ({p_max:red} N s). Knock the walls over and let their "
                  "weight fall on the pigs, or tap the black bird beside them: its blast breaks stone.",
-                 ["No bird's hit breaks stone: hit the top of the keep so it topples."],
+                 ["A hit seldom breaks stone: hit the top of the keep so it topples."],
                  ["black", "black", "red", "yellow", "red"], s, (60.0, 19.09))
 
 
@@ -388,10 +394,12 @@ def l6_5():
     cage(s, 38.1, 1.5, 1.0, "wood", None)
     tnt(s, 33.55, 1.5 + 2.25, 0.5)
     return level("6-5", "Citadel",
-                 "A citadel of stone keeps and wooden walls. No bird's hit breaks stone ({strength:stone} N s), only "
-                 "the black bird's blast; but a keep that topples crushes what is under it: look for the weak floor.",
+                 "A citadel of stone keeps and wooden walls. Stone takes {strength:stone} N s, more than a red bird's "
+                 "hit can push ({p_rebound:red} N s); the black bird's blast breaks it, and a keep that topples "
+                 "crushes what is under it: look for the weak floor.",
                  ["The TNT sits in the keep's first floor."],
-                 ["black", "red", "red", "yellow", "black"], s, (40.0, 21.21))
+                 ["black", "red", "red", "yellow", "black"], s, (40.0, 21.21),
+                 claims=[("/concept", "p_rebound:red < strength:stone")])
 
 
 def l6_6():
@@ -465,8 +473,8 @@ def l6_10():
     top = pyramid(s, 57, 0, 4, 0.8, "wood")
     s.pig("small", 57, top)
     return level("6-7", "The Last Fortress",
-                 "Two stone castles with helmeted pigs: every idea of the campaign at once. Stone breaks only in a "
-                 "blast, but it topples; heavy birds carry momentum; TNT between the castles reaches both.",
+                 "Two stone castles with helmeted pigs: every idea of the campaign at once. Stone breaks in a blast, "
+                 "seldom to a hit, and it topples; heavy birds carry momentum; TNT between the castles reaches both.",
                  ["The TNT between the castles is within reach of both.",
                   "The crate beside the right castle's far tower reaches the pig inside it."],
                  ["black", "red", "black", "red", "red"], s, (35.0, 21.21))

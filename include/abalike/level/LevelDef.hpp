@@ -141,6 +141,19 @@ struct OutcomeClaimDef
     bool operator==(const OutcomeClaimDef&) const = default;
 };
 
+/// A material the level's texts say no shot breaks ("cannot_break"): played with every bird the level has, over a
+/// grid of first shots and the fan of aims around each, the bird's ability used at its first contact and not at all
+/// (levels/README.md, "Claims").
+struct CannotBreakClaimDef
+{
+    std::string material;
+    /// "cause": "bird": only a block the bird's own body breaks counts (its hit; a blast, a falling block or the
+    /// ground do not); absent: a block of the material breaking for any reason breaks the claim.
+    bool byBirdOnly = false;
+
+    bool operator==(const CannotBreakClaimDef&) const = default;
+};
+
 /// A qualitative promise one of the level's texts makes, as something the program computes for the level (`abalike
 /// check` fails when it does not hold): a comparison ("best_angle:red < calm_best_angle:red") or an outcome.
 struct ClaimDef
@@ -149,6 +162,7 @@ struct ClaimDef
     std::string holds; ///< EXPRESSION OP EXPRESSION, OP one of < > <= >=, expressions as in the placeholders; empty
                        ///< for an outcome
     std::optional<OutcomeClaimDef> outcome;
+    std::optional<CannotBreakClaimDef> cannotBreak;
 
     bool operator==(const ClaimDef&) const = default;
 };

@@ -18,6 +18,11 @@ inline constexpr double kOutcomeFanSpeedStepMps = 0.5;
 /// How long after its launch each aim of the fan is watched: a tower takes a few seconds to fall onto the next.
 inline constexpr double kOutcomeWatchS = 8.0;
 
+/// A cannot-break claim's grid of first shots, each with the fan around it: these angles at these shares of the
+/// bird's full-pull speed.
+inline constexpr double kCannotBreakAnglesDeg[] = {0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0};
+inline constexpr double kCannotBreakPulls[] = {0.7, 0.85, 1.0};
+
 /// A claim's comparison, split: LEFT OP RIGHT (levels/README.md, "Claims").
 struct ClaimParts
 {
@@ -47,7 +52,10 @@ struct ClaimResult
 };
 
 /// Computes the claim for the level: a comparison from the level's values; an outcome by playing the level's first
-/// bird at each aim of the fan around its shot (the speed kept to what the slingshot gives) for kOutcomeWatchS.
+/// bird at each aim of the fan around its shot (the speed kept to what the slingshot gives) for kOutcomeWatchS; a
+/// cannot-break claim by playing every bird the level has over the grid (kCannotBreakAnglesDeg x kCannotBreakPulls)
+/// and the fan around each shot, its ability at first contact and unused, each for kOutcomeWatchS: it holds when no
+/// block of the material breaks (by a bird's hit, with "cause": "bird") in any of them.
 ClaimResult evaluateClaim(const ClaimDef& claim, const LevelDef& level, const Catalog& catalog);
 
 } // namespace abalike

@@ -329,7 +329,10 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
         const ClaimResult claim = evaluateClaim(level.claims[i], level, Catalog::builtin());
         if (!claim.holds)
             falseClaims.push_back({item.file, 0, 0,
-                                   "/claims/" + std::to_string(i) + (level.claims[i].outcome ? "/outcome" : "/holds"),
+                                   "/claims/" + std::to_string(i) +
+                                       (level.claims[i].outcome       ? "/outcome"
+                                        : level.claims[i].cannotBreak ? "/cannot_break"
+                                                                      : "/holds"),
                                    "does not hold for this level: " + claim.message + " (so " + level.claims[i].about +
                                        " says something untrue)"});
     }

@@ -415,6 +415,30 @@ std::optional<OutcomeClaimDef> readOutcome(LevelReader& r, const json& value, co
     return outcome;
 }
 
+/// "cannot_break": {"material": NAME, "cause": "bird"}.
+std::optional<CannotBreakClaimDef> readCannotBreak(LevelReader& r, const json& value, const std::string& p,
+                                                   const Catalog& catalog)
+{
+    if (!r.object(value, p, {"material", "cause"}))
+        return std::nullopt;
+    CannotBreakClaimDef claim;
+    claim.material = r.string(value, p, "material", "", true);
+    if (!claim.material.empty() && catalog.findMaterial(claim.material) == nullptr)
+    {
+        std::vector<std::string> names;
+        for (const Material& material : catalog.materials())
+            names.push_back(material.name);
+        const auto guess = closestMatch(claim.material, names);
+        r.error(p + "/material", "unknown material \"" + claim.material + "\"" +
+                                     (guess ? " (did you mean \"" + *guess + "\"?)" : std::string()));
+    }
+    const std::string cause = r.string(value, p, "cause", "any", false);
+    if (cause != "any" && cause != "bird")
+        r.error(p + "/cause", "expected \"bird\" (only the bird's own hit counts) or \"any\", got \"" + cause + "\"");
+    claim.byBirdOnly = cause == "bird";
+    return claim;
+}
+
 void readClaims(LevelReader& r, const json& root, LevelDef& level, const Catalog& catalog)
 {
     const auto it = root.find("claims");
@@ -424,19 +448,24 @@ void readClaims(LevelReader& r, const json& root, LevelDef& level, const Catalog
     {
         const std::string p = "/claims/" + std::to_string(i);
         const json& item = (*it)[i];
-        if (!r.object(item, p, {"about", "holds", "outcome"}))
+        if (!r.object(item, p, {"about", "holds", "outcome", "cannot_break"}))
             continue;
         ClaimDef claim;
         claim.about = r.string(item, p, "about", "", true);
         const bool holds = item.contains("holds");
         const bool outcome = item.contains("outcome");
-        if (holds == outcome)
-            r.error(p, holds ? "expected \"holds\" or \"outcome\", not both"
-                             : "missing \"holds\" (a comparison) or \"outcome\" (what a shot does)");
+        const bool cannotBreak = item.contains("cannot_break");
+        const int forms = (holds ? 1 : 0) + (outcome ? 1 : 0) + (cannotBreak ? 1 : 0);
+        if (forms != 1)
+            r.error(p, forms > 1 ? "expected one of \"holds\", \"outcome\" and \"cannot_break\", not several"
+                                 : "missing \"holds\" (a comparison), \"outcome\" (what a shot does) or "
+                                   "\"cannot_break\" (a material no shot breaks)");
         if (holds)
             claim.holds = r.string(item, p, "holds", "", true);
         else if (outcome)
             claim.outcome = readOutcome(r, item["outcome"], p + "/outcome", catalog);
+        else if (cannotBreak)
+            claim.cannotBreak = readCannotBreak(r, item["cannot_break"], p + "/cannot_break", catalog);
         level.claims.push_back(std::move(claim));
     }
 }
@@ -460,7 +489,7 @@ void checkClaims(LevelReader& r, const LevelDef& level, const Catalog& catalog)
                              : "\"/concept\" or \"/hints/0\" to \"/hints/" + std::to_string(hints - 1) + "\"";
             r.error(p + "/about", "expected the text the claim backs: " + texts + ", got \"" + claim.about + "\"");
         }
-        if (!claim.outcome && !claim.holds.empty())
+        if (!claim.outcome && !claim.cannotBreak && !claim.holds.empty())
             for (const auto& [offset, message] : checkClaim(claim.holds, level, catalog))
                 r.error(p + "/holds", "character " + std::to_string(offset + 1) + " of the claim: " + message);
     }

@@ -238,6 +238,14 @@ std::string writeLevelJson(const LevelDef& level, const std::string& schemaRefer
         OrderedJson claims = OrderedJson::array();
         for (const ClaimDef& claim : level.claims)
         {
+            if (claim.cannotBreak)
+            {
+                OrderedJson form = {{"material", claim.cannotBreak->material}};
+                if (claim.cannotBreak->byBirdOnly)
+                    form["cause"] = "bird";
+                claims.push_back({{"about", claim.about}, {"cannot_break", std::move(form)}});
+                continue;
+            }
             if (!claim.outcome)
             {
                 claims.push_back({{"about", claim.about}, {"holds", claim.holds}});

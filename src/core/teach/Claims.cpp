@@ -1,3 +1,5 @@
+#include "design/ParallelFor.hpp"
+
 #include <abalike/game/GameSession.hpp>
 #include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelFlight.hpp>
@@ -98,6 +100,104 @@ ClaimResult evaluateOutcome(const OutcomeClaimDef& outcome, const LevelDef& leve
     return result;
 }
 
+/// One play of a cannot-break claim: a bird, an aim, its ability at the first contact or not at all.
+struct BreakTrial
+{
+    std::string bird;
+    double angleDeg = 0.0;
+    double speedMps = 0.0;
+    bool abilityAtContact = false;
+};
+
+/// The first block of the material that breaks in a trial (and counts for the claim), or -1.
+int brokenBy(const CannotBreakClaimDef& claim, const LevelDef& level, const Catalog& catalog, const BreakTrial& trial)
+{
+    LevelDef played = level;
+    // A second bird keeps the level going after the shot, so that a tower still falling is watched to the end.
+    played.birds = {trial.bird, trial.bird};
+    std::optional<double> abilityAt;
+    if (trial.abilityAtContact)
+    {
+        const auto first = simulateShots(played, {{trial.angleDeg, trial.speedMps}}, catalog);
+        const ShotRecord& shot = first->shots().at(0);
+        if (!shot.actualContact)
+            return -1; // touched nothing: the plain shot covers it
+        abilityAt = shot.actualContact->t;
+    }
+    const std::unique_ptr<GameSession> session =
+        simulateShots(played, {{trial.angleDeg, trial.speedMps, abilityAt}}, catalog);
+    while (!session->finished() && session->timeSinceLaunch() < kOutcomeWatchS)
+        session->step();
+    for (const DestroyedEvent& event : session->defeats())
+        if (event.kind == EntityKind::Block && event.index >= 0 &&
+            level.blocks[static_cast<std::size_t>(event.index)].material == claim.material &&
+            (!claim.byBirdOnly || event.cause.kind == CauseKind::Bird))
+            return event.index;
+    return -1;
+}
+
+ClaimResult evaluateCannotBreak(const CannotBreakClaimDef& claim, const LevelDef& level, const Catalog& catalog)
+{
+    ClaimResult result;
+    const Catalog own = levelCatalog(level, catalog);
+    // Every bird the level offers, over a grid of first shots and the fan around each, the ability used at the first
+    // contact (the black bird's blast on what it struck) and not at all (the black bird then goes off by itself).
+    std::vector<BreakTrial> trials;
+    std::vector<std::string> birds;
+    for (const std::string& name : level.birds)
+        if (std::find(birds.begin(), birds.end(), name) == birds.end())
+            birds.push_back(name);
+    for (const std::string& name : birds)
+    {
+        const BirdType* bird = own.findBird(name);
+        if (bird == nullptr)
+            continue;
+        const double fastest = maxLaunchSpeed(level, *bird, own);
+        for (const double angle : kCannotBreakAnglesDeg)
+            for (const double share : kCannotBreakPulls)
+                for (const double da : {-kOutcomeFanAngleStepDeg, 0.0, kOutcomeFanAngleStepDeg})
+                    for (const double dv : {-kOutcomeFanSpeedStepMps, 0.0, kOutcomeFanSpeedStepMps})
+                        for (const bool atContact : {false, true})
+                            if (!atContact || bird->ability)
+                                trials.push_back(
+                                    {name, angle + da, std::clamp(share * fastest + dv, 0.0, fastest), atContact});
+    }
+    std::vector<int> broken(trials.size(), -1);
+    try
+    {
+        parallelFor(
+            trials.size(), workerCount(0),
+            [&](std::size_t i) { broken[i] = brokenBy(claim, level, catalog, trials[i]); }, [](std::size_t) {});
+    }
+    catch (const LaunchError& e)
+    {
+        result.message = std::string("cannot be computed: ") + e.what();
+        return result;
+    }
+    const auto first = std::find_if(broken.begin(), broken.end(), [](int index) { return index >= 0; });
+    result.holds = first == broken.end();
+    result.left = static_cast<double>(std::count_if(broken.begin(), broken.end(), [](int i) { return i >= 0; }));
+    result.right = static_cast<double>(trials.size());
+    std::string birdList;
+    for (const std::string& name : birds)
+        birdList += (birdList.empty() ? "" : ", ") + name;
+    if (result.holds)
+        result.message = "no " + claim.material + " block " +
+                         (claim.byBirdOnly ? "is broken by a bird's hit" : "breaks") + " in " +
+                         std::to_string(trials.size()) + " shots (" + birdList +
+                         "; a grid of aims and the fan around each; abilities at contact and unused)";
+    else
+    {
+        const BreakTrial& t = trials[static_cast<std::size_t>(first - broken.begin())];
+        result.message = "a " + claim.material + " block " +
+                         (claim.byBirdOnly ? "is broken by a bird's hit" : "breaks") + " in " + shown(result.left) +
+                         " of " + std::to_string(trials.size()) + " shots, first block " + std::to_string(*first) +
+                         " by the " + t.bird + " bird at " + shown(t.angleDeg) + "\u00B0, " + shown(t.speedMps) +
+                         " m/s" + (t.abilityAtContact ? ", its ability at contact" : ", no ability");
+    }
+    return result;
+}
+
 } // namespace
 
 std::optional<ClaimParts> splitClaim(std::string_view holds, std::string& error)
@@ -157,6 +257,8 @@ ClaimResult evaluateClaim(const ClaimDef& claim, const LevelDef& level, const Ca
 {
     if (claim.outcome)
         return evaluateOutcome(*claim.outcome, level, catalog);
+    if (claim.cannotBreak)
+        return evaluateCannotBreak(*claim.cannotBreak, level, catalog);
     ClaimResult result;
     std::string error;
     const std::optional<ClaimParts> parts = splitClaim(claim.holds, error);
