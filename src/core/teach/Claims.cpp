@@ -109,31 +109,36 @@ struct BreakTrial
     bool abilityAtContact = false;
 };
 
-/// The first block of the material that breaks in a trial (and counts for the claim), or -1.
-int brokenBy(const CannotBreakClaimDef& claim, const LevelDef& level, const Catalog& catalog, const BreakTrial& trial)
+/// What one play of a cannot-break claim shows: the first block of the material that breaks (and counts for the
+/// claim), or -1, and when the bird first touched something.
+struct BreakPlay
+{
+    int broken = -1;
+    std::optional<double> contactS;
+};
+
+BreakPlay playForBreak(const CannotBreakClaimDef& claim, const LevelDef& level, const Catalog& catalog,
+                       const BreakTrial& trial, std::optional<double> abilityAt)
 {
     LevelDef played = level;
     // A second bird keeps the level going after the shot, so that a tower still falling is watched to the end.
     played.birds = {trial.bird, trial.bird};
-    std::optional<double> abilityAt;
-    if (trial.abilityAtContact)
-    {
-        const auto first = simulateShots(played, {{trial.angleDeg, trial.speedMps}}, catalog);
-        const ShotRecord& shot = first->shots().at(0);
-        if (!shot.actualContact)
-            return -1; // touched nothing: the plain shot covers it
-        abilityAt = shot.actualContact->t;
-    }
     const std::unique_ptr<GameSession> session =
         simulateShots(played, {{trial.angleDeg, trial.speedMps, abilityAt}}, catalog);
+    BreakPlay play;
+    if (const auto& contact = session->shots().at(0).actualContact)
+        play.contactS = contact->t;
     while (!session->finished() && session->timeSinceLaunch() < kOutcomeWatchS)
         session->step();
     for (const DestroyedEvent& event : session->defeats())
         if (event.kind == EntityKind::Block && event.index >= 0 &&
             level.blocks[static_cast<std::size_t>(event.index)].material == claim.material &&
             (!claim.byBirdOnly || event.cause.kind == CauseKind::Bird))
-            return event.index;
-    return -1;
+        {
+            play.broken = event.index;
+            break;
+        }
+    return play;
 }
 
 ClaimResult evaluateCannotBreak(const CannotBreakClaimDef& claim, const LevelDef& level, const Catalog& catalog)
@@ -162,12 +167,27 @@ ClaimResult evaluateCannotBreak(const CannotBreakClaimDef& claim, const LevelDef
                                 trials.push_back(
                                     {name, angle + da, std::clamp(share * fastest + dv, 0.0, fastest), atContact});
     }
+    // Each aim is played once without its ability; that play's first contact times the ability's trial, which
+    // follows it in the list.
+    std::vector<std::size_t> plainTrials;
+    for (std::size_t i = 0; i < trials.size(); ++i)
+        if (!trials[i].abilityAtContact)
+            plainTrials.push_back(i);
     std::vector<int> broken(trials.size(), -1);
     try
     {
         parallelFor(
-            trials.size(), workerCount(0),
-            [&](std::size_t i) { broken[i] = brokenBy(claim, level, catalog, trials[i]); }, [](std::size_t) {});
+            plainTrials.size(), workerCount(0),
+            [&](std::size_t k)
+            {
+                const std::size_t i = plainTrials[k];
+                const BreakPlay plain = playForBreak(claim, level, catalog, trials[i], std::nullopt);
+                broken[i] = plain.broken;
+                // A bird that touched nothing has no contact to use its ability at: the plain play covers it.
+                if (i + 1 < trials.size() && trials[i + 1].abilityAtContact && plain.contactS)
+                    broken[i + 1] = playForBreak(claim, level, catalog, trials[i + 1], plain.contactS).broken;
+            },
+            [](std::size_t) {});
     }
     catch (const LaunchError& e)
     {
@@ -181,19 +201,18 @@ ClaimResult evaluateCannotBreak(const CannotBreakClaimDef& claim, const LevelDef
     std::string birdList;
     for (const std::string& name : birds)
         birdList += (birdList.empty() ? "" : ", ") + name;
+    const std::string happens = claim.byBirdOnly ? "is broken by a bird's hit" : "breaks";
     if (result.holds)
-        result.message = "no " + claim.material + " block " +
-                         (claim.byBirdOnly ? "is broken by a bird's hit" : "breaks") + " in " +
-                         std::to_string(trials.size()) + " shots (" + birdList +
+        result.message = "no " + claim.material + " block " + happens + " in " + std::to_string(trials.size()) +
+                         " shots (" + birdList +
                          "; a grid of aims and the fan around each; abilities at contact and unused)";
     else
     {
         const BreakTrial& t = trials[static_cast<std::size_t>(first - broken.begin())];
-        result.message = "a " + claim.material + " block " +
-                         (claim.byBirdOnly ? "is broken by a bird's hit" : "breaks") + " in " + shown(result.left) +
-                         " of " + std::to_string(trials.size()) + " shots, first block " + std::to_string(*first) +
-                         " by the " + t.bird + " bird at " + shown(t.angleDeg) + "\u00B0, " + shown(t.speedMps) +
-                         " m/s" + (t.abilityAtContact ? ", its ability at contact" : ", no ability");
+        result.message = "a " + claim.material + " block " + happens + " in " + shown(result.left) + " of " +
+                         std::to_string(trials.size()) + " shots, first block " + std::to_string(*first) + " by the " +
+                         t.bird + " bird at " + shown(t.angleDeg) + "\u00B0, " + shown(t.speedMps) + " m/s" +
+                         (t.abilityAtContact ? ", its ability at contact" : ", no ability");
     }
     return result;
 }
