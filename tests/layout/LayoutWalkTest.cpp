@@ -1,9 +1,11 @@
 // The play screen's layout over the whole space the campaign and the settings allow: every campaign level and lesson
 // x text scale 100/150/200 % x windows 1280x720, 1920x1080, 1024x768, 1280x400 x teaching overlay on/off, while
 // aiming, in flight and after the shot (the level's reference shot, then the next bird). Every laid-out frame must
-// keep each panel drawn over the world inside the window and apart from every other. The game runs in this process
-// under a virtual display with its frames laid out but not drawn (FrameObserver::layoutEvery), which costs a fraction
-// of drawing them: the whole grid takes minutes instead of the two hours of one `abalike play` run per cell.
+// keep each panel drawn over the world inside the window and apart from every other, and every panel a learner reads
+// about the shot (isLearnerPanel) off each live pig, the flying bird and the last shot's landing point. The game runs
+// in this process under a virtual display with its frames laid out but not drawn (FrameObserver::layoutEvery), which
+// costs a fraction of drawing them: the whole grid takes minutes instead of the two hours of one `abalike play` run per
+// cell.
 #include "../SanitizerBuild.hpp"
 #include "Walk.hpp"
 
@@ -95,6 +97,23 @@ std::vector<std::string> layoutProblems(const FrameLayout& frame)
     return problems;
 }
 
+/// The panels a learner reads about the shot, which must never cover what they talk about: the after-shot sentence, the
+/// predicted-vs-actual mark, the teaching columns (forces, energy, impact, why), a lesson's step and the measuring
+/// tools. The HUD's strips (status, air, aim readout, keys, hint, ability prompt) keep their places and are reported.
+bool isLearnerPanel(const std::string& name)
+{
+    static const std::set<std::string> kLearnerPanels{
+        "feedback", "predicted vs actual", "forces",  "energy",      "first impact", "why",
+        "guide",    "aim graph",           "measure", "range chart", "walkthrough"};
+    return kLearnerPanels.count(name) > 0;
+}
+
+/// What a learner panel must leave in view: every live pig, the flying bird and where the last shot struck.
+bool mustStayUncovered(const std::string& thing)
+{
+    return thing == "pig" || thing == "bird" || thing == "landing point";
+}
+
 /// What one run of a level under one setting showed.
 struct WalkedRun
 {
@@ -103,10 +122,11 @@ struct WalkedRun
     int launches = 0;
     bool finished = false;
     std::vector<std::string> problems; ///< "frame N: ..."
-    /// Laid-out frames in which a panel covers what panels should leave visible, by "panel over thing": reported,
-    /// not asserted (where the window has no room elsewhere a panel may have to).
+    /// Laid-out frames in which a panel covers what panels should leave visible, by "panel over thing": reported;
+    /// asserted (in problems) for a learner panel over a pig, the bird or the landing point.
     std::map<std::string, int> covering;
-    int bannerFrames = 0; ///< laid-out frames that show the problems banner
+    int bannerFrames = 0;   ///< laid-out frames that show the problems banner
+    int feedbackFrames = 0; ///< laid-out frames that show the after-shot sentence (whole or on one line)
 };
 
 /// Lays out every kLayoutEvery-th frame of a run and records what is wrong with it and what covers what.
@@ -121,12 +141,22 @@ public:
         for (const std::string& problem : layoutProblems(frame))
             m_run.problems.push_back("frame " + std::to_string(frame.frame) + ": " + problem);
         std::set<std::string> over;
-        m_run.bannerFrames += std::any_of(frame.panels.begin(), frame.panels.end(),
-                                          [](const ScreenRegion& panel) { return panel.name == "reload banner"; });
+        const auto shows = [&frame](const char* name)
+        {
+            return std::any_of(frame.panels.begin(), frame.panels.end(),
+                               [name](const ScreenRegion& panel) { return panel.name == name; });
+        };
+        m_run.bannerFrames += shows("reload banner");
+        m_run.feedbackFrames += shows("feedback");
         for (const ScreenRegion& panel : frame.panels)
             for (const ScreenRegion& thing : frame.keepVisible)
                 if (!overlappingRegions({panel, thing}).empty())
+                {
                     over.insert(panel.name + " over the " + thing.name);
+                    if (isLearnerPanel(panel.name) && mustStayUncovered(thing.name))
+                        m_run.problems.push_back("frame " + std::to_string(frame.frame) + ": " + describe(panel) +
+                                                 " covers the " + describe(thing));
+                }
         for (const std::string& pair : over)
             ++m_run.covering[pair];
     }
@@ -176,11 +206,13 @@ TEST_P(LayoutWalk, EveryPanelStaysInsideTheWindowAndApartFromTheOthers)
     const ScratchData data;
     int problems = 0;
     int frames = 0;
+    int feedbackFrames = 0;
     std::map<std::string, int> covering;
     for (const Setting& setting : everySetting())
     {
         const WalkedRun run = walk(path, level, setting, data);
         frames += run.framesLaidOut;
+        feedbackFrames += run.feedbackFrames;
         for (const auto& [pair, count] : run.covering)
             covering[pair] += count;
         const std::string where = level.id + " at " + describe(setting);
@@ -196,7 +228,7 @@ TEST_P(LayoutWalk, EveryPanelStaysInsideTheWindowAndApartFromTheOthers)
                 ADD_FAILURE() << where << ", " << problem;
     }
     // What panels still cover, for whoever improves the layout next (tools/layout-sweep lists it per run).
-    std::cout << level.id << ": " << frames << " frames laid out";
+    std::cout << level.id << ": " << frames << " frames laid out, the after-shot sentence in " << feedbackFrames;
     for (const auto& [pair, count] : covering)
         std::cout << "; " << pair << " in " << count;
     std::cout << "\n";

@@ -121,12 +121,18 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
     for (const auto& layer : layers)
         layer->drawScreen(target, view);
     // Last, so that it can keep clear of every panel.
+    std::vector<ScreenRegion> things = keepVisibleBoxes(session, camera);
     if (lastShot != nullptr)
-        overlay.drawShotLabel(target, camera, *lastShot, opacity, structureScreenBoxes(session, camera),
+    {
+        std::vector<sf::FloatRect> keep;
+        for (const ScreenRegion& thing : things)
+            keep.push_back(thing.rect);
+        overlay.drawShotLabel(target, camera, *lastShot, opacity, structureScreenBoxes(session, camera), keep,
                               static_cast<float>(view.app().settings().current().textScale),
                               view.playMode() == PlayMode::Game);
-    if (std::vector<ScreenRegion>* keep = keepVisibleSink())
-        *keep = keepVisibleBoxes(session, camera);
+    }
+    if (std::vector<ScreenRegion>* sink = keepVisibleSink())
+        *sink = std::move(things);
 }
 
 bool launchRequested(AppContext& app, GameSession& session, const ScriptedShot& shot)

@@ -11,7 +11,8 @@ namespace abalike::app
 
 namespace
 {
-/// Calls visit(name, rect) for the slingshot with the bird it holds, the bird in flight and, with pigs, every live pig:
+/// Calls visit(name, rect) for the slingshot with the bird it holds, the bird in flight, the last shot's landing point
+/// (its first contact) and, with pigs, every live pig:
 /// one walk for both the per-frame placement boxes (which list pigs with the blocks) and the trace's named boxes.
 template <class Visit>
 void forEachKeepVisible(const GameSession& session, const Camera& camera, bool pigs, Visit&& visit)
@@ -31,6 +32,10 @@ void forEachKeepVisible(const GameSession& session, const Camera& camera, bool p
         const double r = 0.5 * bird->widthM;
         box("bird", p.x - r, p.y + r, p.x + r, p.y - r);
     }
+    // Where the last shot's bird first struck: the after-shot sentence and the predicted-vs-actual mark talk about it.
+    if (!session.shots().empty())
+        if (const std::optional<ContactPoint>& landing = session.shots().back().actualContact)
+            box("landing point", landing->x - 0.4, landing->y + 0.4, landing->x + 0.4, landing->y - 0.4);
     if (!pigs)
         return;
     for (const Entity& pig : session.world().entities())

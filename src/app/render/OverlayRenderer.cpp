@@ -207,7 +207,8 @@ void OverlayRenderer::drawShotMarkers(sf::RenderTarget& target, const Camera& ca
 }
 
 void OverlayRenderer::drawShotLabel(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot,
-                                    float opacity, std::span<const sf::FloatRect> structure, float textScale, bool chip)
+                                    float opacity, std::span<const sf::FloatRect> structure,
+                                    std::span<const sf::FloatRect> keep, float textScale, bool chip)
 {
     if (m_font == nullptr || !shot.actualContact || !(shot.deviationM || shot.launchedIntoMovingWorld))
         return;
@@ -224,8 +225,8 @@ void OverlayRenderer::drawShotLabel(sf::RenderTarget& target, const Camera& came
                                                    : std::string("launched while blocks moved: no deviation scored"));
     const sf::Vector2f extent = measureText(*m_font, text, size);
     const float pad = 0.4f * static_cast<float>(size);
-    // Clear of every panel drawn this frame and, where there is room, of the structure; with no spot clear of the
-    // panels inside the window it is left out rather than drawn over them.
+    // Clear of every panel drawn this frame and of what must stay in view and, where there is room, of the rest of
+    // the structure; with no spot clear of both inside the window it is left out rather than drawn over them.
     const sf::Vector2f boxSize = extent + sf::Vector2f(2.0f * pad, 2.0f * pad);
     const sf::Vector2f window(camera.windowSize());
     std::vector<sf::FloatRect> panels;
@@ -233,14 +234,16 @@ void OverlayRenderer::drawShotLabel(sf::RenderTarget& target, const Camera& came
         panels.push_back(region.rect);
     std::vector<sf::FloatRect> avoid(structure.begin(), structure.end());
     avoid.insert(avoid.end(), panels.begin(), panels.end());
+    std::vector<sf::FloatRect> panelsAndKeep = panels;
+    panelsAndKeep.insert(panelsAndKeep.end(), keep.begin(), keep.end());
     const auto clear = [&](sf::Vector2f corner)
     {
         return corner.x >= 0.0f && corner.y >= 0.0f && corner.x + boxSize.x <= window.x &&
-               corner.y + boxSize.y <= window.y && coveredArea({corner, boxSize}, panels) <= 0.0f;
+               corner.y + boxSize.y <= window.y && coveredArea({corner, boxSize}, panelsAndKeep) <= 0.0f;
     };
     sf::Vector2f at = placeLabel(actualAt, boxSize, window, avoid, 18.0f * scale);
     if (!clear(at))
-        at = placeLabel(actualAt, boxSize, window, panels, 18.0f * scale);
+        at = placeLabel(actualAt, boxSize, window, panelsAndKeep, 18.0f * scale);
     if (!clear(at))
         return;
 

@@ -34,11 +34,13 @@ public:
     /// The predicted and actual contact and the ability's impulses.
     void drawShotMarkers(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot, float opacity);
     /// The "predicted vs actual" label next to the actual contact, drawn after every panel: clear of them
-    /// (ScreenRegions) and, where there is room, of the boxes in structure (on screen); left out when no spot near the
-    /// contact inside the window is clear of the panels. textScale is the player's setting. chip: the game mode's
-    /// small chip with the distance alone, instead of the sentence.
+    /// (ScreenRegions) and of `keep` (the live pigs, the flying bird, the landing point, the slingshot) and, where
+    /// there is room, of the boxes in structure (on screen); left out when no spot near the contact inside the window
+    /// is clear of the panels and of `keep`. textScale is the player's setting. chip: the game mode's small chip with
+    /// the distance alone, instead of the sentence.
     void drawShotLabel(sf::RenderTarget& target, const Camera& camera, const ShotRecord& shot, float opacity,
-                       std::span<const sf::FloatRect> structure, float textScale, bool chip = false);
+                       std::span<const sf::FloatRect> structure, std::span<const sf::FloatRect> keep, float textScale,
+                       bool chip = false);
 
 private:
     void addDots(const Camera& camera, std::span<const sf::Vector2f> worldPoints, float radius, float opacity);

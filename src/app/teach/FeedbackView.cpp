@@ -8,6 +8,7 @@
 
 #include <abalike/teach/ShotFeedback.hpp>
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <utility>
 
@@ -16,8 +17,21 @@ namespace abalike::app
 
 namespace
 {
-/// The card's spots come in rows of three (middle, left, right): above the hint, then in the sky.
-constexpr std::size_t kSpotsPerRow = 3;
+/// The card's spots come in rows (on the ground just above the HUD's strips at the bottom, above where the hint
+/// usually starts, in the sky, halfway), each from the middle, the left and the right edge, then at the sixths of the
+/// room between the edges.
+constexpr std::size_t kSpotsPerRow = 8;
+
+/// The left edges of a row's spots for a card `width` wide in a window `windowWidth` wide with `margin` at each side.
+std::array<float, kSpotsPerRow> rowSpots(float width, float windowWidth, float margin)
+{
+    const float left = margin;
+    const float right = windowWidth - margin - width;
+    std::array<float, kSpotsPerRow> spots{0.5f * (windowWidth - width), left, right};
+    for (std::size_t k = 1; k + 2 < kSpotsPerRow; ++k)
+        spots[k + 2] = left + (right - left) * static_cast<float>(k) / 6.0f;
+    return spots;
+}
 } // namespace
 
 void FeedbackView::reset()
@@ -88,14 +102,20 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
         measureText(font, utf8(m_summary), rowSize).x <= std::min(maxWidth, windowWidth - 24.0f * scale - 2.0f * pad);
     const std::vector<std::string> summary{summaryFits ? m_summary : std::string()};
     std::vector<sf::FloatRect> panels;
+    // The top of the HUD's strips at the bottom (the hint, the keys, a notice): the lowest row sits just above them.
+    float strips = windowHeight - 12.0f * scale;
     for (const ScreenRegion& region : screenLayout())
+    {
         panels.push_back(region.rect);
+        if (region.rect.top > 0.5f * windowHeight)
+            strips = std::min(strips, region.rect.top);
+    }
 
-    // Candidates in order of preference: above the hint in the middle, then its left and right, then up in the sky
-    // under the panels already drawn (middle, left, right). The first that covers neither a panel nor the
-    // structure wins; otherwise, among those clear of every panel, the one covering least of what must stay in
-    // view (the slingshot, the flying bird, the pigs), then least of the structure; where even that covers some of
-    // what must stay in view, the first sentence on one line if it covers less.
+    // Candidates in order of preference, row by row (kSpotsPerRow each): just above the strips at the bottom, above
+    // where the hint usually starts, up in the sky under the panels already drawn, halfway. The first that covers
+    // neither a panel, nor the structure, nor what must stay in view (the slingshot, the flying bird, the landing
+    // point, the pigs) wins; otherwise, among those clear of the panels and of what must stay in view, the one
+    // covering least of the structure; else the first sentence on one line the same way; else nothing.
     const auto candidatesFor = [&](const std::vector<std::string>& lines)
     {
         float width = 0.0f;
@@ -103,12 +123,17 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
             width = std::max(width, measureText(font, utf8(line), rowSize).x);
         const float w = width + 2.0f * pad;
         const float height = font.getLineSpacing(rowSize) * static_cast<float>(lines.size()) + 2.0f * pad;
-        const float centre = 0.5f * windowWidth;
         std::vector<sf::FloatRect> candidates; // kSpotsPerRow in each row
-        for (const float x : {centre - 0.5f * w, 12.0f * scale, windowWidth - 12.0f * scale - w})
+        const std::array<float, kSpotsPerRow> spots = rowSpots(w, windowWidth, 12.0f * scale);
+        for (const float x : spots)
+            candidates.emplace_back(x, strips - 6.0f * scale - height, w, height);
+        for (const float x : spots)
             candidates.emplace_back(x, bottom - height, w, height);
-        for (const float x : {centre - 0.5f * w, 12.0f * scale, windowWidth - 12.0f * scale - w})
+        for (const float x : spots)
             candidates.emplace_back(x, firstFreeTop(x, w, top, height, 6.0f * scale), w, height);
+        const float halfway = std::max(top, 0.5f * (top + bottom - height));
+        for (const float x : spots)
+            candidates.emplace_back(x, firstFreeTop(x, w, halfway, height, 6.0f * scale), w, height);
         return candidates;
     };
     const auto fits = [&](const sf::FloatRect& rect)
@@ -182,19 +207,27 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
                         break;
                     }
             }
+            // Never over what must stay in view: where its spot now would be (the bird rolled under it), the first
+            // spot clear of it, else it is left out this frame.
+            if (coveredArea(candidates[*m_spot], keep) > 0.0f)
+            {
+                const std::optional<std::size_t> clearOfKeep = firstClearOf(candidates, keep);
+                if (!clearOfKeep)
+                    return;
+                m_spot = clearOfKeep;
+            }
             draw(candidates[*m_spot], *m_spot, m_collapsed);
             return;
         }
     }
     m_spot.reset();
-    // The first spot: the one covering least of what must stay in view, then of the structure (the first that covers
-    // neither wins); the whole card, or its first sentence on one line where that covers less of what must stay in
-    // view (or the whole card has no room clear of the panels).
+    // The first spot: among those clear of what must stay in view, the one covering least of the structure (the first
+    // that covers none wins); the whole card, or its first sentence on one line where the whole card has no such spot.
     struct Choice
     {
         std::size_t spot = 0;
         sf::FloatRect rect;
-        std::pair<float, float> covered; // of `keep`, then of `avoid`
+        float covered = 0.0f; // of `avoid`
     };
     const auto leastCovering = [&](const std::vector<std::string>& lines) -> std::optional<Choice>
     {
@@ -204,25 +237,22 @@ void FeedbackView::draw(sf::RenderTarget& target, const sf::Font& font, float bo
         std::optional<Choice> least;
         for (std::size_t i = 0; i < candidates.size(); ++i)
         {
-            if (!fits(candidates[i]))
+            if (!fits(candidates[i]) || coveredArea(candidates[i], keep) > 0.0f)
                 continue;
-            const std::pair<float, float> covered{coveredArea(candidates[i], keep), coveredArea(candidates[i], avoid)};
+            const float covered = coveredArea(candidates[i], avoid);
             if (!least || covered < least->covered)
                 least = Choice{i, candidates[i], covered};
-            if (covered.second <= 0.0f)
+            if (covered <= 0.0f)
                 break;
         }
         return least;
     };
-    const std::optional<Choice> whole = leastCovering(full);
-    const std::optional<Choice> line = (!whole || whole->covered.first > 0.0f) && !summary.front().empty()
-                                           ? leastCovering(summary)
-                                           : std::optional<Choice>{};
-    if (line && (!whole || line->covered.first < whole->covered.first))
-        draw(line->rect, line->spot, true);
-    else if (whole)
+    if (const std::optional<Choice> whole = leastCovering(full))
         draw(whole->rect, whole->spot, false);
-    // Otherwise not even one line has room clear of the panels: left out this frame rather than drawn over them.
+    else if (const std::optional<Choice> line = leastCovering(summary))
+        draw(line->rect, line->spot, true);
+    // Otherwise not even one line has room clear of the panels and of what must stay in view: left out this frame
+    // rather than drawn over them.
 }
 
 void FeedbackView::drawCard(sf::RenderTarget& target, const sf::Font& font, const sf::FloatRect& rect,

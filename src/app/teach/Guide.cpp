@@ -61,7 +61,8 @@ sf::FloatRect GuideRunner::draw(sf::RenderTarget& target, const sf::Font& font, 
     // many until the next aim, so that it does not grow and shrink as the bird flies past.
     while (rows > 0 && coversKeptInView(cardWith(rows)))
         markPanelShrunk("guide", --rows);
-    if (!panelHasRoom(target, cardWith(rows)))
+    // Its title alone still would (the bird flies past, a pig sits high): left out while it does.
+    if (!panelHasRoom(target, cardWith(rows)) || coversKeptInView(cardWith(rows)))
         return {};
     if (rows < lines.size())
     {

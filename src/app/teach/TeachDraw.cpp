@@ -94,8 +94,8 @@ sf::FloatRect drawPanelSummary(sf::RenderTarget& target, const sf::Font& font, s
     const sf::FloatRect rect({fromRight ? corner.x - size.x : corner.x, corner.y}, size);
     if (!panelHasRoom(target, rect))
         return {};
-    // A summary that would cover the slingshot or a live pig is left out, until the next aim. The flying bird only
-    // passes behind one line.
+    // A summary that would cover the slingshot, the landing point or a live pig is left out, until the next aim; one
+    // the flying bird passes under, while it does.
     const std::string hidden = std::string(name) + " (summary left out)";
     if (panelShrunk(hidden))
         return {};
@@ -104,6 +104,8 @@ sf::FloatRect drawPanelSummary(sf::RenderTarget& target, const sf::Font& font, s
         markPanelShrunk(hidden);
         return {};
     }
+    if (coversKeptInView(rect))
+        return {};
     drawTeachPanel(target, rect, scale, name);
     drawLabel(target, font, utf8(line), {rect.left + pad, rect.top + pad}, rowSize, palette::kText);
     return rect;

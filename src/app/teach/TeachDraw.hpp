@@ -56,9 +56,9 @@ bool coversKeptInView(const sf::FloatRect& rect, bool flyingBird = true);
 
 /// A panel's one-line summary, for where the whole panel has no room: `text` on one line (cut at a word with an
 /// ellipsis to fit the window), its top corner at `corner` (the top-right one when `fromRight`). Drawn only where it
-/// has room (panelHasRoom) and covers neither the slingshot nor a live pig (once it would have, it stays out until the
-/// next aim; one line may pass over the flying bird); returns its bounds, empty when left out too. `name` is its name
-/// in ScreenRegions.
+/// has room (panelHasRoom) and covers nothing that must stay in view (once it would have covered the slingshot, the
+/// landing point or a live pig, it stays out until the next aim; while the flying bird passes under it, that long);
+/// returns its bounds, empty when left out too. `name` is its name in ScreenRegions.
 sf::FloatRect drawPanelSummary(sf::RenderTarget& target, const sf::Font& font, sf::Vector2f corner, bool fromRight,
                                const std::string& text, unsigned rowSize, float scale, std::string_view name);
 
