@@ -119,8 +119,8 @@ TEST(Claims, AnOutcomeCountsTheAimsOfItsFanThatDoWhatTheTextSays)
 TEST(Claims, StoneThatCannotBreakIsPlayedWithEveryBirdTheLevelHas)
 {
     // The teacher's finding: "Stone will not break" on levels with a black bird, whose blast breaks stone. Played with
-    // every bird, over a grid of aims and the fan around each, abilities at contact and unused, such a claim fails
-    // and names the bird that breaks it; on the materials lesson (red birds only) a red bird's hit never does.
+    // every bird, over a grid of aims and the fan around each, abilities at three moments and unused, such a claim
+    // fails and names the bird that breaks it; on the materials lesson (red birds only) a red bird's hit never does.
     const LevelDef keep = loadLevel(kLevels + "4-3-stone-keep.json", Catalog::builtin());
     ClaimDef claim;
     claim.about = "/hints/0";
@@ -128,7 +128,8 @@ TEST(Claims, StoneThatCannotBreakIsPlayedWithEveryBirdTheLevelHas)
     const ClaimResult any = evaluateClaim(claim, keep, Catalog::builtin());
     EXPECT_FALSE(any.holds) << any.message;
     EXPECT_GT(any.left, 0.0);
-    EXPECT_EQ(any.right, 2.0 * 8 * 3 * 9 + 8 * 3 * 9) << "the black bird with and without its blast, the red without";
+    EXPECT_EQ(any.right, (1.0 + 3.0) * 8 * 3 * 9 + 8 * 3 * 9)
+        << "the black bird without its blast and with it at three moments, the red bird without an ability";
     // Only the bird's own hit: the red bird's never breaks stone there, the heavy black bird's seldom does.
     claim.cannotBreak->byBirdOnly = true;
     const ClaimResult hit = evaluateClaim(claim, keep, Catalog::builtin());
@@ -146,6 +147,40 @@ TEST(Claims, StoneThatCannotBreakIsPlayedWithEveryBirdTheLevelHas)
     ClaimDef anyCause = lesson.claims.front();
     anyCause.cannotBreak->byBirdOnly = false;
     EXPECT_FALSE(evaluateClaim(anyCause, lesson, Catalog::builtin()).holds);
+}
+
+TEST(Claims, OnlyAnglesNearTheBestThrowTheBirdOntoTheAnglePig)
+{
+    // The teacher's finding: "Full power only reaches the pig at the best angle" while every angle from 38 to 49
+    // degrees won. The lesson's pig now stands at the end of the best throw behind a post too tall to bounce over: at
+    // full pull the flight strikes it only within 4 degrees of the best angle, and does at the best.
+    const LevelDef lesson = loadLevel(kLevels + "lessons/lesson-angle.json", Catalog::builtin());
+    ASSERT_EQ(lesson.claims.size(), 1u);
+    ASSERT_TRUE(lesson.claims.front().reach.has_value());
+    const ClaimResult now = evaluateClaim(lesson.claims.front(), lesson, Catalog::builtin());
+    EXPECT_TRUE(now.holds) << now.message;
+    EXPECT_NE(now.message.find("at angles from 41 to 47.5\u00B0"), std::string::npos) << now.message;
+    // Within 2 degrees it is false, and says how many angles lie farther out.
+    ClaimDef tight = lesson.claims.front();
+    tight.reach->withinDeg = 2.0;
+    const ClaimResult narrow = evaluateClaim(tight, lesson, Catalog::builtin());
+    EXPECT_FALSE(narrow.holds);
+    EXPECT_EQ(narrow.left, 6.0) << narrow.message;
+    // The geometry the teacher played: the pig 0.8 m nearer behind a 0.8 m post; 37.5 to 50.5 degrees strike it.
+    LevelDef before = lesson;
+    before.pigs.front().x = 39.5;
+    before.blocks.front().y = 0.4;
+    before.blocks.front().heightM = 0.8;
+    ClaimDef old = lesson.claims.front();
+    old.reach->pigX = {39.2, 39.8};
+    const ClaimResult wide = evaluateClaim(old, before, Catalog::builtin());
+    EXPECT_FALSE(wide.holds);
+    EXPECT_NE(wide.message.find("from 37.5 to 50.5\u00B0"), std::string::npos) << wide.message;
+    // A pig out of every throw's reach: never struck, so the claim is false rather than empty.
+    old.reach->pigX = {60.0, 61.0};
+    const ClaimResult none = evaluateClaim(old, lesson, Catalog::builtin());
+    EXPECT_FALSE(none.holds);
+    EXPECT_NE(none.message.find("never first strikes"), std::string::npos) << none.message;
 }
 
 } // namespace

@@ -142,8 +142,8 @@ struct OutcomeClaimDef
 };
 
 /// A material the level's texts say no shot breaks ("cannot_break"): played with every bird the level has, over a
-/// grid of first shots and the fan of aims around each, the bird's ability used at its first contact and not at all
-/// (levels/README.md, "Claims").
+/// grid of first shots and the fan of aims around each, the bird's ability used halfway to its first contact, just
+/// before it, at it and not at all (levels/README.md, "Claims").
 struct CannotBreakClaimDef
 {
     std::string material;
@@ -152,6 +152,18 @@ struct CannotBreakClaimDef
     bool byBirdOnly = false;
 
     bool operator==(const CannotBreakClaimDef&) const = default;
+};
+
+/// Which angles reach a pig at full pull ("full_pull_reach"): the level's first bird at full pull over every angle
+/// (kReachAnglesStepDeg apart) first strikes a pig in an x range (its flight reaches it, not a roll or a bounce) only
+/// within so many degrees of the best angle, and does at the best angle (levels/README.md, "Claims").
+struct ReachClaimDef
+{
+    /// "pig_x": the bird's first contact is a pig whose x as written is in [min, max] ...
+    std::array<double, 2> pigX{};
+    double withinDeg = 0.0; ///< "within_deg": ... only for aims this close to best_angle:BIRD
+
+    bool operator==(const ReachClaimDef&) const = default;
 };
 
 /// A qualitative promise one of the level's texts makes, as something the program computes for the level (`abalike
@@ -163,6 +175,7 @@ struct ClaimDef
                        ///< for an outcome
     std::optional<OutcomeClaimDef> outcome;
     std::optional<CannotBreakClaimDef> cannotBreak;
+    std::optional<ReachClaimDef> reach;
 
     bool operator==(const ClaimDef&) const = default;
 };

@@ -22,6 +22,13 @@ inline constexpr double kOutcomeWatchS = 8.0;
 /// bird's full-pull speed.
 inline constexpr double kCannotBreakAnglesDeg[] = {0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0};
 inline constexpr double kCannotBreakPulls[] = {0.7, 0.85, 1.0};
+/// When a cannot-break claim's bird uses its ability, as shares of its time to the first contact without it: halfway
+/// (a split or a boost well before the structure), just before (the boost's full speed, the split's tight spread, the
+/// egg over what it reaches) and at the contact (the blast on what it struck). Two of them are the solver's moments.
+inline constexpr double kCannotBreakAbilityShares[] = {0.5, 0.9, 1.0};
+
+/// A full-pull-reach claim's angles: every one from 0 up to 90 degrees, this far apart.
+inline constexpr double kReachAnglesStepDeg = 0.5;
 
 /// A claim's comparison, split: LEFT OP RIGHT (levels/README.md, "Claims").
 struct ClaimParts
@@ -54,8 +61,11 @@ struct ClaimResult
 /// Computes the claim for the level: a comparison from the level's values; an outcome by playing the level's first
 /// bird at each aim of the fan around its shot (the speed kept to what the slingshot gives) for kOutcomeWatchS; a
 /// cannot-break claim by playing every bird the level has over the grid (kCannotBreakAnglesDeg x kCannotBreakPulls)
-/// and the fan around each shot, its ability at first contact and unused, each for kOutcomeWatchS: it holds when no
-/// block of the material breaks (by a bird's hit, with "cause": "bird") in any of them.
+/// and the fan around each shot, its ability at each of kCannotBreakAbilityShares and unused, each for
+/// kOutcomeWatchS: it holds when no block of the material breaks (by a bird's hit, with "cause": "bird") in any of
+/// them; a full-pull-reach claim by playing the level's first bird at full pull at every angle (kReachAnglesStepDeg
+/// apart) until its first contact: it holds when every aim whose first contact is a pig in the range lies within the
+/// claim's degrees of the best angle and the aim nearest the best angle is one of them.
 ClaimResult evaluateClaim(const ClaimDef& claim, const LevelDef& level, const Catalog& catalog);
 
 } // namespace abalike

@@ -332,6 +332,7 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
                                    "/claims/" + std::to_string(i) +
                                        (level.claims[i].outcome       ? "/outcome"
                                         : level.claims[i].cannotBreak ? "/cannot_break"
+                                        : level.claims[i].reach       ? "/full_pull_reach"
                                                                       : "/holds"),
                                    "does not hold for this level: " + claim.message + " (so " + level.claims[i].about +
                                        " says something untrue)"});

@@ -179,7 +179,7 @@ Guide lesson(const std::string& id, const LevelDef& level, const Catalog& catalo
                   {
                       return launchedAt(c, [](double a) { return a >= 58.0; });
                   }},
-                 {"Reach the pig at full pull: only angles near the chart's ring get there.", won}},
+                 {"Throw the bird onto the pig at full pull: only angles near the chart's ring get there.", won}},
                 "In vacuum from the ground 45\u00B0 throws farthest. From a height, or in air, a little lower wins: "
                 "try G on the other levels."};
     if (id == "lesson-mass")

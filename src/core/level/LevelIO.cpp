@@ -439,6 +439,20 @@ std::optional<CannotBreakClaimDef> readCannotBreak(LevelReader& r, const json& v
     return claim;
 }
 
+/// "full_pull_reach": {"pig_x": [MIN, MAX], "within_deg": D}.
+std::optional<ReachClaimDef> readReach(LevelReader& r, const json& value, const std::string& p)
+{
+    if (!r.object(value, p, {"pig_x", "within_deg"}))
+        return std::nullopt;
+    ReachClaimDef reach;
+    if (value.find("pig_x") == value.end())
+        r.error(p, "missing required key \"pig_x\" (expected [min, max]: where the pig the text promises stands)");
+    else if (const auto pigX = readRange(r, value, p, "pig_x", NumberRange{-kWorldExtentM, kWorldExtentM, "m"}))
+        reach.pigX = *pigX;
+    reach.withinDeg = r.number(value, p, "within_deg", 0.0, true, NumberRange{0.5, 45.0, "degrees"});
+    return reach;
+}
+
 void readClaims(LevelReader& r, const json& root, LevelDef& level, const Catalog& catalog)
 {
     const auto it = root.find("claims");
@@ -448,24 +462,29 @@ void readClaims(LevelReader& r, const json& root, LevelDef& level, const Catalog
     {
         const std::string p = "/claims/" + std::to_string(i);
         const json& item = (*it)[i];
-        if (!r.object(item, p, {"about", "holds", "outcome", "cannot_break"}))
+        if (!r.object(item, p, {"about", "holds", "outcome", "cannot_break", "full_pull_reach"}))
             continue;
         ClaimDef claim;
         claim.about = r.string(item, p, "about", "", true);
         const bool holds = item.contains("holds");
         const bool outcome = item.contains("outcome");
         const bool cannotBreak = item.contains("cannot_break");
-        const int forms = (holds ? 1 : 0) + (outcome ? 1 : 0) + (cannotBreak ? 1 : 0);
+        const bool reach = item.contains("full_pull_reach");
+        const int forms = (holds ? 1 : 0) + (outcome ? 1 : 0) + (cannotBreak ? 1 : 0) + (reach ? 1 : 0);
         if (forms != 1)
-            r.error(p, forms > 1 ? "expected one of \"holds\", \"outcome\" and \"cannot_break\", not several"
-                                 : "missing \"holds\" (a comparison), \"outcome\" (what a shot does) or "
-                                   "\"cannot_break\" (a material no shot breaks)");
+            r.error(p, forms > 1 ? "expected one of \"holds\", \"outcome\", \"cannot_break\" and "
+                                   "\"full_pull_reach\", not several"
+                                 : "missing \"holds\" (a comparison), \"outcome\" (what a shot does), "
+                                   "\"cannot_break\" (a material no shot breaks) or \"full_pull_reach\" (the "
+                                   "angles that reach a pig at full pull)");
         if (holds)
             claim.holds = r.string(item, p, "holds", "", true);
         else if (outcome)
             claim.outcome = readOutcome(r, item["outcome"], p + "/outcome", catalog);
         else if (cannotBreak)
             claim.cannotBreak = readCannotBreak(r, item["cannot_break"], p + "/cannot_break", catalog);
+        else if (reach)
+            claim.reach = readReach(r, item["full_pull_reach"], p + "/full_pull_reach");
         level.claims.push_back(std::move(claim));
     }
 }
@@ -489,7 +508,7 @@ void checkClaims(LevelReader& r, const LevelDef& level, const Catalog& catalog)
                              : "\"/concept\" or \"/hints/0\" to \"/hints/" + std::to_string(hints - 1) + "\"";
             r.error(p + "/about", "expected the text the claim backs: " + texts + ", got \"" + claim.about + "\"");
         }
-        if (!claim.outcome && !claim.cannotBreak && !claim.holds.empty())
+        if (!claim.outcome && !claim.cannotBreak && !claim.reach && !claim.holds.empty())
             for (const auto& [offset, message] : checkClaim(claim.holds, level, catalog))
                 r.error(p + "/holds", "character " + std::to_string(offset + 1) + " of the claim: " + message);
     }

@@ -246,6 +246,15 @@ std::string writeLevelJson(const LevelDef& level, const std::string& schemaRefer
                 claims.push_back({{"about", claim.about}, {"cannot_break", std::move(form)}});
                 continue;
             }
+            if (claim.reach)
+            {
+                claims.push_back(
+                    {{"about", claim.about},
+                     {"full_pull_reach",
+                      {{"pig_x", OrderedJson::array({num(claim.reach->pigX[0]), num(claim.reach->pigX[1])})},
+                       {"within_deg", num(claim.reach->withinDeg)}}}});
+                continue;
+            }
             if (!claim.outcome)
             {
                 claims.push_back({{"about", claim.about}, {"holds", claim.holds}});

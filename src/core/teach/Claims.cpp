@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -65,17 +66,36 @@ std::string rangeText(const std::array<double, 2>& range)
     return shown(range[0]) + " to " + shown(range[1]) + " m";
 }
 
-ClaimResult evaluateOutcome(const OutcomeClaimDef& outcome, const LevelDef& level, const Catalog& catalog)
+/// The level's first bird, which outcome and reach claims shoot, and its speed at full pull.
+struct FirstBird
 {
-    ClaimResult result;
+    std::string name;
+    double fullPullMps = 0.0;
+};
+
+std::optional<FirstBird> firstBird(const LevelDef& level, const Catalog& catalog)
+{
     const Catalog own = levelCatalog(level, catalog);
     const BirdType* bird = level.birds.empty() ? nullptr : own.findBird(level.birds.front());
     if (bird == nullptr)
-    {
-        result.message = "cannot be computed: the level has no bird to shoot";
-        return result;
-    }
-    const double fastest = maxLaunchSpeed(level, *bird, own);
+        return std::nullopt;
+    return FirstBird{bird->name, maxLaunchSpeed(level, *bird, own)};
+}
+
+ClaimResult noBirdToShoot()
+{
+    ClaimResult result;
+    result.message = "cannot be computed: the level has no bird to shoot";
+    return result;
+}
+
+ClaimResult evaluateOutcome(const OutcomeClaimDef& outcome, const LevelDef& level, const Catalog& catalog)
+{
+    const std::optional<FirstBird> first = firstBird(level, catalog);
+    if (!first)
+        return noBirdToShoot();
+    ClaimResult result;
+    const double fastest = first->fullPullMps;
     try
     {
         for (const double da : {-kOutcomeFanAngleStepDeg, 0.0, kOutcomeFanAngleStepDeg})
@@ -100,13 +120,86 @@ ClaimResult evaluateOutcome(const OutcomeClaimDef& outcome, const LevelDef& leve
     return result;
 }
 
-/// One play of a cannot-break claim: a bird, an aim, its ability at the first contact or not at all.
+/// Whether the bird's flight itself reaches a pig the claim names: its first contact is that pig (not a roll or a
+/// bounce off the ground or a block on to it).
+bool flightReachesPig(const ReachClaimDef& reach, const LevelDef& level, const Catalog& catalog, double angleDeg,
+                      double speedMps)
+{
+    const std::unique_ptr<GameSession> session = simulateShots(level, {{angleDeg, speedMps}}, catalog);
+    const ShotRecord& shot = session->shots().at(0);
+    while (!shot.actualContact && !session->finished() && session->timeSinceLaunch() < kOutcomeWatchS)
+        session->step();
+    return shot.firstTouched == EntityKind::Pig && shot.impact && shot.impact->bodyIndex >= 0 &&
+           within(level.pigs.at(static_cast<std::size_t>(shot.impact->bodyIndex)).x, reach.pigX);
+}
+
+ClaimResult evaluateReach(const ReachClaimDef& reach, const LevelDef& level, const Catalog& catalog)
+{
+    const std::optional<FirstBird> first = firstBird(level, catalog);
+    if (!first)
+        return noBirdToShoot();
+    ClaimResult result;
+    const double fastest = first->fullPullMps;
+    const auto aims = static_cast<std::size_t>(90.0 / kReachAnglesStepDeg);
+    std::vector<char> reached(aims, 0);
+    double best = 0.0;
+    try
+    {
+        best = evaluateExpression("best_angle:" + first->name, level, catalog);
+        parallelFor(
+            aims, workerCount(0),
+            [&](std::size_t i) {
+                reached[i] =
+                    flightReachesPig(reach, level, catalog, static_cast<double>(i) * kReachAnglesStepDeg, fastest);
+            },
+            [](std::size_t) {});
+    }
+    catch (const std::exception& e)
+    {
+        result.message = std::string("cannot be computed: ") + e.what();
+        return result;
+    }
+    const auto angleOf = [](std::size_t i)
+    {
+        return static_cast<double>(i) * kReachAnglesStepDeg;
+    };
+    const auto nearest = static_cast<std::size_t>(std::lround(best / kReachAnglesStepDeg));
+    std::optional<std::size_t> lowest;
+    std::optional<std::size_t> highest;
+    int outside = 0;
+    for (std::size_t i = 0; i < aims; ++i)
+        if (reached[i] != 0)
+        {
+            lowest = lowest.value_or(i);
+            highest = i;
+            outside += std::abs(angleOf(i) - best) > reach.withinDeg ? 1 : 0;
+        }
+    const bool bestReaches = nearest < aims && reached[nearest] != 0;
+    result.holds = bestReaches && outside == 0;
+    result.left = outside;
+    result.right = 0.0;
+    const std::string who = "at full pull (" + shown(fastest) + " m/s) the " + first->name + " bird";
+    const std::string allowed =
+        "the claim allows " + shown(reach.withinDeg) + "° either side of the best angle, " + shown(best) + "°";
+    const std::string what = "first strikes a pig at x " + rangeText(reach.pigX);
+    if (!lowest)
+        result.message = who + " never " + what + " at any angle from 0 to 90° (" + allowed + ")";
+    else
+        result.message = who + " " + what + " at angles from " + shown(angleOf(*lowest)) + " to " +
+                         shown(angleOf(*highest)) + "°" +
+                         (outside > 0 ? ", " + std::to_string(outside) + " of them farther from the best" : "") +
+                         (bestReaches ? "" : ", not at the best angle") + " (" + allowed + ")";
+    return result;
+}
+
+/// One play of a cannot-break claim: a bird, an aim, its ability at a share of the time to the first contact
+/// (kCannotBreakAbilityShares) or not at all (0).
 struct BreakTrial
 {
     std::string bird;
     double angleDeg = 0.0;
     double speedMps = 0.0;
-    bool abilityAtContact = false;
+    double abilityShare = 0.0;
 };
 
 /// What one play of a cannot-break claim shows: the first block of the material that breaks (and counts for the
@@ -145,8 +238,9 @@ ClaimResult evaluateCannotBreak(const CannotBreakClaimDef& claim, const LevelDef
 {
     ClaimResult result;
     const Catalog own = levelCatalog(level, catalog);
-    // Every bird the level offers, over a grid of first shots and the fan around each, the ability used at the first
-    // contact (the black bird's blast on what it struck) and not at all (the black bird then goes off by itself).
+    // Every bird the level offers, over a grid of first shots and the fan around each, the ability used halfway to the
+    // first contact, just before it and at it (the black bird's blast on what it struck), and not at all (the black
+    // bird then goes off by itself).
     std::vector<BreakTrial> trials;
     std::vector<std::string> birds;
     for (const std::string& name : level.birds)
@@ -162,16 +256,19 @@ ClaimResult evaluateCannotBreak(const CannotBreakClaimDef& claim, const LevelDef
             for (const double share : kCannotBreakPulls)
                 for (const double da : {-kOutcomeFanAngleStepDeg, 0.0, kOutcomeFanAngleStepDeg})
                     for (const double dv : {-kOutcomeFanSpeedStepMps, 0.0, kOutcomeFanSpeedStepMps})
-                        for (const bool atContact : {false, true})
-                            if (!atContact || bird->ability)
-                                trials.push_back(
-                                    {name, angle + da, std::clamp(share * fastest + dv, 0.0, fastest), atContact});
+                    {
+                        const double speed = std::clamp(share * fastest + dv, 0.0, fastest);
+                        trials.push_back({name, angle + da, speed, 0.0});
+                        if (bird->ability)
+                            for (const double abilityShare : kCannotBreakAbilityShares)
+                                trials.push_back({name, angle + da, speed, abilityShare});
+                    }
     }
-    // Each aim is played once without its ability; that play's first contact times the ability's trial, which
-    // follows it in the list.
+    // Each aim is played once without its ability; that play's first contact times the ability's trials, which
+    // follow it in the list.
     std::vector<std::size_t> plainTrials;
     for (std::size_t i = 0; i < trials.size(); ++i)
-        if (!trials[i].abilityAtContact)
+        if (trials[i].abilityShare <= 0.0)
             plainTrials.push_back(i);
     std::vector<int> broken(trials.size(), -1);
     try
@@ -183,9 +280,10 @@ ClaimResult evaluateCannotBreak(const CannotBreakClaimDef& claim, const LevelDef
                 const std::size_t i = plainTrials[k];
                 const BreakPlay plain = playForBreak(claim, level, catalog, trials[i], std::nullopt);
                 broken[i] = plain.broken;
-                // A bird that touched nothing has no contact to use its ability at: the plain play covers it.
-                if (i + 1 < trials.size() && trials[i + 1].abilityAtContact && plain.contactS)
-                    broken[i + 1] = playForBreak(claim, level, catalog, trials[i + 1], plain.contactS).broken;
+                // A bird that touched nothing has no contact to time its ability by: the plain play covers it.
+                for (std::size_t j = i + 1; plain.contactS && j < trials.size() && trials[j].abilityShare > 0.0; ++j)
+                    broken[j] =
+                        playForBreak(claim, level, catalog, trials[j], trials[j].abilityShare * *plain.contactS).broken;
             },
             [](std::size_t) {});
     }
@@ -205,14 +303,18 @@ ClaimResult evaluateCannotBreak(const CannotBreakClaimDef& claim, const LevelDef
     if (result.holds)
         result.message = "no " + claim.material + " block " + happens + " in " + std::to_string(trials.size()) +
                          " shots (" + birdList +
-                         "; a grid of aims and the fan around each; abilities at contact and unused)";
+                         "; a grid of aims and the fan around each; abilities halfway to contact, just before, at "
+                         "contact and unused)";
     else
     {
         const BreakTrial& t = trials[static_cast<std::size_t>(first - broken.begin())];
-        result.message = "a " + claim.material + " block " + happens + " in " + shown(result.left) + " of " +
-                         std::to_string(trials.size()) + " shots, first block " + std::to_string(*first) + " by the " +
-                         t.bird + " bird at " + shown(t.angleDeg) + "\u00B0, " + shown(t.speedMps) + " m/s" +
-                         (t.abilityAtContact ? ", its ability at contact" : ", no ability");
+        result.message =
+            "a " + claim.material + " block " + happens + " in " + shown(result.left) + " of " +
+            std::to_string(trials.size()) + " shots, first block " + std::to_string(*first) + " by the " + t.bird +
+            " bird at " + shown(t.angleDeg) + "\u00B0, " + shown(t.speedMps) + " m/s" +
+            (t.abilityShare >= 1.0  ? ", its ability at contact"
+             : t.abilityShare > 0.0 ? ", its ability at " + shown(100.0 * t.abilityShare) + " % of the time to contact"
+                                    : ", no ability");
     }
     return result;
 }
@@ -278,6 +380,8 @@ ClaimResult evaluateClaim(const ClaimDef& claim, const LevelDef& level, const Ca
         return evaluateOutcome(*claim.outcome, level, catalog);
     if (claim.cannotBreak)
         return evaluateCannotBreak(*claim.cannotBreak, level, catalog);
+    if (claim.reach)
+        return evaluateReach(*claim.reach, level, catalog);
     ClaimResult result;
     std::string error;
     const std::optional<ClaimParts> parts = splitClaim(claim.holds, error);
