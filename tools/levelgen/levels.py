@@ -260,7 +260,8 @@ def l4_8():
                  "than a red bird at full speed carries ({p_max:red} N s). Knock the walls over and let their "
                  "weight fall on the pigs, or tap the black bird beside them: its blast breaks stone.",
                  ["A hit seldom breaks stone: hit the top of the keep so it topples."],
-                 ["black", "black", "red", "yellow", "red"], s, (60.0, 19.09))
+                 ["black", "black", "red", "yellow", "red"], s, (60.0, 19.09),
+                 claims=[("/concept", "p_max:red < strength:stone")])
 
 
 # Episode 5: other worlds and the clock -------------------------------------------------------------------------------
@@ -427,8 +428,8 @@ def l6_7():
     double_frame(s, 38.5, 0, 2.0, 1.6, "ice", "ice", ("helmet", "small"))
     ball(s, 38.5, 1.85, 0.6, "ice")
     return level("6-1", "Frozen Fortress",
-                 "A fortress of ice: light ({density:ice} kg/m^3) and brittle ({strength:ice} N s). Blue birds split "
-                 "into a flock and break more ice than one heavy bird.",
+                 "A fortress of ice: light ({density:ice} kg/m^3) and brittle ({strength:ice} N s). The blue bird "
+                 "splits into a flock in flight (click): its hits spread along the walls instead of striking one spot.",
                  ["Split the blue bird at the walls."],
                  ["blue", "red", "blue", "red", "red"], s, (2.5, 32.32))
 
