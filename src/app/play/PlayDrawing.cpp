@@ -120,18 +120,16 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
              PlayToolbar::reservedWidthPx(view.app(), target.getSize()));
     for (const auto& layer : layers)
         layer->drawScreen(target, view);
-    // Last, so that it can keep clear of every panel.
-    std::vector<ScreenRegion> things = keepVisibleBoxes(session, camera);
+    // Last, so that it can keep clear of every panel. What must stay in view is looked up only when something uses it.
+    std::vector<ScreenRegion>* sink = keepVisibleSink();
+    std::vector<ScreenRegion> things;
+    if (lastShot != nullptr || sink != nullptr)
+        things = keepVisibleBoxes(session, camera);
     if (lastShot != nullptr)
-    {
-        std::vector<sf::FloatRect> keep;
-        for (const ScreenRegion& thing : things)
-            keep.push_back(thing.rect);
-        overlay.drawShotLabel(target, camera, *lastShot, opacity, structureScreenBoxes(session, camera), keep,
-                              static_cast<float>(view.app().settings().current().textScale),
+        overlay.drawShotLabel(target, camera, *lastShot, opacity, structureScreenBoxes(session, camera),
+                              rectsOf(things), static_cast<float>(view.app().settings().current().textScale),
                               view.playMode() == PlayMode::Game);
-    }
-    if (std::vector<ScreenRegion>* sink = keepVisibleSink())
+    if (sink != nullptr)
         *sink = std::move(things);
 }
 

@@ -229,9 +229,7 @@ void OverlayRenderer::drawShotLabel(sf::RenderTarget& target, const Camera& came
     // the structure; with no spot clear of both inside the window it is left out rather than drawn over them.
     const sf::Vector2f boxSize = extent + sf::Vector2f(2.0f * pad, 2.0f * pad);
     const sf::Vector2f window(camera.windowSize());
-    std::vector<sf::FloatRect> panels;
-    for (const ScreenRegion& region : screenLayout())
-        panels.push_back(region.rect);
+    const std::vector<sf::FloatRect> panels = rectsOf(screenLayout());
     std::vector<sf::FloatRect> avoid(structure.begin(), structure.end());
     avoid.insert(avoid.end(), panels.begin(), panels.end());
     std::vector<sf::FloatRect> panelsAndKeep = panels;

@@ -142,4 +142,13 @@ std::vector<std::pair<std::size_t, std::size_t>> overlappingRegions(const std::v
     return pairs;
 }
 
+std::vector<sf::FloatRect> rectsOf(const std::vector<ScreenRegion>& regions)
+{
+    std::vector<sf::FloatRect> rects;
+    rects.reserve(regions.size());
+    for (const ScreenRegion& region : regions)
+        rects.push_back(region.rect);
+    return rects;
+}
+
 } // namespace abalike::app

@@ -61,6 +61,9 @@ const std::vector<ScreenRegion>& screenLayout();
 /// drawn so far this frame (each overlap moves it under that panel, `gap` apart).
 float firstFreeTop(float left, float width, float top, float height, float gap);
 
+/// The rectangles of these regions, for the placement helpers that take plain rectangles.
+std::vector<sf::FloatRect> rectsOf(const std::vector<ScreenRegion>& regions);
+
 /// Pairs of regions (indices) that overlap by more than `tolerancePx` both ways.
 std::vector<std::pair<std::size_t, std::size_t>> overlappingRegions(const std::vector<ScreenRegion>& regions,
                                                                     float tolerancePx = 1.0f);

@@ -226,9 +226,7 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     std::vector<ScreenRegion> things;
     if (overlayOn() || feedbackShown(view) || m_guide.active())
         things = keepVisibleBoxes(session, view.camera());
-    std::vector<sf::FloatRect> keep;
-    for (const ScreenRegion& thing : things)
-        keep.push_back(thing.rect);
+    const std::vector<sf::FloatRect> keep = rectsOf(things);
     setKeepInView(std::move(things));
 
     // Right column: the flying bird's forces and energy, or after its first contact the impact; while aiming, the
