@@ -19,12 +19,16 @@ namespace
 const std::filesystem::path kLevels = std::filesystem::path(ABALIKE_SOURCE_DIR) / "levels";
 const std::filesystem::path kSchema = kLevels / "schema" / "level.schema.json";
 
+/// The campaign's levels and the lessons (whose claims include forms no campaign level uses), relative to levels/.
 std::vector<std::string> campaignLevels()
 {
     std::vector<std::string> names;
     for (const auto& entry : std::filesystem::directory_iterator(kLevels))
         if (entry.path().extension() == ".json" && entry.path().filename() != "campaign.json")
             names.push_back(entry.path().filename().string());
+    for (const auto& entry : std::filesystem::directory_iterator(kLevels / "lessons"))
+        if (entry.path().extension() == ".json")
+            names.push_back("lessons/" + entry.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
@@ -76,7 +80,8 @@ INSTANTIATE_TEST_SUITE_P(Levels, CampaignLevelWriter, ::testing::ValuesIn(campai
                          [](const ::testing::TestParamInfo<std::string>& info)
                          {
                              std::string name = info.param.substr(0, info.param.size() - 5);
-                             std::replace(name.begin(), name.end(), '-', '_');
+                             std::replace_if(
+                                 name.begin(), name.end(), [](char c) { return c == '-' || c == '/'; }, '_');
                              return name;
                          });
 
