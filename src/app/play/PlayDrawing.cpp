@@ -115,16 +115,20 @@ void drawPlay(sf::RenderTarget& target, PlayView& view, WorldRenderer& world, Ov
     }
 
     target.setView(still);
+    // What the panels must leave in view; the HUD's strips give way to all but the slingshot (the camera keeps the
+    // ground and the slingshot above the bottom strips).
+    std::vector<ScreenRegion> things = keepVisibleBoxes(session, camera);
+    std::vector<sf::FloatRect> stripsKeepClear;
+    for (const ScreenRegion& thing : things)
+        if (thing.name != "slingshot")
+            stripsKeepClear.push_back(thing.rect);
     hud.draw(target, target.getSize(), session, view.aim(), view.playMode(), view.levelLabel(),
              static_cast<float>(view.app().settings().current().textScale),
-             PlayToolbar::reservedWidthPx(view.app(), target.getSize()));
+             PlayToolbar::reservedWidthPx(view.app(), target.getSize()), stripsKeepClear);
     for (const auto& layer : layers)
         layer->drawScreen(target, view);
-    // Last, so that it can keep clear of every panel. What must stay in view is looked up only when something uses it.
+    // Last, so that it can keep clear of every panel.
     std::vector<ScreenRegion>* sink = keepVisibleSink();
-    std::vector<ScreenRegion> things;
-    if (lastShot != nullptr || sink != nullptr)
-        things = keepVisibleBoxes(session, camera);
     if (lastShot != nullptr)
         overlay.drawShotLabel(target, camera, *lastShot, opacity, structureScreenBoxes(session, camera),
                               rectsOf(things), static_cast<float>(view.app().settings().current().textScale),

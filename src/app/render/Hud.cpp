@@ -4,6 +4,7 @@
 #include <abalike/teach/TextValues.hpp>
 
 #include "render/Label.hpp"
+#include "render/LabelPlacement.hpp"
 #include "render/Palette.hpp"
 #include "render/ScreenRegions.hpp"
 #include "render/TextFormat.hpp"
@@ -20,6 +21,11 @@ namespace
 unsigned scaled(float scale, float size)
 {
     return static_cast<unsigned>(std::max(9.0f, std::round(size * scale)));
+}
+
+bool leavesInView(const sf::FloatRect& rect, std::span<const sf::FloatRect> keepClear)
+{
+    return coveredArea(rect, keepClear) <= 0.0f;
 }
 
 void panel(sf::RenderTarget& target, sf::FloatRect rect, std::string_view name)
@@ -39,7 +45,7 @@ float hudScale(sf::Vector2u size)
 
 void Hud::draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& session,
                const std::optional<AimReadout>& aim, PlayMode mode, std::string_view levelLabel, float textScale,
-               float reservedRightPx) const
+               float reservedRightPx, std::span<const sf::FloatRect> keepClear) const
 {
     if (m_font == nullptr)
         return;
@@ -47,39 +53,66 @@ void Hud::draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& s
     sf::FloatRect status;
     {
         const TextKindScope kind(TextKind::Hud);
-        status = drawStatus(target, size, scale, session, levelLabel, mode);
+        status = drawStatus(target, size, scale, session, levelLabel, mode, keepClear);
     }
     const float environmentBottom =
-        drawEnvironment(target, status.top + status.height + 6.0f * scale, scale, session.level(), mode);
-    const float left = status.left + status.width + 8.0f * scale;
-    const float right = static_cast<float>(size.x) - reservedRightPx - 8.0f * scale;
+        drawEnvironment(target, status.top + status.height + 6.0f * scale, scale, session.level(), mode, keepClear);
+    const TopRow row{size,
+                     scale,
+                     status.left + status.width + 8.0f * scale,
+                     static_cast<float>(size.x) - reservedRightPx - 8.0f * scale,
+                     environmentBottom + 6.0f * scale,
+                     static_cast<float>(size.y) - bottomTextHeight(size, session.level(), textScale) - 6.0f * scale,
+                     keepClear};
     if (aim && mode == PlayMode::Game)
-        drawPowerBar(target, size, scale, *aim, left, right, environmentBottom + 6.0f * scale);
+        drawPowerBar(target, row, *aim);
     else if (aim)
-        drawAim(target, size, scale, *aim, left, right, environmentBottom + 6.0f * scale);
+        drawAim(target, row, *aim);
     else if (session.canActivateAbility())
     {
         const TextKindScope kind(TextKind::Hud);
-        drawAbilityPrompt(target, size, scale, session, left, right, environmentBottom + 6.0f * scale);
+        drawAbilityPrompt(target, row, session);
     }
     if (!session.finished())
-        drawHint(target, size, scale, session.level());
+        drawHint(target, size, scale, session.level(), keepClear);
 }
 
 namespace
 {
-/// A top panel's left edge: centred in the window if it fits between left and right, else as far left as allowed;
-/// nullopt when it does not fit there at all.
-std::optional<float> topSlot(float width, sf::Vector2u size, float left, float right)
+/// A top strip's top-left corner: centred in the window between the status panel and the toolbar if it fits there,
+/// else at either end of that room, else at the left edge under the air, or lower down by half its height at a time
+/// (a strip as wide as the window finds the gap between a tower's pigs); the first of them that covers nothing the
+/// strip must leave in view. nullopt: none does (the strip waits out of sight for the frame).
+std::optional<sf::Vector2f> topSpot(sf::Vector2f stripSize, float scale, sf::Vector2u windowSize, float left,
+                                    float right, float below, float lowest, std::span<const sf::FloatRect> keepClear)
 {
-    if (right - left < width)
-        return std::nullopt;
-    return std::clamp(0.5f * (static_cast<float>(size.x) - width), left, right - width);
+    std::vector<sf::Vector2f> spots;
+    const float top = 12.0f * scale;
+    if (right - left >= stripSize.x)
+    {
+        spots.emplace_back(
+            std::clamp(0.5f * (static_cast<float>(windowSize.x) - stripSize.x), left, right - stripSize.x), top);
+        spots.emplace_back(left, top);
+        spots.emplace_back(right - stripSize.x, top);
+    }
+    spots.emplace_back(12.0f * scale, below);
+    for (float top = below + 0.5f * stripSize.y; top + stripSize.y <= lowest; top += 0.5f * stripSize.y)
+        spots.emplace_back(12.0f * scale, top);
+    for (const sf::Vector2f spot : spots)
+        if (leavesInView({spot, stripSize}, keepClear))
+            return spot;
+    return std::nullopt;
 }
 } // namespace
 
+std::optional<sf::Vector2f> Hud::TopRow::spot(sf::Vector2f stripSize) const
+{
+    return topSpot(stripSize, scale, size, left, right, below, lowest, keepClear);
+}
+
 sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float scale, const GameSession& session,
-                              std::string_view levelLabel, PlayMode mode) const
+                              std::string_view levelLabel, PlayMode mode,
+                              std::span<const sf::FloatRect> keepClear) const
 {
     const LevelDef& level = session.level();
     const unsigned titleSize = scaled(scale, 24.0f);
@@ -130,6 +163,8 @@ sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float
     const float lines = 2.0f + (time.isEmpty() ? 0.0f : 1.0f) + (band.isEmpty() ? 0.0f : 1.0f);
     const float height = titleHeight + lines * lineHeight + 2.0f * pad;
     const sf::FloatRect rect(margin, margin, width + 2.0f * pad, height);
+    if (!leavesInView(rect, keepClear))
+        return rect;
     panel(target, rect, "status");
 
     sf::Vector2f at(margin + pad, margin + pad);
@@ -147,7 +182,8 @@ sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float
     return rect;
 }
 
-float Hud::drawEnvironment(sf::RenderTarget& target, float top, float scale, const LevelDef& level, PlayMode mode) const
+float Hud::drawEnvironment(sf::RenderTarget& target, float top, float scale, const LevelDef& level, PlayMode mode,
+                           std::span<const sf::FloatRect> keepClear) const
 {
     const EnvironmentDef& air = level.environment;
     const bool windy = air.gusts || air.windX != 0.0 || air.windY != 0.0;
@@ -185,14 +221,17 @@ float Hud::drawEnvironment(sf::RenderTarget& target, float top, float scale, con
     const float pad = 7.0f * scale;
     const float width = measureText(*m_font, label, textSize).x;
     const float height = m_font->getLineSpacing(textSize) + 2.0f * pad;
-    panel(target, {margin, top, width + 2.0f * pad, height}, "environment");
+    const sf::FloatRect rect(margin, top, width + 2.0f * pad, height);
+    if (!leavesInView(rect, keepClear))
+        return top + height;
+    panel(target, rect, "environment");
     drawLabel(target, *m_font, label, {margin + pad, top + pad}, textSize, palette::kTextDim);
     return top + height;
 }
 
-void Hud::drawAim(sf::RenderTarget& target, sf::Vector2u size, float scale, const AimReadout& aim, float left,
-                  float right, float below) const
+void Hud::drawAim(sf::RenderTarget& target, const TopRow& row, const AimReadout& aim) const
 {
+    const float scale = row.scale;
     const unsigned mainSize = scaled(scale, 21.0f);
     const unsigned lessonSize = scaled(scale, 16.0f);
     const sf::String main = utf8(aimSummary(aim));
@@ -201,19 +240,31 @@ void Hud::drawAim(sf::RenderTarget& target, sf::Vector2u size, float scale, cons
     const float pad = 10.0f * scale;
     const float mainHeight = m_font->getLineSpacing(mainSize);
     const float lessonHeight = m_font->getLineSpacing(lessonSize);
-    const float width = std::max({measureText(*m_font, main, mainSize).x, measureText(*m_font, lesson, lessonSize).x,
-                                  measureText(*m_font, share, lessonSize).x}) +
-                        2.0f * pad;
-    const std::optional<float> slot = topSlot(width, size, left, right);
-    const float x = slot ? *slot : 12.0f * scale;
-    const float top = slot ? 12.0f * scale : below;
-    const float centre = x + 0.5f * width;
     const float lines = share.isEmpty() ? 1.0f : 2.0f;
-    panel(target, {x, top, width, mainHeight + lines * lessonHeight + 2.0f * pad}, "aim readout");
+    const sf::Vector2f whole(
+        std::max({measureText(*m_font, main, mainSize).x, measureText(*m_font, lesson, lessonSize).x,
+                  measureText(*m_font, share, lessonSize).x}) +
+            2.0f * pad,
+        mainHeight + lines * lessonHeight + 2.0f * pad);
+    // With no place clear of what it must leave in view (at large text the whole readout spans the window), the
+    // numbers alone: the angle, the speed and the pull, without how they follow from each other.
+    const sf::Vector2f numbersOnly(measureText(*m_font, main, mainSize).x + 2.0f * pad, mainHeight + 2.0f * pad);
+    std::optional<sf::Vector2f> spot = row.spot(whole);
+    const bool complete = spot.has_value();
+    if (!complete)
+        spot = row.spot(numbersOnly);
+    if (!spot)
+        return;
+    const sf::Vector2f size = complete ? whole : numbersOnly;
+    const auto [x, top] = *spot;
+    const float centre = x + 0.5f * size.x;
+    panel(target, {*spot, size}, "aim readout");
     {
         const TextKindScope kind(TextKind::Physics);
         drawLabel(target, *m_font, main, {centre, top + pad}, mainSize, palette::kText, Align::Centre);
     }
+    if (!complete)
+        return;
     const TextKindScope kind(TextKind::Formula);
     drawLabel(target, *m_font, lesson, {centre, top + pad + mainHeight}, lessonSize, palette::kTextDim, Align::Centre);
     if (!share.isEmpty())
@@ -224,9 +275,9 @@ void Hud::drawAim(sf::RenderTarget& target, sf::Vector2u size, float scale, cons
     }
 }
 
-void Hud::drawPowerBar(sf::RenderTarget& target, sf::Vector2u size, float scale, const AimReadout& aim, float left,
-                       float right, float below) const
+void Hud::drawPowerBar(sf::RenderTarget& target, const TopRow& row, const AimReadout& aim) const
 {
+    const float scale = row.scale;
     const TextKindScope kind(TextKind::Hud);
     const unsigned textSize = scaled(scale, 21.0f);
     const sf::String angle = utf8(formatFixed(aim.angleDeg, 0) + "\u00B0");
@@ -236,9 +287,10 @@ void Hud::drawPowerBar(sf::RenderTarget& target, sf::Vector2u size, float scale,
     const float angleWidth = measureText(*m_font, utf8("-88\u00B0"), textSize).x;
     const float width = angleWidth + barWidth + 3.0f * pad;
     const float lineHeight = m_font->getLineSpacing(textSize);
-    const std::optional<float> slot = topSlot(width, size, left, right);
-    const float x = slot ? *slot : 12.0f * scale;
-    const float top = slot ? 12.0f * scale : below;
+    const std::optional<sf::Vector2f> spot = row.spot({width, lineHeight + 2.0f * pad});
+    if (!spot)
+        return;
+    const auto [x, top] = *spot;
     panel(target, {x, top, width, lineHeight + 2.0f * pad}, "aim readout");
     drawLabel(target, *m_font, angle, {x + pad + angleWidth, top + pad}, textSize, palette::kText, Align::Right);
     // The bar: the pull's share of a full pull, filled from the left, warmer as it fills.
@@ -258,20 +310,22 @@ void Hud::drawPowerBar(sf::RenderTarget& target, sf::Vector2u size, float scale,
     target.draw(fill);
 }
 
-void Hud::drawAbilityPrompt(sf::RenderTarget& target, sf::Vector2u size, float scale, const GameSession& session,
-                            float left, float right, float below) const
+void Hud::drawAbilityPrompt(sf::RenderTarget& target, const TopRow& row, const GameSession& session) const
 {
+    const float scale = row.scale;
     const BirdType* bird = session.shots().empty() ? nullptr : session.catalog().findBird(session.shots().back().bird);
     const std::string ability = bird != nullptr ? std::string(bird->abilityName()) : "ability";
     const unsigned textSize = scaled(scale, 21.0f);
     const sf::String text = utf8("Click or Space: " + ability + "!");
     const float pad = 10.0f * scale;
     const float width = measureText(*m_font, text, textSize).x + 2.0f * pad;
-    const std::optional<float> slot = topSlot(width, size, left, right);
-    const float x = slot ? *slot : 12.0f * scale;
-    const float top = slot ? 12.0f * scale : below;
+    const float height = m_font->getLineSpacing(textSize) + 2.0f * pad;
+    const std::optional<sf::Vector2f> spot = row.spot({width, height});
+    if (!spot)
+        return;
+    const auto [x, top] = *spot;
     const float centre = x + 0.5f * width;
-    panel(target, {x, top, width, m_font->getLineSpacing(textSize) + 2.0f * pad}, "ability prompt");
+    panel(target, {x, top, width, height}, "ability prompt");
     drawLabel(target, *m_font, text, {centre, top + pad}, textSize, palette::kStar, Align::Centre);
 }
 
@@ -302,26 +356,39 @@ float Hud::bottomTextHeight(sf::Vector2u size, const LevelDef& level, float text
     return height;
 }
 
-void Hud::drawHint(sf::RenderTarget& target, sf::Vector2u size, float scale, const LevelDef& level) const
+void Hud::drawHint(sf::RenderTarget& target, sf::Vector2u size, float scale, const LevelDef& level,
+                   std::span<const sf::FloatRect> keepClear) const
 {
-    const float centre = 0.5f * static_cast<float>(size.x);
+    const auto windowWidth = static_cast<float>(size.x);
+    const float margin = 12.0f * scale;
     float bottom = static_cast<float>(size.y) - 8.0f * scale;
-    // Bottom up: the keys, then the level's hint, each wrapped to the window at large text sizes.
+    // Bottom up: the keys, then the level's hint, each wrapped to the window at large text sizes; each in the middle
+    // of its line, else at the line's left or right end, whichever leaves what it would cover in view.
     for (const BottomText& text : bottomText(size, scale, level))
     {
         const TextKindScope kind(text.kind);
         const float lineHeight = m_font->getLineSpacing(text.textSize);
-        bottom -= lineHeight * static_cast<float>(text.lines.size());
-        float y = bottom;
+        const float height = lineHeight * static_cast<float>(text.lines.size());
+        bottom -= height;
         float widest = 0.0f;
         for (const std::string& line : text.lines)
+            widest = std::max(widest, measureText(*m_font, utf8(line), text.textSize).x);
+        const float halfWidest = 0.5f * widest;
+        for (const float centre : {0.5f * windowWidth, std::min(0.5f * windowWidth, margin + halfWidest),
+                                   std::max(0.5f * windowWidth, windowWidth - margin - halfWidest)})
         {
-            widest = std::max(
-                widest,
-                drawLabel(target, *m_font, utf8(line), {centre, y}, text.textSize, text.colour, Align::Centre).width);
-            y += lineHeight;
+            const sf::FloatRect rect(centre - halfWidest, bottom, widest, height);
+            if (!leavesInView(rect, keepClear))
+                continue;
+            float y = bottom;
+            for (const std::string& line : text.lines)
+            {
+                drawLabel(target, *m_font, utf8(line), {centre, y}, text.textSize, text.colour, Align::Centre);
+                y += lineHeight;
+            }
+            recordScreenRegion(text.name, rect);
+            break;
         }
-        recordScreenRegion(text.name, {centre - 0.5f * widest, bottom, widest, y - bottom});
     }
 }
 

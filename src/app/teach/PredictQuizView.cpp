@@ -175,13 +175,14 @@ sf::FloatRect PredictQuizView::draw(sf::RenderTarget& target, const sf::Font& fo
     }
     // It goes down past the panels above it by its own width (narrower than its column, it often fits beside a wide
     // panel of the other column). In a window too small for the whole card it keeps the rows that have room (the aim
-    // and the typed answer come first); with no room even for its title it is left out.
+    // and the typed answer come first); with no room even for its title it is left out. The same while it would cover a
+    // pig, the flying bird or where the last shot struck (the bird flies under it after the launch).
     for (;;)
     {
         const TextPanel panel("Predict, then launch", rows);
         const sf::Vector2f size = panel.measure(font, titleSize, rowSize, scale);
         const sf::Vector2f place(at.x, firstFreeTop(at.x, size.x, at.y, size.y, 6.0f * scale));
-        if (panelHasRoom(target, {place, size}))
+        if (panelHasRoom(target, {place, size}) && !coversKeptInView({place, size}, true, false))
             return panel.draw(target, font, place, titleSize, rowSize, scale);
         if (rows.empty())
             return {};

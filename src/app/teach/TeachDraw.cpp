@@ -70,12 +70,12 @@ bool fullPanelFits(const sf::RenderTarget& target, const sf::FloatRect& rect, st
     return true;
 }
 
-bool coversKeptInView(const sf::FloatRect& rect, bool flyingBird)
+bool coversKeptInView(const sf::FloatRect& rect, bool flyingBird, bool slingshot)
 {
     sf::FloatRect overlap;
     for (const ScreenRegion& thing : keepInView())
-        if ((flyingBird || thing.name != "bird") && rect.intersects(thing.rect, overlap) && overlap.width > 0.0f &&
-            overlap.height > 0.0f)
+        if ((flyingBird || thing.name != "bird") && (slingshot || thing.name != "slingshot") &&
+            rect.intersects(thing.rect, overlap) && overlap.width > 0.0f && overlap.height > 0.0f)
             return true;
     return false;
 }

@@ -51,8 +51,9 @@ bool panelHasRoom(const sf::RenderTarget& target, const sf::FloatRect& rect);
 bool fullPanelFits(const sf::RenderTarget& target, const sf::FloatRect& rect, std::string_view name);
 
 /// Whether a panel at `rect` would cover something that must stay in view this frame (ScreenRegions' keepInView);
-/// without `flyingBird`, only what stays put while the camera does (the slingshot, the pigs).
-bool coversKeptInView(const sf::FloatRect& rect, bool flyingBird = true);
+/// without `flyingBird`, only what stays put while the camera does (the slingshot, the pigs); without `slingshot`, all
+/// but the slingshot with the bird it holds (a card beside it while aiming leaves the band in view).
+bool coversKeptInView(const sf::FloatRect& rect, bool flyingBird = true, bool slingshot = true);
 
 /// A panel's one-line summary, for where the whole panel has no room: `text` on one line (cut at a word with an
 /// ellipsis to fit the window), its top corner at `corner` (the top-right one when `fromRight`). Drawn only where it

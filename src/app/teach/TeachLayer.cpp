@@ -224,7 +224,7 @@ void TeachLayer::drawScreen(sf::RenderTarget& target, PlayView& view)
     // The columns' large panels, a lesson's step and the feedback leave the slingshot, the flying bird and live pigs
     // in view, or shrink.
     std::vector<ScreenRegion> things;
-    if (overlayOn() || feedbackShown(view) || m_guide.active())
+    if (overlayOn() || feedbackShown(view) || m_guide.active() || PredictQuizView::wanted(session.level()))
         things = keepVisibleBoxes(session, view.camera());
     const std::vector<sf::FloatRect> keep = rectsOf(things);
     setKeepInView(std::move(things));
