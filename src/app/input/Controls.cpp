@@ -36,6 +36,8 @@ const std::vector<ControlBinding>& controlTable()
         {"Menus", "Choose", "Up / Down, Tab", "point", "D-pad or left stick"},
         {"Menus", "Confirm", "Enter or Space", "click", "A"},
         {"Menus", "Back", "Esc", "right click", "B"},
+        {"Menus", "Open the chosen level in the editor (level select)", "E",
+         "title menu: Sandbox and editor, then File, Open", ""},
     };
     return table;
 }
