@@ -83,15 +83,20 @@ std::pair<double, const Obstacle*> deepest(const std::vector<Outline>& outlines,
 }
 
 /// How far the body must move along direction to overlap none of the obstacles, in whole millimetres; none when
-/// nothing within kFurthestM is free. Searched in kStepM steps first (something further on may be in the way
-/// again), then to a tenth of a millimetre.
+/// nothing within kFurthestM is free. The overlap's depth itself first, to the millimetre (lowered onto what is
+/// below, a body is free at that one place only: touching), then kStepM steps (something further on may be in the
+/// way again), then to a tenth of a millimetre.
 std::optional<double> nearestFree(const LevelDef& level, const Movable& body, Vec2 direction,
-                                  const std::vector<Obstacle>& obstacles)
+                                  const std::vector<Obstacle>& obstacles, double depthM)
 {
     const auto freeAt = [&](double t)
     {
         return deepest(outlinesAt(level, body, direction.x * t, direction.y * t), obstacles).first <= 1e-4;
     };
+    for (const double t :
+         {std::ceil(depthM * 1000.0 - 1e-6) / 1000.0, std::ceil(depthM * 1000.0 - 1e-6) / 1000.0 + 0.001})
+        if (t > 0.0 && freeAt(t))
+            return t;
     double hi = 0.0;
     const double furthest = std::max(kFurthestM, body.heightM + kStepM);
     for (double step = kStepM; step <= furthest + 1e-9 && hi == 0.0; step += kStepM)
@@ -199,23 +204,37 @@ std::vector<PushedBody> pushApartOverlaps(LevelDef& level, const Catalog& catalo
         const auto [depth, with] = deepest(outlinesAt(level, body, 0.0, 0.0), obstacles);
         if (depth > toleranceM && with != nullptr)
         {
-            // Lifted off what is below it; pushed aside from a neighbour whose centre is at its own height, or lifted
-            // when that way is blocked within a metre (or its height).
+            // Lifted off what is below it; pushed aside from a neighbour whose centre is at its own height (or one
+            // it cannot be lifted over: a pig moved into a post); lowered out of what is above it when it cannot be
+            // lifted (a plank raised into the posts it carries, whose bottoms are lower now), never into the ground.
             const Vec2 centre = centreOf(level, body);
             const bool beside =
                 std::abs(centre.y - with->centreY) < 0.25 * std::min(body.heightM, 2.0 * with->halfHeightM);
             const Vec2 aside{centre.x >= with->centreX ? 1.0 : -1.0, 0.0};
             const Vec2 up{0.0, 1.0};
-            for (const Vec2 direction : beside ? std::vector{aside, up} : std::vector{up})
-                if (const std::optional<double> t = nearestFree(level, body, direction, obstacles))
+            const Vec2 down{0.0, -1.0};
+            std::vector<Vec2> directions = beside ? std::vector{aside, up} : std::vector{up};
+            if (with->centreY > centre.y)
+                directions.push_back(down);
+            if (!beside)
+                directions.push_back(aside);
+            std::optional<std::pair<double, Vec2>> way;
+            for (const Vec2 direction : directions)
+                if (const std::optional<double> t = nearestFree(level, body, direction, obstacles, depth);
+                    t && (direction.y >= 0.0 || body.bottomM - *t >= level.groundY - 1e-9))
                 {
-                    double& x = body.pig ? level.pigs[body.index].x : level.blocks[body.index].x;
-                    double& y = body.pig ? level.pigs[body.index].y : level.blocks[body.index].y;
-                    x = std::round((x + direction.x * *t) * 1000.0) / 1000.0;
-                    y = std::round((y + direction.y * *t) * 1000.0) / 1000.0;
-                    pushed.push_back({pointerOf(body), with->pointer, depth, direction.x * *t, direction.y * *t});
+                    way = {*t, direction};
                     break;
                 }
+            if (way)
+            {
+                const auto [t, direction] = *way;
+                double& x = body.pig ? level.pigs[body.index].x : level.blocks[body.index].x;
+                double& y = body.pig ? level.pigs[body.index].y : level.blocks[body.index].y;
+                x = std::round((x + direction.x * t) * 1000.0) / 1000.0;
+                y = std::round((y + direction.y * t) * 1000.0) / 1000.0;
+                pushed.push_back({pointerOf(body), with->pointer, depth, direction.x * t, direction.y * t});
+            }
         }
         for (Outline& piece : outlinesAt(level, body, 0.0, 0.0))
         {
