@@ -22,10 +22,11 @@ struct PushedBody
 
 /// Moves a level's blocks and pigs out of one another the way a physics engine's first step pushes them apart
 /// (Science Birds relies on it: its files hold pigs sunk into pigs and planks sunk into posts). Bodies are taken from
-/// the lowest up; one that overlaps terrain or a body taken before it more than toleranceM is lifted clear of it,
-/// or pushed sideways when that body stands at its own height; one that cannot be lifted is lowered out of a body
-/// above it (a plank raised into the posts it carries; never into the ground), else pushed sideways (a pig moved
-/// into a post). Positions stay on the millimetre.
+/// the lowest up; one that overlaps terrain or a body taken before it more than toleranceM is lifted clear of it, or
+/// pushed sideways when that body stands at its own height, or when sideways is the shorter way and leaves it
+/// standing on something (a block a few centimetres into the pig beside it, a pig moved into a post); one that cannot
+/// be lifted is lowered out of a body above it (a plank raised into the posts it carries; never into the ground),
+/// else pushed sideways. Positions stay on the millimetre.
 /// Returns the bodies moved, in the order they were; a body that cannot be freed within a metre (or its own height,
 /// when it is taller) is left alone.
 std::vector<PushedBody> pushApartOverlaps(LevelDef& level, const Catalog& catalog, double toleranceM);

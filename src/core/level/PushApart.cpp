@@ -110,6 +110,46 @@ std::optional<double> nearestFree(const LevelDef& level, const Movable& body, Ve
     return std::ceil(hi * 1000.0 - 1e-6) / 1000.0; // never less than needed
 }
 
+/// Whether the body, moved by (dx, dy), stands on something: the ground, or a body or terrain within a centimetre
+/// under it.
+bool supportedAt(const LevelDef& level, const Movable& body, double dx, double dy,
+                 const std::vector<Obstacle>& obstacles)
+{
+    constexpr double kUnderM = 0.01;
+    return body.bottomM + dy <= level.groundY + kUnderM ||
+           deepest(outlinesAt(level, body, dx, dy - kUnderM), obstacles).first > 1e-4;
+}
+
+/// Which way and how far a body overlapping `with` moves out: lifted off what is below it, or pushed aside where
+/// that is shorter and leaves it standing on something (a pig moved into a post, a block a few centimetres into the
+/// pig beside it), or always from a neighbour whose centre is at its own height; lowered out of what is above it when
+/// it cannot be lifted (a plank raised into the posts it carries, whose bottoms are lower now), never into the
+/// ground; else aside. None when no way is free within reach.
+std::optional<std::pair<double, Vec2>> wayOut(const LevelDef& level, const Movable& body, const Obstacle& with,
+                                              double depth, const std::vector<Obstacle>& obstacles)
+{
+    const Vec2 centre = centreOf(level, body);
+    const Vec2 aside{centre.x >= with.centreX ? 1.0 : -1.0, 0.0};
+    const Vec2 up{0.0, 1.0};
+    const Vec2 down{0.0, -1.0};
+    const std::optional<double> sideways = nearestFree(level, body, aside, obstacles, depth);
+    const bool beside = std::abs(centre.y - with.centreY) < 0.25 * std::min(body.heightM, 2.0 * with.halfHeightM);
+    if (sideways && beside)
+        return std::pair{*sideways, aside};
+    const std::optional<double> lift = nearestFree(level, body, up, obstacles, depth);
+    if (sideways && (!lift || *sideways < *lift) && supportedAt(level, body, aside.x * *sideways, 0.0, obstacles))
+        return std::pair{*sideways, aside};
+    if (lift)
+        return std::pair{*lift, up};
+    if (with.centreY > centre.y)
+        if (const std::optional<double> lower = nearestFree(level, body, down, obstacles, depth);
+            lower && body.bottomM - *lower >= level.groundY - 1e-9)
+            return std::pair{*lower, down};
+    if (sideways)
+        return std::pair{*sideways, aside};
+    return std::nullopt;
+}
+
 std::vector<Obstacle> terrainObstacles(const LevelDef& level)
 {
     std::vector<Obstacle> obstacles;
@@ -204,28 +244,7 @@ std::vector<PushedBody> pushApartOverlaps(LevelDef& level, const Catalog& catalo
         const auto [depth, with] = deepest(outlinesAt(level, body, 0.0, 0.0), obstacles);
         if (depth > toleranceM && with != nullptr)
         {
-            // Lifted off what is below it; pushed aside from a neighbour whose centre is at its own height (or one
-            // it cannot be lifted over: a pig moved into a post); lowered out of what is above it when it cannot be
-            // lifted (a plank raised into the posts it carries, whose bottoms are lower now), never into the ground.
-            const Vec2 centre = centreOf(level, body);
-            const bool beside =
-                std::abs(centre.y - with->centreY) < 0.25 * std::min(body.heightM, 2.0 * with->halfHeightM);
-            const Vec2 aside{centre.x >= with->centreX ? 1.0 : -1.0, 0.0};
-            const Vec2 up{0.0, 1.0};
-            const Vec2 down{0.0, -1.0};
-            std::vector<Vec2> directions = beside ? std::vector{aside, up} : std::vector{up};
-            if (with->centreY > centre.y)
-                directions.push_back(down);
-            if (!beside)
-                directions.push_back(aside);
-            std::optional<std::pair<double, Vec2>> way;
-            for (const Vec2 direction : directions)
-                if (const std::optional<double> t = nearestFree(level, body, direction, obstacles, depth);
-                    t && (direction.y >= 0.0 || body.bottomM - *t >= level.groundY - 1e-9))
-                {
-                    way = {*t, direction};
-                    break;
-                }
+            const std::optional<std::pair<double, Vec2>> way = wayOut(level, body, *with, depth, obstacles);
             if (way)
             {
                 const auto [t, direction] = *way;
