@@ -57,6 +57,8 @@ void EditorClipboard::paste()
     m_ctx.message = why.empty() ? "Pasted " + std::to_string(count) + (count == 1 ? " object" : " objects")
                                 : "Cannot paste: " + why;
     m_ctx.messageIsError = !why.empty();
+    if (why.empty())
+        m_ctx.sayIfNotLanded();
     m_ctx.app.trace().write("editor-paste",
                             {{"objects", why.empty() ? m_ctx.scene().selection().size() : 0}, {"why", why}});
 }

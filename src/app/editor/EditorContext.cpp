@@ -1,5 +1,7 @@
 #include "editor/EditorContext.hpp"
 
+#include <abalike/edit/Landing.hpp>
+
 #include "shell/AppContext.hpp"
 #include "shell/UiMetrics.hpp"
 
@@ -38,6 +40,16 @@ void EditorContext::redo()
     scene().redo();
     if (messageIsError)
         say("");
+}
+
+bool EditorContext::sayIfNotLanded()
+{
+    const SnapSettings& snap = scene().snapSettings();
+    const std::optional<std::string> why =
+        whyNotLanded(scene().level(), scene().catalog(), scene().selection(), snap.surfaces ? snap.surfaceReachM : 0.0);
+    if (why)
+        say(*why, true);
+    return why.has_value();
 }
 
 void EditorContext::say(std::string text, bool error)

@@ -29,6 +29,9 @@ struct EditorContext
 
     /// The status bar's line: a message, or a problem when error.
     void say(std::string text, bool error = false);
+    /// After a place, drop, paste or move: says (as a problem) why a selected block or pig does not land on what is
+    /// under it, as `abalike check` would (whyNotLanded); keeps the message otherwise. Returns whether it said so.
+    bool sayIfNotLanded();
     /// Undo and redo (keys, menu): a problem the status bar shows belonged to the edit now undone, and goes.
     void undo();
     void redo();

@@ -247,7 +247,8 @@ void SceneTools::pressOnScene(sf::Vector2f pixel, bool shift, bool ctrl)
             const ObjectRef placed = m_ctx.scene().place(toolObject(world));
             const auto at = centreOf(objectDef(m_ctx.scene().level(), placed));
             m_ctx.app.trace().write("editor-place", {{"object", pointerOf(placed)}, {"x", at.x}, {"y", at.y}});
-            m_ctx.message.clear();
+            if (!m_ctx.sayIfNotLanded())
+                m_ctx.message.clear();
         }
         catch (const std::exception& error)
         {
@@ -345,6 +346,7 @@ void SceneTools::releaseOnScene(sf::Vector2f pixel)
     {
         m_ctx.scene().endDrag();
         m_dragFrom.reset();
+        m_ctx.sayIfNotLanded();
     }
     if (m_resizing || m_vertexDrag)
     {
@@ -404,6 +406,8 @@ void SceneTools::dropHeld(sf::Vector2f world, bool shift)
     m_ctx.message = why.empty() ? held->label + ": " + std::to_string(count) + " bodies dropped"
                                 : "Cannot drop " + held->label + ": " + why;
     m_ctx.messageIsError = !why.empty();
+    if (why.empty())
+        m_ctx.sayIfNotLanded();
     m_ctx.app.trace().write(
         "editor-drop",
         {{"label", held->label}, {"x", world.x}, {"y", world.y}, {"bodies", why.empty() ? count : 0}, {"why", why}});
