@@ -229,49 +229,89 @@ float Hud::drawEnvironment(sf::RenderTarget& target, float top, float scale, con
     return top + height;
 }
 
+namespace
+{
+/// The aim's numbers on two lines, split at the separator nearest the middle.
+std::pair<std::string, std::string> splitSummary(const std::string& summary)
+{
+    const std::string dot = " \u00B7 ";
+    std::size_t best = std::string::npos;
+    for (std::size_t at = summary.find(dot); at != std::string::npos; at = summary.find(dot, at + 1))
+        if (best == std::string::npos ||
+            std::abs(static_cast<double>(at) - 0.5 * static_cast<double>(summary.size())) <
+                std::abs(static_cast<double>(best) - 0.5 * static_cast<double>(summary.size())))
+            best = at;
+    if (best == std::string::npos)
+        return {summary, ""};
+    return {summary.substr(0, best), summary.substr(best + dot.size())};
+}
+} // namespace
+
 void Hud::drawAim(sf::RenderTarget& target, const TopRow& row, const AimReadout& aim) const
 {
     const float scale = row.scale;
     const unsigned mainSize = scaled(scale, 21.0f);
     const unsigned lessonSize = scaled(scale, 16.0f);
-    const sf::String main = utf8(aimSummary(aim));
+    const std::string summary = aimSummary(aim);
     const sf::String lesson = utf8(aimLesson(aim));
     const sf::String share = utf8(aimShare(aim));
     const float pad = 10.0f * scale;
     const float mainHeight = m_font->getLineSpacing(mainSize);
     const float lessonHeight = m_font->getLineSpacing(lessonSize);
-    const float lines = share.isEmpty() ? 1.0f : 2.0f;
-    const sf::Vector2f whole(
-        std::max({measureText(*m_font, main, mainSize).x, measureText(*m_font, lesson, lessonSize).x,
-                  measureText(*m_font, share, lessonSize).x}) +
-            2.0f * pad,
-        mainHeight + lines * lessonHeight + 2.0f * pad);
-    // With no place clear of what it must leave in view (at large text the whole readout spans the window), the
-    // numbers alone: the angle, the speed and the pull, without how they follow from each other.
-    const sf::Vector2f numbersOnly(measureText(*m_font, main, mainSize).x + 2.0f * pad, mainHeight + 2.0f * pad);
-    std::optional<sf::Vector2f> spot = row.spot(whole);
-    const bool complete = spot.has_value();
-    if (!complete)
-        spot = row.spot(numbersOnly);
-    if (!spot)
-        return;
-    const sf::Vector2f size = complete ? whole : numbersOnly;
-    const auto [x, top] = *spot;
-    const float centre = x + 0.5f * size.x;
-    panel(target, {*spot, size}, "aim readout");
+    const float shareLines = share.isEmpty() ? 1.0f : 2.0f;
+    const float summaryWidth = measureText(*m_font, utf8(summary), mainSize).x;
+    const auto [firstHalf, secondHalf] = splitSummary(summary);
+    // The whole readout; with no place clear of what it must leave in view (at large text it spans the window), the
+    // numbers alone (the angle, the pull, the force, the energy and the speed, without how they follow from each
+    // other) on one line, then on two.
+    struct Form
     {
-        const TextKindScope kind(TextKind::Physics);
-        drawLabel(target, *m_font, main, {centre, top + pad}, mainSize, palette::kText, Align::Centre);
-    }
-    if (!complete)
-        return;
-    const TextKindScope kind(TextKind::Formula);
-    drawLabel(target, *m_font, lesson, {centre, top + pad + mainHeight}, lessonSize, palette::kTextDim, Align::Centre);
-    if (!share.isEmpty())
+        std::vector<std::string> numberLines;
+        bool lessons;
+        sf::Vector2f size;
+    };
+    const Form forms[] = {
+        {{summary},
+         true,
+         {std::max(
+              {summaryWidth, measureText(*m_font, lesson, lessonSize).x, measureText(*m_font, share, lessonSize).x}) +
+              2.0f * pad,
+          mainHeight + shareLines * lessonHeight + 2.0f * pad}},
+        {{summary}, false, {summaryWidth + 2.0f * pad, mainHeight + 2.0f * pad}},
+        {{firstHalf, secondHalf},
+         false,
+         {std::max(measureText(*m_font, utf8(firstHalf), mainSize).x,
+                   measureText(*m_font, utf8(secondHalf), mainSize).x) +
+              2.0f * pad,
+          2.0f * mainHeight + 2.0f * pad}},
+    };
+    for (const Form& form : forms)
     {
-        const TextKindScope numbers(TextKind::Physics);
-        drawLabel(target, *m_font, share, {centre, top + pad + mainHeight + lessonHeight}, lessonSize,
-                  palette::kTextDim, Align::Centre);
+        const std::optional<sf::Vector2f> spot = row.spot(form.size);
+        if (!spot)
+            continue;
+        const auto [x, top] = *spot;
+        const float centre = x + 0.5f * form.size.x;
+        panel(target, {*spot, form.size}, "aim readout");
+        float y = top + pad;
+        {
+            const TextKindScope kind(TextKind::Physics);
+            for (const std::string& line : form.numberLines)
+            {
+                drawLabel(target, *m_font, utf8(line), {centre, y}, mainSize, palette::kText, Align::Centre);
+                y += mainHeight;
+            }
+        }
+        if (!form.lessons)
+            return;
+        const TextKindScope kind(TextKind::Formula);
+        drawLabel(target, *m_font, lesson, {centre, y}, lessonSize, palette::kTextDim, Align::Centre);
+        if (!share.isEmpty())
+        {
+            const TextKindScope numbers(TextKind::Physics);
+            drawLabel(target, *m_font, share, {centre, y + lessonHeight}, lessonSize, palette::kTextDim, Align::Centre);
+        }
+        return;
     }
 }
 
