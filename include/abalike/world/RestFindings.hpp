@@ -58,6 +58,9 @@ struct SupportGap
     static constexpr double kSlipperyFriction = 0.2;
 };
 
+/// A distance as the findings write it: "5.0 mm" under a centimetre, "25.0 cm" under a metre, "7.00 m" from there.
+std::string distanceInWords(double metres);
+
 /// What is right under a block (blocks[index]) or a pig (pigs[index]) as designed.
 SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig, int index);
 

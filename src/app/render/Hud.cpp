@@ -77,37 +77,22 @@ void Hud::draw(sf::RenderTarget& target, sf::Vector2u size, const GameSession& s
         drawHint(target, size, scale, session.level(), keepClear);
 }
 
-namespace
-{
-/// A top strip's top-left corner: centred in the window between the status panel and the toolbar if it fits there,
-/// else at either end of that room, else at the left edge under the air, or lower down by half its height at a time
-/// (a strip as wide as the window finds the gap between a tower's pigs); the first of them that covers nothing the
-/// strip must leave in view. nullopt: none does (the strip waits out of sight for the frame).
-std::optional<sf::Vector2f> topSpot(sf::Vector2f stripSize, float scale, sf::Vector2u windowSize, float left,
-                                    float right, float below, float lowest, std::span<const sf::FloatRect> keepClear)
-{
-    std::vector<sf::Vector2f> spots;
-    const float top = 12.0f * scale;
-    if (right - left >= stripSize.x)
-    {
-        spots.emplace_back(
-            std::clamp(0.5f * (static_cast<float>(windowSize.x) - stripSize.x), left, right - stripSize.x), top);
-        spots.emplace_back(left, top);
-        spots.emplace_back(right - stripSize.x, top);
-    }
-    spots.emplace_back(12.0f * scale, below);
-    for (float top = below + 0.5f * stripSize.y; top + stripSize.y <= lowest; top += 0.5f * stripSize.y)
-        spots.emplace_back(12.0f * scale, top);
-    for (const sf::Vector2f spot : spots)
-        if (leavesInView({spot, stripSize}, keepClear))
-            return spot;
-    return std::nullopt;
-}
-} // namespace
-
 std::optional<sf::Vector2f> Hud::TopRow::spot(sf::Vector2f stripSize) const
 {
-    return topSpot(stripSize, scale, size, left, right, below, lowest, keepClear);
+    const auto clear = [&](sf::Vector2f corner)
+    {
+        return leavesInView({corner, stripSize}, keepClear);
+    };
+    const float top = 12.0f * scale;
+    if (right - left >= stripSize.x)
+        for (const float x : {std::clamp(0.5f * (static_cast<float>(size.x) - stripSize.x), left, right - stripSize.x),
+                              left, right - stripSize.x})
+            if (clear({x, top}))
+                return sf::Vector2f(x, top);
+    for (float y = below; y == below || y + stripSize.y <= lowest; y += 0.5f * stripSize.y)
+        if (clear({12.0f * scale, y}))
+            return sf::Vector2f(12.0f * scale, y);
+    return std::nullopt;
 }
 
 sf::FloatRect Hud::drawStatus(sf::RenderTarget& target, sf::Vector2u size, float scale, const GameSession& session,

@@ -63,7 +63,10 @@ private:
         float below;
         float lowest;
         std::span<const sf::FloatRect> keepClear;
-        /// The first place for a strip of this size that leaves keepClear in view (topSpot); none: it waits.
+        /// The first place for a strip of this size that leaves keepClear in view: centred in the window between
+        /// the status panel and the toolbar if it fits there, else at either end of that room, else at the left edge
+        /// from `below`, lower down by half its height at a time while it stays above `lowest` (a strip as wide as
+        /// the window finds the gap between a tower's pigs). None: it waits out of sight for the frame.
         std::optional<sf::Vector2f> spot(sf::Vector2f stripSize) const;
     };
     /// Returns the panel's place, drawn or not (the strips under it keep their places either way).

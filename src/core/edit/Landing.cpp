@@ -7,7 +7,6 @@
 #include "level/Outline.hpp"
 
 #include <algorithm>
-#include <cstdio>
 
 namespace abalike
 {
@@ -16,17 +15,6 @@ namespace
 
 /// A resting body may stand this far above its support: the rest test's own tolerance is looser.
 constexpr double kLandedM = 0.001;
-
-/// "25.0 cm" under a metre, "7.00 m" from there.
-std::string landingLength(double metres)
-{
-    char text[32];
-    if (metres < 1.0)
-        std::snprintf(text, sizeof text, "%.1f cm", metres * 100.0);
-    else
-        std::snprintf(text, sizeof text, "%.2f m", metres);
-    return text;
-}
 
 std::string landingName(const ObjectRef& ref)
 {
@@ -70,11 +58,11 @@ std::optional<std::string> whyNotLanded(const LevelDef& level, const Catalog& ca
         if (first)
             continue;
         if (gap.support.empty())
-            first = landingName(ref) + " is " + landingLength(heightAboveGround(level, seen, ref)) +
+            first = landingName(ref) + " is " + distanceInWords(heightAboveGround(level, seen, ref)) +
                     " above the ground with nothing under it: it falls when the level starts";
         else
-            first = landingName(ref) + " floats " + landingLength(gap.gapM) + " above " + gap.support +
-                    ", more than the " + landingLength(reachM) +
+            first = landingName(ref) + " floats " + distanceInWords(gap.gapM) + " above " + gap.support +
+                    ", more than the " + distanceInWords(reachM) +
                     " the editor pulls a body down: it falls when the level starts; drag it " + "down onto " +
                     gap.support;
     }

@@ -118,6 +118,11 @@ bool hasFlatTop(const BlockDef& b)
 
 } // namespace
 
+std::string distanceInWords(double m)
+{
+    return metres(m);
+}
+
 SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig, int index)
 {
     const Bounds self = bodyBounds(level, catalog, pig, index);
