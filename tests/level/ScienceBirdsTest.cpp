@@ -31,11 +31,11 @@ const std::string kFort = R"(<?xml version="1.0" encoding="utf-16"?>
     <Block type="TriangleHole" material="stone" x="2.75" y="-2.02" rotation="0" />
     <Block type="Circle" material="stone" x="5.5" y="-3.08" rotation="0" />
     <Block type="SquareHole" material="wood" x="7" y="-3.05" rotation="0" />
-    <Pig type="BasicSmall" material="" x="2.75" y="-3.25" rotation="0" />
-    <Pig type="BasicMedium" material="" x="7" y="-2.3" rotation="0" />
+    <Pig type="BasicSmall" material="" x="2.75" y="-3.275" rotation="0" />
+    <Pig type="BasicMedium" material="" x="7" y="-2.27" rotation="0" />
     <TNT type="" x="4.4" y="-3.2" rotation="0" />
     <Platform type="Platform" material="" x="10" y="1" rotation="0" scaleX="4" scaleY="1" />
-    <Pig type="BasicBig" material="" x="10" y="1.81" rotation="0" />
+    <Pig type="BasicBig" material="" x="10" y="1.795" rotation="0" />
   </GameObjects>
 </Level>
 )";
@@ -104,14 +104,16 @@ TEST(ScienceBirdsImport, MapsEveryPieceWithScienceBirdsSizesAndPutsItsGroundAtOu
     EXPECT_EQ(level.blocks[6].material, "tnt");
     EXPECT_DOUBLE_EQ(level.blocks[6].widthM, 0.55);
     ASSERT_EQ(level.pigs.size(), 3u);
-    EXPECT_EQ(level.pigs[0].type, "small");
-    EXPECT_EQ(level.pigs[1].type, "medium");
-    EXPECT_EQ(level.pigs[2].type, "large");
+    // Science Birds' pigs become ours of their size: 0.43, 0.76 and 0.97 m tall (assets/catalog.json).
+    EXPECT_EQ(level.pigs[0].type, "sb-small");
+    EXPECT_EQ(level.pigs[1].type, "sb-medium");
+    EXPECT_EQ(level.pigs[2].type, "sb-large");
+    EXPECT_DOUBLE_EQ(level.pigs[0].y, 0.215); // its bottom where Science Birds' 0.45 m pig has it: on the ground
     ASSERT_EQ(level.terrain.size(), 1u);
     EXPECT_DOUBLE_EQ(level.terrain[0].widthM, 0.62 * 4);
     EXPECT_DOUBLE_EQ(level.terrain[0].heightM, 0.62);
     EXPECT_DOUBLE_EQ(level.terrain[0].y, 4.5);
-    EXPECT_DOUBLE_EQ(level.pigs[2].y, 5.31); // the big pig's 0.5 m radius on the platform's top at 4.81
+    EXPECT_DOUBLE_EQ(level.pigs[2].y, 5.295); // the big pig's 0.485 m half height on the platform's top at 4.81
 
     // What it writes is a level of ours that loads and stands.
     const LevelDef reread = parseLevel(writeLevelJson(level, ""), "fort.json", Catalog::builtin());
@@ -133,7 +135,7 @@ TEST(ScienceBirdsImport, SnapsBodiesOntoTheirSupportsAndSaysWhereEachWas)
     // The medium pig sank 2 cm into its box in the file (the box then came down 3 cm): the gap said is the file's.
     EXPECT_EQ(
         warningAbout(imported, "/pigs/1").message,
-        "sank 2.0 cm into block 5 (wood), which Science Birds' physics pushes apart; set onto it (y = 1.19 in our "
+        "sank 2.0 cm into block 5 (wood), which Science Birds' physics pushes apart; set onto it (y = 1.22 in our "
         "level)");
     EXPECT_NE(warningAbout(imported, "/blocks/3").message.find("TriangleHole becomes a solid triangle"),
               std::string::npos);
@@ -193,8 +195,8 @@ TEST(ScienceBirdsImport, AcceptsWhatScienceBirdsAcceptsWithAWarning)
     EXPECT_EQ(level.blocks[0].material, "wood");
     EXPECT_EQ(level.blocks[0].angleDeg, 0.0);
     ASSERT_EQ(level.pigs.size(), 1u);
-    EXPECT_EQ(level.pigs[0].type, "small");
-    EXPECT_DOUBLE_EQ(level.pigs[0].y, 0.47); // on the plank: 0.22 + 0.25
+    EXPECT_EQ(level.pigs[0].type, "sb-small");
+    EXPECT_DOUBLE_EQ(level.pigs[0].y, 0.435); // on the plank: 0.22 + 0.215
     std::string all;
     for (const LevelIssue& w : imported.warnings)
         all += std::to_string(w.line) + ":" + std::to_string(w.column) + " " + w.message + "\n";
@@ -267,12 +269,12 @@ TEST(ScienceBirdsImport, OverlapsAndBodiesInTheGroundArePushedOutAsScienceBirdsD
                "</GameObjects></Level>");
     EXPECT_DOUBLE_EQ(imported.level.blocks[0].y, 0.215);
     EXPECT_DOUBLE_EQ(imported.level.blocks[1].y, 0.54);
-    EXPECT_DOUBLE_EQ(imported.level.pigs[0].y, 0.25);
+    EXPECT_DOUBLE_EQ(imported.level.pigs[0].y, 0.215);
     EXPECT_EQ(warningAbout(imported, "/blocks/0").message,
               "reaches 30.0 cm below the ground, which pushes it out in Science Birds; set onto the ground (y = 0.215 "
               "in our level)");
     EXPECT_EQ(warningAbout(imported, "/pigs/0").message,
-              "reaches 125.0 cm below the ground, which pushes it out in Science Birds; set onto the ground (y = 0.25 "
+              "reaches 122.5 cm below the ground, which pushes it out in Science Birds; set onto the ground (y = 0.215 "
               "in our level)");
     const RestReport rest = checkRest(imported.level);
     EXPECT_TRUE(rest.passed()) << rest.summary();
@@ -284,24 +286,24 @@ TEST(ScienceBirdsImport, PigsSunkIntoPigsArePushedApartAsItsPhysicsDoes)
     // at the same height. Its physics pushes them apart at once; the import does it: the top pig is lifted clear of
     // the two under it, the pair moved apart sideways, each on the millimetre and with a located warning.
     const ScienceBirdsLevel imported = import("<Level><GameObjects>\n"
-                                              "<Pig type=\"BasicSmall\" x=\"2\" y=\"-3.25\"/>\n"
-                                              "<Pig type=\"BasicSmall\" x=\"2.5\" y=\"-3.25\"/>\n"
+                                              "<Pig type=\"BasicSmall\" x=\"2\" y=\"-3.275\"/>\n"
+                                              "<Pig type=\"BasicSmall\" x=\"2.5\" y=\"-3.275\"/>\n"
                                               "<Pig type=\"BasicSmall\" x=\"2.25\" y=\"-2.95\"/>\n"
-                                              "<Pig type=\"BasicSmall\" x=\"6\" y=\"-3.25\"/>\n"
-                                              "<Pig type=\"BasicSmall\" x=\"6.3\" y=\"-3.25\"/>\n"
+                                              "<Pig type=\"BasicSmall\" x=\"6\" y=\"-3.275\"/>\n"
+                                              "<Pig type=\"BasicSmall\" x=\"6.3\" y=\"-3.275\"/>\n"
                                               "</GameObjects></Level>");
     const std::vector<PigDef>& pigs = imported.level.pigs;
     ASSERT_EQ(pigs.size(), 5u);
-    // Resting on both: centres 0.5 m apart, so its centre is sqrt(0.5^2 - 0.25^2) = 0.433 m above theirs.
+    // Resting on both: centres 0.5 m apart, so its centre is sqrt(0.43^2 - 0.25^2) = 0.350 m above theirs.
     EXPECT_DOUBLE_EQ(pigs[2].x, 2.25);
-    EXPECT_NEAR(pigs[2].y, 0.25 + 0.433, 0.0015);
-    EXPECT_DOUBLE_EQ(pigs[4].y, 0.25);
-    EXPECT_NEAR(pigs[4].x, 6.5, 0.0015);
+    EXPECT_NEAR(pigs[2].y, 0.215 + 0.350, 0.0015);
+    EXPECT_DOUBLE_EQ(pigs[4].y, 0.215);
+    EXPECT_NEAR(pigs[4].x, 6.43, 0.0015);
     const LevelIssue lifted = warningAbout(imported, "/pigs/2");
     EXPECT_EQ(lifted.line, 4);
     EXPECT_NE(lifted.message.find("which Science Birds' physics pushes apart; lifted"), std::string::npos)
         << lifted.message;
-    EXPECT_NE(warningAbout(imported, "/pigs/4").message.find("cm right (x = 6.5"), std::string::npos)
+    EXPECT_NE(warningAbout(imported, "/pigs/4").message.find("cm right (x = 6.43"), std::string::npos)
         << warningAbout(imported, "/pigs/4").message;
     for (const LevelIssue& issue : checkLevelGeometry(imported.level, Catalog::builtin()))
         EXPECT_EQ(issue.message.find("overlaps"), std::string::npos) << issue.message;
@@ -335,12 +337,12 @@ TEST(ScienceBirdsImport, APlatformTooThinToSimulateGrowsDownwardsUnderWhatItHold
     // makes it 10 cm with its top where it was, and the pig on it stays on it.
     const ScienceBirdsLevel imported = import("<Level><GameObjects>\n"
                                               "<Platform x=\"4\" y=\"0\" scaleX=\"3\" scaleY=\"0.15\"/>\n"
-                                              "<Pig type=\"BasicSmall\" x=\"4\" y=\"0.2965\"/>\n"
+                                              "<Pig type=\"BasicSmall\" x=\"4\" y=\"0.2715\"/>\n"
                                               "</GameObjects></Level>");
     ASSERT_EQ(imported.level.terrain.size(), 1u);
     const TerrainDef& ledge = imported.level.terrain[0];
     EXPECT_DOUBLE_EQ(ledge.heightM, 0.1);
-    EXPECT_NEAR(ledge.y + 0.5 * ledge.heightM, imported.level.pigs.at(0).y - 0.25, 1e-9) << "its top where it was";
+    EXPECT_NEAR(ledge.y + 0.5 * ledge.heightM, imported.level.pigs.at(0).y - 0.215, 1e-9) << "its top where it was";
     EXPECT_EQ(warningAbout(imported, "/terrain/0").message,
               "<Platform> is 9.3 cm thick, less than the 10 cm a static body needs to simulate well: made 10 cm, "
               "growing downwards (its top where it was)");

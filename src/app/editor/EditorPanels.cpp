@@ -15,6 +15,7 @@
 
 #include <abalike/level/LevelLimits.hpp>
 #include <abalike/world/Catalog.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <imgui.h>
 
@@ -44,6 +45,19 @@ std::string capitalised(std::string text)
     if (!text.empty() && text[0] >= 'a' && text[0] <= 'z')
         text[0] = static_cast<char>(text[0] - 'a' + 'A');
     return text;
+}
+
+bool isScienceBirdsPig(const std::string& type)
+{
+    return type.rfind("sb-", 0) == 0;
+}
+
+/// "Small pig"; the Science Birds sizes the importer writes (sb-small) read "SB small", to fit the button.
+std::string pigLabel(const std::string& type)
+{
+    if (isScienceBirdsPig(type))
+        return "SB " + type.substr(3);
+    return capitalised(type) + " pig";
 }
 } // namespace
 
@@ -306,15 +320,21 @@ void EditorPanels::palettePanel()
     ImGui::PopItemWidth();
 
     heading("Pigs (P)");
+    // Science Birds' sizes (sb-small, ...) are offered in a level imported from it, where they are already used.
+    const std::vector<PigDef>& placed = m_ctx.scene().level().pigs;
+    const bool scienceBirds =
+        std::any_of(placed.begin(), placed.end(), [](const PigDef& pig) { return isScienceBirdsPig(pig.type); });
     int column = 0;
     for (const PigType& type : Catalog::builtin().pigs())
     {
+        if (isScienceBirdsPig(type.name) && !scienceBirds)
+            continue;
         if (column++ % 2 == 1)
             ImGui::SameLine();
         const bool active = m_tools.tool == SceneTools::Tool::Pig && m_tools.pigTemplate.type == type.name;
         if (active)
             ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-        const std::string label = capitalised(type.name) + " pig";
+        const std::string label = pigLabel(type.name);
         if (ImGui::Button(label.c_str(), ImVec2(buttonWidth, 0.0f)))
         {
             m_tools.tool = SceneTools::Tool::Pig;

@@ -4,7 +4,9 @@
 #include <abalike/world/Catalog.hpp>
 #include <abalike/world/RestFindings.hpp>
 
+#include "level/FlatBottoms.hpp"
 #include "level/LevelReader.hpp"
+#include "level/Outline.hpp"
 #include "level/XmlText.hpp"
 #include <abalike/level/LevelLimits.hpp>
 #include <abalike/level/PushApart.hpp>
@@ -53,8 +55,13 @@ constexpr int kDefaultBirds = 3;
 
 const std::map<std::string, std::string> kBirds = {
     {"BirdRed", "red"}, {"BirdBlue", "blue"}, {"BirdYellow", "yellow"}, {"BirdBlack", "black"}, {"BirdWhite", "white"}};
+/// Science Birds' pigs become our types of their size (assets/catalog.json): sb-medium and sb-large are as tall as
+/// its pigs (0.76 and 0.97 m), sb-small 0.43 m against its 0.45: its pig has a flat top that carries a plank laid
+/// across 0.43 m posts beside it, which a round pig cannot, so ours fits under that plank instead.
 const std::map<std::string, std::string> kPigs = {
-    {"BasicSmall", "small"}, {"BasicMedium", "medium"}, {"BasicBig", "large"}};
+    {"BasicSmall", "sb-small"}, {"BasicMedium", "sb-medium"}, {"BasicBig", "sb-large"}};
+/// Half the height of each Science Birds pig's collider: a pig keeps its bottom where it was in the file.
+const std::map<std::string, double> kPigHalfHeights = {{"sb-small", 0.225}, {"sb-medium", 0.38}, {"sb-large", 0.485}};
 
 std::vector<std::string> keysOf(const std::map<std::string, std::string>& names)
 {
@@ -128,6 +135,12 @@ private:
         m_errors.push_back(issueAt(offsetOf(node), "", std::move(message)));
     }
 
+    /// A warning at the element a body was read from.
+    void warnAt(const std::string& pointer, std::string message)
+    {
+        m_warnings.push_back(issueAt(m_placeOf.count(pointer) ? m_placeOf[pointer] : 0, pointer, std::move(message)));
+    }
+
     std::optional<double> number(const pugi::xml_node& node, const char* name, std::optional<double> fallback,
                                  const std::string& pointer);
     void readBirds(const pugi::xml_node& level);
@@ -156,6 +169,10 @@ private:
         return angle;
     }
     void useOwnGround();
+    /// Circles and pigs whose flat bottom stands on a platform's edge in Science Birds: moved onto it.
+    void seatRoundBodies();
+    /// Circles and pigs across two planks' ends: set into the gap, as they settle.
+    void settleIntoGaps();
     void snapOntoSupports();
     /// Overlaps the snap leaves (a pig sunk into the pigs under it, a plank into a post beside it): pushed apart.
     void pushApart();
@@ -354,7 +371,7 @@ void Importer::readPig(const pugi::xml_node& node)
     if (node.attribute("type").empty())
     {
         warn(node, pointer, "<Pig> has no type; read as type=\"BasicSmall\"");
-        pig.type = "small";
+        pig.type = kPigs.at("BasicSmall");
     }
     else
     {
@@ -372,7 +389,8 @@ void Importer::readPig(const pugi::xml_node& node)
     if (!x || !y)
         return;
     pig.x = tidy(*x);
-    pig.y = ourY(*y);
+    const PigType* ours = m_catalog.findPig(pig.type);
+    pig.y = tidy(ourY(*y) - (ours != nullptr ? kPigHalfHeights.at(pig.type) - ours->radiusM : 0.0));
     m_placeOf[pointer] = offsetOf(node);
     m_level.pigs.push_back(pig);
 }
@@ -486,6 +504,8 @@ double bottomOf(const BlockDef& b)
 {
     if (b.shape == BlockShape::Circle)
         return b.y - 0.5 * b.widthM;
+    if (b.shape == BlockShape::Triangle)
+        return blockOutlines(b).front().bounds()[0].y;
     const double a = b.angleDeg * std::numbers::pi / 180.0;
     return b.y - 0.5 * (std::abs(b.widthM * std::sin(a)) + std::abs(b.heightM * std::cos(a)));
 }
@@ -567,6 +587,33 @@ void Importer::useOwnGround()
                                      ", so everything is that much lower than Science Birds' generator places it"));
 }
 
+void Importer::seatRoundBodies()
+{
+    for (const SeatedBody& body : seatRoundBodiesOnFlats(m_level, m_catalog, kScienceBirdsSnapM))
+    {
+        const double x = body.pig ? m_level.pigs[body.index].x : m_level.blocks[body.index].x;
+        warnAt(body.pointer(), "its centre is " + centimetres(body.distanceM) + " past " + body.support +
+                                   "'s edge, where Science Birds' " + (body.pig ? "pig" : "circle") +
+                                   " stands on its flat bottom and ours, being round, rolls off; moved " +
+                                   centimetres(body.dxM) + (body.dxM > 0 ? " right" : " left") +
+                                   " onto it (x = " + shortestNumber(x) + " in our level)");
+    }
+}
+
+void Importer::settleIntoGaps()
+{
+    for (const SeatedBody& body : settleRoundBodiesIntoGaps(m_level, m_catalog, kScienceBirdsSnapM))
+    {
+        const double x = body.pig ? m_level.pigs[body.index].x : m_level.blocks[body.index].x;
+        const double y = body.pig ? m_level.pigs[body.index].y : m_level.blocks[body.index].y;
+        warnAt(body.pointer(), "stands across the " + centimetres(body.distanceM) + " gap between " + body.support +
+                                   ", where Science Birds' " + (body.pig ? "pig" : "circle") +
+                                   " rests on its flat bottom and ours, being round, settles into it; set into it "
+                                   "(x = " +
+                                   shortestNumber(x) + ", y = " + shortestNumber(y) + " in our level)");
+    }
+}
+
 void Importer::snapOntoSupports()
 {
     // Science Birds builds a level a few centimetres apart and lets it fall into place; bodies that overlap or reach
@@ -608,8 +655,8 @@ void Importer::snapOntoSupports()
                                              shortestNumber(y) + " in our level)"));
             continue;
         }
-        const SupportGap written = supportUnder(asWritten, m_catalog, body.pig, body.index);
-        const SupportGap now = supportUnder(m_level, m_catalog, body.pig, body.index);
+        const SupportGap written = supportUnderFlatBottom(asWritten, m_catalog, body.pig, body.index);
+        const SupportGap now = supportUnderFlatBottom(m_level, m_catalog, body.pig, body.index);
         if (now.support.empty() || std::abs(now.gapM) < 1e-6)
             continue;
         if (written.gapM > kScienceBirdsSnapM)
@@ -626,6 +673,8 @@ void Importer::snapOntoSupports()
         }
         y = tidy(y - now.gapM);
         const double inFile = written.support.empty() ? now.gapM : written.gapM;
+        if (std::abs(inFile) < 5e-4)
+            continue; // it rested on its support in the file and came down with it: that one's warning says so
         std::string message = inFile > 0 ? "was " + centimetres(inFile) + " above " + now.support + "; set onto it"
                                          : "sank " + centimetres(inFile) + " into " + now.support +
                                                ", which Science Birds' physics pushes apart; set onto it";
@@ -765,7 +814,9 @@ ScienceBirdsLevel Importer::run(std::string_view bytes)
     if (m_errors.empty())
     {
         useOwnGround();
+        seatRoundBodies();
         snapOntoSupports();
+        settleIntoGaps();
         pushApart();
         checkResult();
     }

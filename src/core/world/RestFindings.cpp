@@ -1,3 +1,4 @@
+#include "level/Outline.hpp"
 #include "world/Fixtures.hpp"
 
 #include <abalike/level/LevelText.hpp>
@@ -44,7 +45,12 @@ Bounds blockBounds(const BlockDef& b)
 {
     if (b.shape == BlockShape::Circle)
         return {b.x - 0.5 * b.widthM, b.x + 0.5 * b.widthM, b.y - 0.5 * b.widthM, b.y + 0.5 * b.widthM};
-    return rotatedBox(b.x, b.y, b.widthM, b.heightM, b.angleDeg);
+    if (b.shape != BlockShape::Triangle)
+        return rotatedBox(b.x, b.y, b.widthM, b.heightM, b.angleDeg);
+    // A turned triangle's bounds are its corners', not its bounding box's turned: at 225 degrees its long side is
+    // its flat bottom, through its centre.
+    const std::array<Vec2, 2> corners = blockOutlines(b).front().bounds();
+    return {corners[0].x, corners[1].x, corners[0].y, corners[1].y};
 }
 
 std::string metres(double m)
