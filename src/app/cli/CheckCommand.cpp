@@ -407,7 +407,7 @@ FileReport checkFile(const CheckItem& item, const CheckArgs& a)
         else if (report.solution->outcome.stars < 1)
             report.reasons.push_back("the solver's best win earns no star");
         if (a.playerRuns > 0 && report.solution->outcome.won)
-            report.player = player.finish();
+            report.player = player.finish(std::cerr);
         if (report.solution->outcome.won)
         {
             report.recommendedStars =

@@ -40,35 +40,46 @@ PlayerDifficulty StagedDifficulty::play(const ModelPlayerOptions& options, const
     return result;
 }
 
+std::string StagedDifficulty::describe(const std::string& what, const PlayerDifficulty& sofar) const
+{
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+    std::ostringstream line;
+    line << m_level.id << ": " << what << " (" << sofar.runs << " of " << m_runs << " model player runs, " << std::fixed
+         << std::setprecision(1) << seconds << " s): " << sofar.wins << " won (" << percent(sofar.winShare)
+         << " %, 90 % interval " << percent(sofar.low90) << "-" << percent(sofar.high90) << " %)";
+    if (!sofar.winScores.empty())
+    {
+        const auto stars = recommendedStars(sofar, 0);
+        line << ", stars about " << stars[0] << " / " << stars[1] << " / " << stars[2];
+    }
+    return line.str();
+}
+
 void StagedDifficulty::estimate(std::ostream& out)
 {
     const std::size_t runs = std::min(m_runs, kFirstEstimateRuns);
     if (runs == 0)
         return;
     m_first = play(firstRuns(runs), "model player, first estimate ");
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
-    const PlayerDifficulty& first = *m_first;
-    std::ostringstream line;
-    line << m_level.id << ": first estimate (" << first.runs << " of " << m_runs << " model player runs, " << std::fixed
-         << std::setprecision(1) << seconds << " s): " << first.wins << " won (" << percent(first.winShare)
-         << " %, 90 % interval " << percent(first.low90) << "-" << percent(first.high90) << " %)";
-    if (!first.winScores.empty())
-    {
-        const auto stars = recommendedStars(first, 0);
-        line << ", stars about " << stars[0] << " / " << stars[1] << " / " << stars[2];
-    }
+    std::string line = describe("first estimate", *m_first);
     if (m_runs > runs)
-        line << "; refining with the solver and " << m_runs - runs << " more runs";
-    out << line.str() << std::endl;
+        line += "; refining with the solver and " + std::to_string(m_runs - runs) + " more runs";
+    out << line << std::endl;
 }
 
-PlayerDifficulty StagedDifficulty::finish()
+PlayerDifficulty StagedDifficulty::finish(std::ostream& out)
 {
     if (!m_first)
         return play(firstRuns(m_runs), "model player ");
-    if (m_runs <= m_first->runs)
-        return *m_first;
-    return joinDifficulty(*m_first, play(runsAfter(firstRuns(m_first->runs), *m_first, m_runs), "model player "));
+    PlayerDifficulty sofar = *m_first;
+    while (sofar.runs < m_runs)
+    {
+        const std::size_t upTo = std::min(m_runs, sofar.runs + kRefineRuns);
+        sofar = joinDifficulty(sofar, play(runsAfter(firstRuns(0), sofar, upTo), "model player "));
+        if (sofar.runs < m_runs)
+            out << describe("refined", sofar) << std::endl;
+    }
+    return sofar;
 }
 
 ModelPlayerOptions StagedDifficulty::firstRuns(std::size_t runs) const
