@@ -33,6 +33,23 @@ TEST(RestFindings, APigOneCentimetreAboveTheGroundFloatsAndGetsItsY)
     EXPECT_NEAR(*findings[0].snapY, 0.25, 1e-12);
 }
 
+TEST(RestFindings, APigOnABallNamesTheBallNotWhatIsUnderIt)
+{
+    // A pig set on a wooden ball (Science Birds' balls have flat tops that carry one; ours are round): the finding
+    // names the ball it rolls off, not the ground half a metre below, and has no y to offer. 3 cm higher, it says so.
+    const std::string ball =
+        R"("blocks": [{"shape": "circle", "material": "wood", "x": 20.0, "y": 0.225, "w": 0.45}],)";
+    const auto on = findingsOf(scene(ball + R"("pigs": [{"type": "small", "x": 20.02, "y": 0.7}])"));
+    ASSERT_FALSE(on.empty());
+    EXPECT_EQ(on[0].pointer, "/pigs/0");
+    EXPECT_EQ(on[0].what.rfind("rolls off the round top of block 0 (wood)", 0), 0u) << on[0].what;
+    EXPECT_EQ(on[0].fix, "");
+    const auto above = findingsOf(scene(ball + R"("pigs": [{"type": "small", "x": 20.02, "y": 0.73}])"));
+    ASSERT_FALSE(above.empty());
+    EXPECT_EQ(above[0].what.rfind("drops 3.0 cm onto the round top of block 0 (wood) and rolls off", 0), 0u)
+        << above[0].what;
+}
+
 TEST(RestFindings, APlankOverlappingItsPostNamesThePostAndTheDepth)
 {
     const auto findings = findingsOf(scene(R"("blocks": [

@@ -307,6 +307,37 @@ std::optional<SecondSupport> secondSupport(const LevelDef& level, bool pig, int 
     return best;
 }
 
+/// A ball or a triangle's slope right under a body, its top from 10 cm under the body's bottom to 5 cm into it:
+/// supportUnder passes over them, as nothing rests on them still; the finding names them.
+struct RoundTop
+{
+    std::string name; ///< "the round top of block 12 (wood)", "the sloped top of block 3 (ice)"
+    double gapM = 0.0;
+    bool round = true; ///< a ball, else a triangle
+};
+
+std::optional<RoundTop> roundTopUnder(const LevelDef& level, const Catalog& catalog, bool pig, int index)
+{
+    const Bounds self = bodyBounds(level, catalog, pig, index);
+    std::optional<RoundTop> found;
+    for (std::size_t i = 0; i < level.blocks.size(); ++i)
+    {
+        const BlockDef& b = level.blocks[i];
+        if ((!pig && static_cast<int>(i) == index) || hasFlatTop(b))
+            continue;
+        const Bounds under = blockBounds(b);
+        const bool below = under.top <= 0.5 * (self.bottom + self.top) && under.top >= self.bottom - 0.1 &&
+                           under.top <= self.bottom + 0.05;
+        if (!below || under.right <= self.left || under.left >= self.right ||
+            (found && self.bottom - under.top >= found->gapM))
+            continue;
+        found = RoundTop{std::string(b.shape == BlockShape::Circle ? "the round top of " : "the sloped top of ") +
+                             "block " + std::to_string(i) + " (" + b.material + ")",
+                         self.bottom - under.top, b.shape == BlockShape::Circle};
+    }
+    return found;
+}
+
 Defect defectOf(const LevelDef& level, const Catalog& catalog, bool pig, int index, bool moved, double movedM)
 {
     Defect d;
@@ -346,6 +377,16 @@ Defect defectOf(const LevelDef& level, const Catalog& catalog, bool pig, int ind
              << "\u00B0 on one corner with its centre of mass " << metres(pastCorner) << " past it, so it tips over";
         d.angleDeg = 90.0 * std::round(block->angleDeg / 90.0);
         d.fix = "set angle_deg = " + coordinate(*d.angleDeg) + " or lean it against something";
+    }
+    else if (const std::optional<RoundTop> top = moved && (under.support.empty() || under.gapM > kTouchM)
+                                                     ? roundTopUnder(level, catalog, pig, index)
+                                                     : std::nullopt)
+    {
+        const char* off = top->round ? "rolls off" : "slides off";
+        if (top->gapM > 0.01)
+            what << "drops " << metres(top->gapM) << " onto " << top->name << " and " << off;
+        else
+            what << off << " " << top->name;
     }
     else if (!under.support.empty() && std::abs(under.gapM) > kTouchM)
     {
