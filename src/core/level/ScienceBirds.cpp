@@ -86,9 +86,10 @@ std::string expectedName(const std::string& written, const std::vector<std::stri
 const std::vector<std::string> kStandardObjects = {"Block", "Pig", "TNT", "Platform"};
 
 /// How far from square a rotation is still read as square. Science Birds' levels are often snapshots of a scene
-/// that settled (generator outputs record 359.6 or 89.75): ours start as written, and a stack tilted by a few tenths
-/// of a degree stands on corners and slides. Deliberate tilts are larger.
-constexpr double kSquareWithinDeg = 1.0;
+/// that settled (generator outputs record 359.6 or 88.7): ours start as written, and a stack tilted by a degree
+/// stands on corners and slides. Of the 33 700 block rotations in the pinned corpus (tools/science-birds-corpus.json)
+/// 2 427 are 1-5 degrees off square and none 5-11: deliberate tilts are larger.
+constexpr double kSquareWithinDeg = 5.0;
 
 /// The rotation in (-180, 180], and a multiple of 90 when within kSquareWithinDeg of one.
 double cleanAngle(double degrees)
@@ -807,7 +808,7 @@ ScienceBirdsLevel Importer::run(std::string_view bytes)
         std::snprintf(most, sizeof most, "%.2f", m_mostSquaredDeg);
         m_warnings.push_back(issueAt(0, "",
                                      std::to_string(m_squaredRotations) +
-                                         " rotation(s) within 1 degree of square read as square (the most by " + most +
+                                         " rotation(s) within 5 degrees of square read as square (the most by " + most +
                                          " degrees): Science Birds' generators write the angles a settled scene "
                                          "ended at, and ours starts square"));
     }
