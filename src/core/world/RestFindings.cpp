@@ -384,7 +384,7 @@ Defect defectOf(const LevelDef& level, const Catalog& catalog, bool pig, int ind
     {
         const char* off = top->round ? "rolls off" : "slides off";
         if (top->gapM > 0.01)
-            what << "drops " << metres(top->gapM) << " onto " << top->name << " and " << off;
+            what << "drops " << metres(top->gapM) << " onto " << top->name << ", " << off;
         else
             what << off << " " << top->name;
     }
