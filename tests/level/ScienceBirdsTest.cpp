@@ -225,15 +225,15 @@ TEST(ScienceBirdsImport, ReadsADecimalCommaAsScienceBirdsDoesInALanguageThatWrit
 
 TEST(ScienceBirdsImport, LeavesBodiesFarFromTheirSupportForTheRestCheck)
 {
-    // 20 cm above the ground is not how Science Birds places things: the import leaves it there, and says so.
+    // 30 cm above the ground is not how Science Birds places things: the import leaves it there, and says so.
     const ScienceBirdsLevel imported = import("<Level><GameObjects>\n"
-                                              "<Block type=\"SquareSmall\" material=\"stone\" x=\"2\" y=\"-3.085\" "
+                                              "<Block type=\"SquareSmall\" material=\"stone\" x=\"2\" y=\"-2.985\" "
                                               "rotation=\"0\"/>\n"
                                               "<Pig type=\"BasicSmall\" x=\"5\" y=\"-3.25\"/>\n"
                                               "</GameObjects></Level>");
-    EXPECT_DOUBLE_EQ(imported.level.blocks[0].y, 0.415);
+    EXPECT_DOUBLE_EQ(imported.level.blocks[0].y, 0.515);
     EXPECT_EQ(warningAbout(imported, "/blocks/0").message,
-              "is 20.0 cm above the ground, more than the 10.0 cm the import closes: left where it is (abalike check "
+              "is 30.0 cm above the ground, more than the 20.0 cm the import closes: left where it is (abalike check "
               "reports it)");
 }
 
@@ -351,15 +351,15 @@ TEST(ScienceBirdsImport, APlatformTooThinToSimulateGrowsDownwardsUnderWhatItHold
 
 TEST(ScienceBirdsImport, AGapJustOverTheSnapReadsAsMoreThanIt)
 {
-    // Positions are read to the millimetre: a box written 10.06 cm up is 10.1 cm up, never "10.0 cm ... more than
-    // the 10.0 cm".
+    // Positions are read to the millimetre: a box written 20.06 cm up is 20.1 cm up, never "20.0 cm ... more than
+    // the 20.0 cm".
     const ScienceBirdsLevel imported = import("<Level><GameObjects>\n"
-                                              "<Block type=\"SquareSmall\" material=\"stone\" x=\"2\" y=\"-3.1844\" "
+                                              "<Block type=\"SquareSmall\" material=\"stone\" x=\"2\" y=\"-3.0844\" "
                                               "rotation=\"0\"/>\n"
                                               "<Pig type=\"BasicSmall\" x=\"5\" y=\"-3.25\"/>\n"
                                               "</GameObjects></Level>");
     EXPECT_EQ(warningAbout(imported, "/blocks/0").message,
-              "is 10.1 cm above the ground, more than the 10.0 cm the import closes: left where it is (abalike check "
+              "is 20.1 cm above the ground, more than the 20.0 cm the import closes: left where it is (abalike check "
               "reports it)");
 }
 

@@ -512,7 +512,7 @@ double bottomOf(const BlockDef& b)
 }
 
 /// "2.0 cm": to the millimetre, or to a tenth of one where that would read the same as `than` (a gap of 10.04 cm
-/// beside a limit of 10 cm reads "10.04 cm", never "10.0 cm ... more than the 10.0 cm").
+/// beside a limit of 20 cm reads "20.04 cm", never "20.0 cm ... more than the 20.0 cm").
 std::string centimetres(double metres, double than = -1.0)
 {
     const auto format = [](double m, int decimals)
