@@ -511,7 +511,7 @@ double bottomOf(const BlockDef& b)
     return b.y - 0.5 * (std::abs(b.widthM * std::sin(a)) + std::abs(b.heightM * std::cos(a)));
 }
 
-/// "2.0 cm": to the millimetre, or to a tenth of one where that would read the same as `than` (a gap of 10.04 cm
+/// "2.0 cm": to the millimetre, or to a tenth of one where that would read the same as `than` (a gap of 20.04 cm
 /// beside a limit of 20 cm reads "20.04 cm", never "20.0 cm ... more than the 20.0 cm").
 std::string centimetres(double metres, double than = -1.0)
 {
