@@ -1,6 +1,7 @@
 #include "level/Outline.hpp"
 #include "world/Fixtures.hpp"
 
+#include <abalike/level/LevelCatalog.hpp>
 #include <abalike/level/LevelText.hpp>
 #include <abalike/world/RestFindings.hpp>
 #include <algorithm>
@@ -475,6 +476,9 @@ bool failsIn(const RestReport& report, const std::string& pointer)
 
 std::vector<RestFinding> restFindings(const LevelDef& level, const Catalog& catalog, const RestReport& report)
 {
+    // What a body rests on is told with the level's own materials ("ice (friction 0.7)" where it sets it); the
+    // rest test of a fix builds its world from the base catalog and the level, as every world does.
+    const Catalog seen = levelCatalog(level, catalog);
     // The bodies that fail. Those with something wrong of their own (floating, overlapping, past their supports'
     // edge, leaning, on nothing) are the causes; the rest only follow them and are listed under the cause that
     // touches them or is nearest, started no later. When no body has a defect of its own (a stack that leans as a
@@ -496,9 +500,9 @@ std::vector<RestFinding> restFindings(const LevelDef& level, const Catalog& cata
         if (!moved && !body.damaged && !body.destroyed)
             continue;
         const bool pig = body.kind == EntityKind::Pig;
-        failing.push_back({k, pig, body.defIndex, bodyBounds(level, catalog, pig, body.defIndex),
+        failing.push_back({k, pig, body.defIndex, bodyBounds(level, seen, pig, body.defIndex),
                            body.startedS.value_or(1e300),
-                           defectOf(level, catalog, pig, body.defIndex, moved, body.maxDisplacementM)});
+                           defectOf(level, seen, pig, body.defIndex, moved, body.maxDisplacementM)});
     }
     std::vector<std::size_t> causes;
     for (std::size_t i = 0; i < failing.size(); ++i)
@@ -548,7 +552,7 @@ std::vector<RestFinding> restFindings(const LevelDef& level, const Catalog& cata
     {
         const Failing& cause = failing[c];
         const BodyRest& body = report.bodies[cause.k];
-        defects.push_back(cause.defect.own ? defectOf(fixed, catalog, cause.pig, cause.index,
+        defects.push_back(cause.defect.own ? defectOf(fixed, seen, cause.pig, cause.index,
                                                       body.maxDisplacementM > report.toleranceM, body.maxDisplacementM)
                                            : cause.defect);
         std::vector<std::pair<bool, int>> above;
@@ -556,7 +560,7 @@ std::vector<RestFinding> restFindings(const LevelDef& level, const Catalog& cata
             if (failing[i].bounds.bottom >= cause.bounds.bottom)
                 above.emplace_back(failing[i].pig, failing[i].index);
         if (!cause.defect.own)
-            leanOf(defects.back(), fixed, catalog, cause.pig, cause.index, above);
+            leanOf(defects.back(), fixed, seen, cause.pig, cause.index, above);
         else if (Defect& d = defects.back(); d.y && !d.x && !d.angleDeg && !d.groupX && !above.empty())
         {
             // A body set down onto (or up out of) its support takes what rests on it along: set alone, its load
