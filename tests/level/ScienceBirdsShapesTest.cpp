@@ -133,5 +133,34 @@ TEST(ScienceBirdsShapes, ASettledSceneTiltedByADegreeOrTwoStartsSquare)
                                           "at, and ours starts square\n");
 }
 
+TEST(ScienceBirdsShapes, ASceneShotLeftwardsIsMirrored)
+{
+    // NovPhy's mirrored scenes put the slingshot right of the pigs; ours shoot to the right, so x becomes -x. A
+    // mirrored right triangle is ours turned a quarter; a box's tilt changes sign.
+    const ScienceBirdsLevel imported =
+        importScienceBirds("<Level><Slingshot x=\"12\" y=\"-2.5\"/><GameObjects>\n"
+                           "<Platform x=\"1\" y=\"-2.67\" scaleX=\"3\" scaleY=\"1\"/>\n"
+                           "<Pig type=\"BasicSmall\" x=\"1\" y=\"-2.135\"/>\n"
+                           "<Block type=\"Triangle\" material=\"wood\" x=\"-2\" y=\"" +
+                               onGround(0.41) +
+                               "\" rotation=\"0\"/>\n"
+                               "<Block type=\"RectSmall\" material=\"wood\" x=\"-4\" y=\"" +
+                               onGround(0.3) + "\" rotation=\"20\"/>\n</GameObjects></Level>",
+                           "mirrored.xml", Catalog::builtin());
+    EXPECT_DOUBLE_EQ(imported.level.slingshot.x, -12.0);
+    ASSERT_EQ(imported.level.pigs.size(), 1u);
+    EXPECT_DOUBLE_EQ(imported.level.pigs[0].x, -1.0);
+    ASSERT_EQ(imported.level.terrain.size(), 1u);
+    EXPECT_DOUBLE_EQ(imported.level.terrain[0].x, -1.0);
+    ASSERT_EQ(imported.level.blocks.size(), 2u);
+    EXPECT_DOUBLE_EQ(imported.level.blocks[0].x, 2.0);
+    EXPECT_EQ(imported.level.blocks[0].angleDeg, 90.0);
+    EXPECT_DOUBLE_EQ(imported.level.blocks[1].x, 4.0);
+    EXPECT_EQ(imported.level.blocks[1].angleDeg, -20.0);
+    EXPECT_EQ(messageAbout(imported, "/slingshot"),
+              "the slingshot stands right of every pig (x = 12): the scene is mirrored (every x becomes -x) so that it "
+              "shoots to the right, as ours does\n");
+}
+
 } // namespace
 } // namespace abalike

@@ -169,6 +169,8 @@ private:
         }
         return angle;
     }
+    /// A scene whose slingshot stands right of every pig (NovPhy's mirrored scenes) is mirrored: ours shoot rightwards.
+    void shootToTheRight();
     void useOwnGround();
     /// Circles and pigs whose flat bottom stands on a platform's edge in Science Birds: moved onto it.
     void seatRoundBodies();
@@ -526,6 +528,43 @@ std::string centimetres(double metres, double than = -1.0)
     return format(metres, 1);
 }
 
+void Importer::shootToTheRight()
+{
+    if (m_level.pigs.empty() || std::any_of(m_level.pigs.begin(), m_level.pigs.end(),
+                                            [&](const PigDef& pig) { return pig.x >= m_level.slingshot.x; }))
+        return;
+    const double slingshotX = m_level.slingshot.x;
+    const auto mirrored = [](double x)
+    {
+        return tidy(-x) + 0.0;
+    }; // never -0
+    const auto turned = [](double degrees)
+    {
+        return cleanAngle(-degrees) + 0.0;
+    };
+    m_level.slingshot.x = mirrored(m_level.slingshot.x);
+    for (PigDef& pig : m_level.pigs)
+        pig.x = mirrored(pig.x);
+    for (BlockDef& block : m_level.blocks)
+    {
+        block.x = mirrored(block.x);
+        // A right triangle mirrored has its right angle at the bottom right: ours turned a quarter (its sides are
+        // equal, as all of Science Birds' are).
+        block.angleDeg = block.shape == BlockShape::Triangle ? cleanAngle(90.0 - block.angleDeg) + 0.0
+                         : block.shape == BlockShape::Circle ? 0.0
+                                                             : turned(block.angleDeg);
+    }
+    for (TerrainDef& terrain : m_level.terrain)
+    {
+        terrain.x = mirrored(terrain.x);
+        terrain.angleDeg = turned(terrain.angleDeg);
+    }
+    m_warnings.push_back(issueAt(m_placeOf.count("/slingshot") ? m_placeOf["/slingshot"] : 0, "/slingshot",
+                                 "the slingshot stands right of every pig (x = " + shortestNumber(slingshotX) +
+                                     "): the scene is mirrored (every x becomes -x) so that it shoots to the right, "
+                                     "as ours does"));
+}
+
 void Importer::useOwnGround()
 {
     // The bodies on the ground or on nothing (not on a block or a platform): Science Birds' hand-made levels stand
@@ -814,6 +853,7 @@ ScienceBirdsLevel Importer::run(std::string_view bytes)
     }
     if (m_errors.empty())
     {
+        shootToTheRight();
         useOwnGround();
         seatRoundBodies();
         snapOntoSupports();
