@@ -33,15 +33,27 @@ std::string onGround(double above)
     return std::to_string(-3.5 + above);
 }
 
+// A wooden <Block> whose centre is `above` metres over Science Birds' ground.
+std::string woodBlock(const std::string& type, const std::string& x, double above, const std::string& rotation)
+{
+    return "<Block type=\"" + type + "\" material=\"wood\" x=\"" + x + "\" y=\"" + onGround(above) + "\" rotation=\"" +
+           rotation + "\"/>\n";
+}
+
+// A small pig whose centre is `above` metres over Science Birds' ground.
+std::string smallPig(const std::string& x, double above)
+{
+    return "<Pig type=\"BasicSmall\" x=\"" + x + "\" y=\"" + onGround(above) + "\"/>\n";
+}
+
 TEST(ScienceBirdsShapes, ATriangleTurnedOntoItsLongSideIsSetOntoWhatHoldsIt)
 {
     // Turned 225 degrees, the right angle points up and the long side lies flat through the triangle's centre: its
     // bottom is its centre, not half a bounding box lower. It was 2.5 cm above the platform's top (1.81 m in ours).
     const ScienceBirdsLevel imported =
         importShapes("<Platform x=\"4\" y=\"-2\" scaleX=\"4\" scaleY=\"1\"/>\n"
-                     "<Block type=\"Triangle\" material=\"stone\" x=\"4\" y=\"-1.665\" rotation=\"225\"/>\n"
-                     "<Pig type=\"BasicSmall\" x=\"8\" y=\"" +
-                     onGround(0.225) + "\"/>\n");
+                     "<Block type=\"Triangle\" material=\"stone\" x=\"4\" y=\"-1.665\" rotation=\"225\"/>\n" +
+                     smallPig("8", 0.225));
     ASSERT_EQ(imported.level.blocks.size(), 1u);
     EXPECT_DOUBLE_EQ(imported.level.blocks[0].y, 1.81);
     EXPECT_EQ(messageAbout(imported, "/blocks/0"), "was 2.5 cm above terrain 0; set onto it (y = 1.81 in our level)\n");
@@ -55,9 +67,8 @@ TEST(ScienceBirdsShapes, ACircleWhoseFlatBottomReachesAnEdgeIsMovedOntoIt)
     // past a ledge's end. Ours is round and would roll off: it goes 2 cm inside the edge (the ledge spans 3.38-4.62).
     const ScienceBirdsLevel imported =
         importShapes("<Platform x=\"4\" y=\"-2\" scaleX=\"2\" scaleY=\"1\"/>\n"
-                     "<Block type=\"Circle\" material=\"stone\" x=\"4.65\" y=\"-1.29\" rotation=\"0\"/>\n"
-                     "<Pig type=\"BasicSmall\" x=\"8\" y=\"" +
-                     onGround(0.225) + "\"/>\n");
+                     "<Block type=\"Circle\" material=\"stone\" x=\"4.65\" y=\"-1.29\" rotation=\"0\"/>\n" +
+                     smallPig("8", 0.225));
     ASSERT_EQ(imported.level.blocks.size(), 1u);
     EXPECT_DOUBLE_EQ(imported.level.blocks[0].x, 4.6);
     EXPECT_DOUBLE_EQ(imported.level.blocks[0].y, 2.21);
@@ -73,10 +84,9 @@ TEST(ScienceBirdsShapes, APigAcrossTwoPlanksEndsSettlesIntoTheGap)
     // Two planks laid end to end 7 cm apart with a pig across the gap (the deceptive-level generator's pattern):
     // Science Birds' pig stands on its flat bottom; ours is set into the gap, centred and touching both edges, where
     // it would otherwise drop 3 mm and roll 1 cm when the level starts.
-    const ScienceBirdsLevel imported = importShapes(
-        "<Block type=\"RectSmall\" material=\"wood\" x=\"2\" y=\"" + onGround(0.11) + "\" rotation=\"0\"/>\n" +
-        "<Block type=\"RectSmall\" material=\"wood\" x=\"2.92\" y=\"" + onGround(0.11) + "\" rotation=\"0\"/>\n" +
-        "<Pig type=\"BasicSmall\" x=\"2.45\" y=\"" + onGround(0.22 + 0.225) + "\"/>\n");
+    const ScienceBirdsLevel imported =
+        importShapes(woodBlock("RectSmall", "2", 0.11, "0") + woodBlock("RectSmall", "2.92", 0.11, "0") +
+                     smallPig("2.45", 0.22 + 0.225));
     ASSERT_EQ(imported.level.pigs.size(), 1u);
     EXPECT_DOUBLE_EQ(imported.level.pigs[0].x, 2.46);
     EXPECT_NEAR(imported.level.pigs[0].y, 0.22 + std::sqrt(0.215 * 0.215 - 0.035 * 0.035), 5e-4);
@@ -102,11 +112,9 @@ TEST(ScienceBirdsShapes, ASmallPigFitsUnderAPlankOnPostsOfItsHeight)
     // Science Birds' small pig is 0.45 m tall and its flat top carries a plank laid on 0.43 m posts beside it.
     // Ours is round and cannot carry it, so Science Birds' small pig becomes sb-small, 0.43 m: the plank rests on
     // the posts and the pig stands under it.
-    const ScienceBirdsLevel imported = importShapes(
-        "<Block type=\"SquareSmall\" material=\"wood\" x=\"2\" y=\"" + onGround(0.215) + "\" rotation=\"0\"/>\n" +
-        "<Block type=\"SquareSmall\" material=\"wood\" x=\"2.92\" y=\"" + onGround(0.215) + "\" rotation=\"0\"/>\n" +
-        "<Block type=\"RectSmall\" material=\"wood\" x=\"2.46\" y=\"" + onGround(0.45 + 0.11) +
-        "\" rotation=\"0\"/>\n" + "<Pig type=\"BasicSmall\" x=\"2.46\" y=\"" + onGround(0.225) + "\"/>\n");
+    const ScienceBirdsLevel imported =
+        importShapes(woodBlock("SquareSmall", "2", 0.215, "0") + woodBlock("SquareSmall", "2.92", 0.215, "0") +
+                     woodBlock("RectSmall", "2.46", 0.45 + 0.11, "0") + smallPig("2.46", 0.225));
     ASSERT_EQ(imported.level.pigs.size(), 1u);
     EXPECT_EQ(imported.level.pigs[0].type, "sb-small");
     EXPECT_DOUBLE_EQ(imported.level.pigs[0].y, 0.215);
@@ -119,11 +127,9 @@ TEST(ScienceBirdsShapes, ASettledSceneTiltedByADegreeOrTwoStartsSquare)
 {
     // The deceptive-level generator records scenes after they settled: a post and its plank 1.3 and 1.4 degrees off.
     // Read as written, the plank stands on one corner and slides; square, they stand. A 12 degree tilt is designed.
-    const ScienceBirdsLevel imported = importShapes(
-        "<Block type=\"RectSmall\" material=\"wood\" x=\"2\" y=\"" + onGround(0.425) + "\" rotation=\"88.7\"/>\n" +
-        "<Block type=\"RectSmall\" material=\"wood\" x=\"2\" y=\"" + onGround(0.96) + "\" rotation=\"358.6\"/>\n" +
-        "<Block type=\"RectSmall\" material=\"wood\" x=\"6\" y=\"" + onGround(0.2) + "\" rotation=\"12\"/>\n" +
-        "<Pig type=\"BasicSmall\" x=\"9\" y=\"" + onGround(0.225) + "\"/>\n");
+    const ScienceBirdsLevel imported =
+        importShapes(woodBlock("RectSmall", "2", 0.425, "88.7") + woodBlock("RectSmall", "2", 0.96, "358.6") +
+                     woodBlock("RectSmall", "6", 0.2, "12") + smallPig("9", 0.225));
     ASSERT_EQ(imported.level.blocks.size(), 3u);
     EXPECT_EQ(imported.level.blocks[0].angleDeg, 90.0);
     EXPECT_EQ(imported.level.blocks[1].angleDeg, 0.0);
@@ -137,16 +143,12 @@ TEST(ScienceBirdsShapes, ASceneShotLeftwardsIsMirrored)
 {
     // NovPhy's mirrored scenes put the slingshot right of the pigs; ours shoot to the right, so x becomes -x. A
     // mirrored right triangle is ours turned a quarter; a box's tilt changes sign.
-    const ScienceBirdsLevel imported =
-        importScienceBirds("<Level><Slingshot x=\"12\" y=\"-2.5\"/><GameObjects>\n"
-                           "<Platform x=\"1\" y=\"-2.67\" scaleX=\"3\" scaleY=\"1\"/>\n"
-                           "<Pig type=\"BasicSmall\" x=\"1\" y=\"-2.135\"/>\n"
-                           "<Block type=\"Triangle\" material=\"wood\" x=\"-2\" y=\"" +
-                               onGround(0.41) +
-                               "\" rotation=\"0\"/>\n"
-                               "<Block type=\"RectSmall\" material=\"wood\" x=\"-4\" y=\"" +
-                               onGround(0.3) + "\" rotation=\"20\"/>\n</GameObjects></Level>",
-                           "mirrored.xml", Catalog::builtin());
+    const ScienceBirdsLevel imported = importScienceBirds(
+        "<Level><Slingshot x=\"12\" y=\"-2.5\"/><GameObjects>\n"
+        "<Platform x=\"1\" y=\"-2.67\" scaleX=\"3\" scaleY=\"1\"/>\n"
+        "<Pig type=\"BasicSmall\" x=\"1\" y=\"-2.135\"/>\n" +
+            woodBlock("Triangle", "-2", 0.41, "0") + woodBlock("RectSmall", "-4", 0.3, "20") + "</GameObjects></Level>",
+        "mirrored.xml", Catalog::builtin());
     EXPECT_DOUBLE_EQ(imported.level.slingshot.x, -12.0);
     ASSERT_EQ(imported.level.pigs.size(), 1u);
     EXPECT_DOUBLE_EQ(imported.level.pigs[0].x, -1.0);

@@ -64,6 +64,20 @@ std::string distanceInWords(double metres);
 /// What is right under a block (blocks[index]) or a pig (pigs[index]) as designed.
 SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig, int index);
 
+/// Where a body's bottom would rest: from fromM to toM along x, its bottom and top at bottomM and topM.
+struct SupportSpan
+{
+    double fromM = 0.0;
+    double toM = 0.0;
+    double bottomM = 0.0;
+    double topM = 0.0;
+    int skipBlock = -1; ///< the body itself, when it is a block
+};
+
+/// What is right under a span, as supportUnder finds it under a body's bottom (a flat body's span is its width, a
+/// round one's its centre).
+SupportGap supportUnderSpan(const LevelDef& level, const Catalog& catalog, const SupportSpan& span);
+
 /// One finding per body that moved more than the report's tolerance or took damage.
 std::vector<RestFinding> restFindings(const LevelDef& level, const Catalog& catalog, const RestReport& report);
 

@@ -56,27 +56,13 @@ void forEachRoundBody(LevelDef& level, const Catalog& catalog, const std::functi
         visit({true, i, level.pigs[i].x, level.pigs[i].y, *roundRadius(level, catalog, true, i)});
 }
 
-/// What the part of a round body's flat bottom from `from` to `to` would stand on: the body as a box that wide, in a
-/// copy of the level.
+/// What the part of a round body's flat bottom from `from` to `to` would stand on.
 SupportGap supportUnderFlat(const LevelDef& level, const Catalog& catalog, const RoundBody& body, double from,
                             double to)
 {
-    LevelDef probe = level;
-    BlockDef flat;
-    flat.shape = BlockShape::Box;
-    flat.material = "wood";
-    flat.x = 0.5 * (from + to);
-    flat.y = body.y;
-    flat.widthM = to - from;
-    flat.heightM = 2.0 * body.radius;
-    if (body.pig)
-    {
-        probe.pigs.erase(probe.pigs.begin() + static_cast<std::ptrdiff_t>(body.index));
-        probe.blocks.push_back(flat);
-        return supportUnder(probe, catalog, false, static_cast<int>(probe.blocks.size() - 1));
-    }
-    probe.blocks[body.index] = flat;
-    return supportUnder(probe, catalog, false, static_cast<int>(body.index));
+    return supportUnderSpan(
+        level, catalog,
+        {from, to, body.y - body.radius, body.y + body.radius, body.pig ? -1 : static_cast<int>(body.index)});
 }
 
 /// A support close enough to be set onto.
@@ -94,11 +80,11 @@ SupportGap supportUnderFlatBottom(const LevelDef& level, const Catalog& catalog,
     const std::optional<double> radius = roundRadius(level, catalog, pig, i);
     if (!radius || (!under.support.empty() && under.gapM < *radius))
         return under;
-    double x = pig ? level.pigs[i].x : level.blocks[i].x;
-    double y = pig ? level.pigs[i].y : level.blocks[i].y;
-    const RoundBody body{pig, i, x, y, *radius};
+    const double x = pig ? level.pigs[i].x : level.blocks[i].x;
+    const double y = pig ? level.pigs[i].y : level.blocks[i].y;
     const double reach = kFlatShare * *radius;
-    const SupportGap flat = supportUnderFlat(level, catalog, body, x - reach, x + reach);
+    const SupportGap flat =
+        supportUnderSpan(level, catalog, {x - reach, x + reach, y - *radius, y + *radius, pig ? -1 : index});
     return flat.support.empty() || (!under.support.empty() && under.gapM <= flat.gapM) ? under : flat;
 }
 

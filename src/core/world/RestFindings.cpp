@@ -136,8 +136,16 @@ SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig,
     const bool round = pig || level.blocks[static_cast<std::size_t>(index)].shape == BlockShape::Circle;
     // A round body touches only under its centre; a flat one anywhere along its bottom.
     const double x = 0.5 * (self.left + self.right);
-    const double from = round ? x - 1e-6 : self.left;
-    const double to = round ? x + 1e-6 : self.right;
+    return supportUnderSpan(
+        level, catalog,
+        {round ? x - 1e-6 : self.left, round ? x + 1e-6 : self.right, self.bottom, self.top, pig ? -1 : index});
+}
+
+SupportGap supportUnderSpan(const LevelDef& level, const Catalog& catalog, const SupportSpan& span)
+{
+    const double from = span.fromM;
+    const double to = span.toM;
+    const Bounds self{from, to, span.bottomM, span.topM};
     SupportGap best;
     double bestTop = -1e300;
     const auto consider = [&](const std::string& name, const Bounds& b, const Material* material)
@@ -187,7 +195,7 @@ SupportGap supportUnder(const LevelDef& level, const Catalog& catalog, bool pig,
     for (std::size_t i = 0; i < level.blocks.size(); ++i)
     {
         const BlockDef& b = level.blocks[i];
-        if (!pig && static_cast<int>(i) == index)
+        if (static_cast<int>(i) == span.skipBlock)
             continue;
         if (hasFlatTop(b))
             consider("block " + std::to_string(i) + " (" + b.material + ")", blockBounds(b),
