@@ -3,6 +3,7 @@
 #include "RunGame.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -178,8 +179,8 @@ TEST_F(EditorFlow, TypingFasterThanTheFramesLosesNoKey)
 
 TEST_F(EditorFlow, WidthOnAHillScalesItsCorners)
 {
-    // The designer's finding: Width on a polygon hill took the value and saved nothing. 2-3's hill, 12 m wide about
-    // x = 22, typed 18 m wide: its corners scale by 1.5 about its centre.
+    // The designer's finding: Width on a polygon hill took the value and saved nothing. 2-3's hill, 13 m wide about
+    // x = 22.5, typed 19.5 m wide: its corners scale by 1.5 about its centre.
     const std::string file = m_dir.file("hill.json");
     std::filesystem::copy_file(sourceFile("levels/2-3-boulder-hill.json"), file);
     const GameRun run = edit("'" + file + "' --frames 30" + script(R"([
@@ -187,12 +188,17 @@ TEST_F(EditorFlow, WidthOnAHillScalesItsCorners)
         {"frame": 3, "mouse": "release", "button": "left", "x": 590, "y": 610},
         {"frame": 6, "mouse": "press", "button": "left", "x": 1050, "y": 150},
         {"frame": 6, "mouse": "release", "button": "left", "x": 1050, "y": 150},
-        {"frame": 9, "key": "A", "ctrl": true}, {"frame": 11, "text": "18"}, {"frame": 16, "key": "Enter"},
+        {"frame": 9, "key": "A", "ctrl": true}, {"frame": 11, "text": "19.5"}, {"frame": 16, "key": "Enter"},
         {"frame": 22, "key": "S", "ctrl": true}])"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     ASSERT_EQ(run.values("editor-save", "path"), (std::vector<std::string>{file}));
     const nlohmann::json level = nlohmann::json::parse(readText(file));
-    EXPECT_EQ(level["terrain"][0]["points"], nlohmann::json::parse("[[13, 0], [31, 0], [26.5, 3], [17.5, 3]]"));
+    const std::vector<std::array<double, 2>> scaled{{12.75, 0.0}, {32.25, 0.0}, {25.2, 3.0}, {17.25, 3.0}};
+    const auto& points = level["terrain"][0]["points"];
+    ASSERT_EQ(points.size(), scaled.size()) << points;
+    for (std::size_t i = 0; i < scaled.size(); ++i)
+        for (std::size_t axis = 0; axis < 2; ++axis)
+            EXPECT_NEAR(points[i][axis].get<double>(), scaled[i][axis], 1e-9) << points;
 }
 
 TEST_F(EditorFlow, TheTitleMenuOpensTheSandboxAndLevelSelectOpensTheEditor)

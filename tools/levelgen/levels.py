@@ -98,10 +98,13 @@ def l1_8():
 
 def l2_6():
     s = Scene()
-    left, right = hill(s, 16, 28, 3.0, 0.5)
+    # The hilltop ends just past the frame's last post and its right side falls steeply, 3 m over 4.7 m: a boulder
+    # that leaves the top rolls down it into the tower. Each boulder rests near its plank's right end, so the black
+    # bird's blast from the left sends it over the edge.
+    s.polygon([(16, 0), (29, 0), (24.3, 3.0), (19, 3.0)])
     double_frame(s, 22, 3.0, 2.0, 1.6, "wood", "wood", ("small", "medium"))
-    ball(s, 21, 3.0 + 1.6 + 0.25, 0.8, "stone")
-    ball(s, 23, 3.0 + 1.6 + 0.25, 0.8, "stone")
+    ball(s, 21.6, 3.0 + 1.6 + 0.25, 0.8, "stone")
+    ball(s, 23.6, 3.0 + 1.6 + 0.25, 0.8, "stone")
     top = tower(s, 31, 0, 2, 2.0, 2.0, ("wood",), ("wood",), ("large", "helmet"))
     roof(s, 31, top, 2.6, "wood")
     pyramid(s, 35.5, 0, 3, 0.7, "wood")
@@ -109,9 +112,16 @@ def l2_6():
     return level("2-3", "Boulder Hill",
                  "A heavy ball keeps its momentum: the {mass:black} kg black bird leaves the band at {v_max:black} m/s "
                  "with p = {p_max:black} N s, more than the red bird's {p_max:red} N s, and pushes the boulders on "
-                 "the hill over the edge. Rolling down they gain speed from their height and crush what is below.",
+                 "the hill over the edge. Rolling down they gain speed from their height and crush what is below. "
+                 "The boulders are solid granite, not masonry: they take {strength:stone} N s before they break, so "
+                 "they survive the fall.",
                  ["Knock the boulders off the hilltop: they roll into the tower below."],
-                 ["black", "red", "black", "red"], s, (20.0, 21.0))
+                 ["black", "red", "black", "red"], s, (12.0, 22.0),
+                 # A 120 kg boulder dropping 1.8 m takes about 760 N s: the castle stone's 300 would shatter it.
+                 extra={"materials": {"stone": {"strength_ns": 2000}}},
+                 # The right boulder (x 23.6) defeats a pig of the tower (x 31) in 8 of the 9 aims.
+                 claims=[("/hints/0", {"shot": [12.0, 22.0], "pig_x": [30.5, 31.5], "by_block_x": [23.55, 23.65],
+                                       "in_at_least": 7})])
 
 
 def l2_7():
