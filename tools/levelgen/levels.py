@@ -253,7 +253,7 @@ def l4_7():
     top = tower(s, 35, 0, 2, 2.0, 1.6, ("stone",), ("wood",), ("large", "small"))
     roof(s, 35, top, 2.6, "wood")
     ball(s, 37.5, 0, 0.8, "stone")
-    return level("4-5", "Powder Store",
+    return level("4-4", "Powder Store",
                  "TNT crates break at only {strength:tnt} N s and explode: everything near it gets a push and "
                  "damage that falls off with distance. One crate that goes off sets off its neighbours.",
                  ["Hit a crate: the blast does the rest."],
@@ -265,7 +265,7 @@ def l4_8():
     castle(s, 28, 0, 3, "stone", "wood", ("helmet", "large", "helmet"), "stone")
     cage(s, 22.4, 0, 1.0, "wood", "small")
     cage(s, 33.6, 0, 1.0, "wood", "small")
-    return level("4-4", "Stone Fortress",
+    return level("4-5", "Stone Fortress",
                  "Stone is heavy ({density:stone} kg/m^3) and tough: it takes {strength:stone} N s to break, more "
                  "than a red bird at full speed carries ({p_max:red} N s). Knock the walls over and let their "
                  "weight fall on the pigs, or tap the black bird beside them: its blast breaks stone.",
@@ -337,7 +337,7 @@ def l6_1():
     cage(s, 22, 0, 1.2, "wood", "medium")
     castle(s, 31, 0, 3, "wood", "wood", ("large", "small", "helmet"), "wood")
     tnt(s, 31.55, 2.25, 0.5)
-    return level("6-8", "Gatehouse",
+    return level("6-7", "Gatehouse",
                  "Everything together: the launch angle sets the range, the bird's mass its momentum, the materials "
                  "how the castle breaks. A flat shot meets the gate; a steep one falls into the keep.",
                  ["The TNT in the keep's first floor brings the keep down."],
@@ -483,7 +483,7 @@ def l6_10():
     gate(s, 15, 0, 2.4, 3, 0.6, "stone", "wood", "helmet")
     top = pyramid(s, 57, 0, 4, 0.8, "wood")
     s.pig("small", 57, top)
-    return level("6-7", "The Last Fortress",
+    return level("6-8", "The Last Fortress",
                  "Two stone castles with helmeted pigs: every idea of the campaign at once. Stone breaks in a blast, "
                  "seldom to a hit, and it topples; heavy birds carry momentum; TNT between the castles reaches both.",
                  ["The TNT between the castles is within reach of both.",

@@ -27,11 +27,12 @@ std::array<int, 3> recommendedStars(const PlayerDifficulty& player, int solverSc
     }
     std::sort(scores.begin(), scores.end());
     const int median = scores[(scores.size() - 1) / 2]; // the lower median, as Python's median_low
-    const auto rank = static_cast<std::size_t>(std::ceil(0.9 * static_cast<double>(scores.size())));
-    const int p90 = scores[std::min(scores.size() - 1, rank == 0 ? 0 : rank - 1)];
+    // The 80th percentile, so that at least a fifth of the winning runs reach three stars (issue 57).
+    const auto rank = static_cast<std::size_t>(std::ceil(kThreeStarQuantile * static_cast<double>(scores.size())));
+    const int p80 = scores[std::min(scores.size() - 1, rank == 0 ? 0 : rank - 1)];
     const int one = hundreds(scores.front());
     const int two = std::max(one, hundreds(median));
-    return {one, two, std::max(two, hundreds(p90))};
+    return {one, two, std::max(two, hundreds(p80))};
 }
 
 } // namespace abalike
