@@ -534,10 +534,11 @@ void Importer::shootToTheRight()
                                             [&](const PigDef& pig) { return pig.x >= m_level.slingshot.x; }))
         return;
     const double slingshotX = m_level.slingshot.x;
+    // "+ 0.0" turns a mirrored 0 (-0) into 0, so that no file reads "-0".
     const auto mirrored = [](double x)
     {
         return tidy(-x) + 0.0;
-    }; // never -0
+    };
     const auto turned = [](double degrees)
     {
         return cleanAngle(-degrees) + 0.0;
